@@ -1,0 +1,32 @@
+#ifndef hati_contact_lcp_solver_h
+#define hati_contact_lcp_solver_h
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+namespace hati
+{
+using namespace dealii;
+
+/**
+ * Solve the linear complementarity problem of the velocity-level impact law
+ * (algorithms.md A5):
+ *
+ *   w = W lambda + q,   0 <= w  _|_  lambda >= 0,
+ *
+ * with W the (symmetric, positive semi-definite) Delassus operator
+ * `L M^-1 L^T` of a cluster of coupled contacts.
+ *
+ * - one contact: the closed form `lambda = max(0, -q / W)`;
+ * - up to 12 contacts: exact enumeration of the active sets (the first
+ *   complementary solution found, smallest active sets first);
+ * - more: projected Gauss-Seidel to a relative tolerance of 1e-12,
+ *   which converges for a symmetric positive definite W; an exception
+ *   is thrown when it does not converge.
+ *
+ * Returns lambda (impulses, N s).
+ */
+Vector<double> solve_lcp(const FullMatrix<double> &W, const Vector<double> &q);
+} // namespace hati
+
+#endif

@@ -1,0 +1,135 @@
+#ifndef hati_model_discrete_system_h
+#define hati_model_discrete_system_h
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace hati
+{
+using namespace dealii;
+
+/**
+ * One unilateral contact: a row of the contact operator `L` (the gradient
+ * of the normal gap), the gap at zero displacement and the restitution
+ * coefficient of Newton's impact law (algorithms.md A4-A5). The gap is
+ * `g(U) = initial_gap + sum_i coefficients[i] * U[dofs[i]]`; the impulse
+ * `lambda >= 0` acts on the structure as `L^T lambda`.
+ */
+struct ContactRow
+{
+  std::string name;
+  std::vector<types::global_dof_index> dofs;
+  std::vector<double> coefficients;
+  double initial_gap = 0.;
+  double restitution = 0.;
+
+  /** L_k . x for a global vector x. */
+  double apply(const Vector<double> &x) const
+  {
+    double s = 0.;
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      s += coefficients[i] * x[dofs[i]];
+    return s;
+  }
+};
+
+/**
+ * A named point whose displacement and velocity components are written to
+ * `history.csv`. `labels[i]` is the component name ("x", "y" or "z") of
+ * `dofs[i]`.
+ */
+struct MonitorPoint
+{
+  std::string name;
+  std::vector<std::string> labels;
+  std::vector<types::global_dof_index> dofs;
+};
+
+/**
+ * A time-dependent part of the external force:
+ * `F_ext(t) += amplitude(t) * shape`.
+ */
+struct TimeDependentLoad
+{
+  Vector<double> shape;
+  std::function<double(double)> amplitude;
+};
+
+/**
+ * What one subdomain is once a model has built it (doc/architecture.md):
+ * mass, stiffness, external forces, constraints, contacts, monitors and the
+ * initial state. Integrators only ever see this class, never a mesh.
+ *
+ * The stiffness matrix refers to the sparsity pattern stored here, so a
+ * DiscreteSystem is neither copied nor moved.
+ */
+class DiscreteSystem
+{
+public:
+  DiscreteSystem() = default;
+  DiscreteSystem(const DiscreteSystem &) = delete;
+  DiscreteSystem &operator=(const DiscreteSystem &) = delete;
+
+  /** Set every size to @p n and zero all vectors. */
+  void reinit(const unsigned int n);
+
+  /** Number of degrees of freedom. */
+  unsigned int n_dofs() const { return lumped_mass.size(); }
+
+  /** Whether a stiffness matrix was assembled (false for a rigid mass). */
+  bool has_stiffness() const { return stiffness_pattern.n_rows() > 0; }
+
+  /** External force at time @p t: constant part plus time-dependent ones. */
+  void external_force(const double t, Vector<double> &f) const;
+
+  /**
+   * Upper bound of the highest circular frequency of the explicit system
+   * (rad/s), `omega_max^2 >= lambda_max(M^-1 K)`. Models set
+   * `omega_max_bound` from an element-by-element bound; when they do not,
+   * this returns the Gershgorin bound of `M^-1 K`.
+   */
+  double highest_frequency_bound() const;
+
+  /** Lumped (diagonal) mass, kg (or kg m^2 for rotations). */
+  Vector<double> lumped_mass;
+  /**
+   * Flags of the DoFs held fixed (supports, lateral constraints); they have
+   * zero velocity and the integrators do not move them.
+   */
+  std::vector<bool> fixed;
+
+  SparsityPattern stiffness_pattern;
+  /** Stiffness K (N/m); empty for a rigid point mass. */
+  SparseMatrix<double> stiffness;
+
+  /** Constant external force (N), e.g. gravity `M g`. */
+  Vector<double> constant_force;
+  std::vector<TimeDependentLoad> time_dependent_loads;
+
+  std::vector<ContactRow> contacts;
+  std::vector<MonitorPoint> monitors;
+
+  Vector<double> initial_displacement;
+  Vector<double> initial_velocity;
+
+  /** Element-by-element bound of omega_max (rad/s), negative if unset. */
+  double omega_max_bound = -1.;
+};
+
+/**
+ * Largest eigenvalue of the element problem `K_e x = omega^2 M_e x` with a
+ * diagonal (lumped) element mass @p element_mass. Its maximum over the
+ * elements bounds `omega_max^2` of the assembled system from above
+ * (element-by-element bound, algorithms.md section 1).
+ */
+double element_omega_squared(const FullMatrix<double> &element_stiffness,
+                             const std::vector<double> &element_mass);
+} // namespace hati
+
+#endif

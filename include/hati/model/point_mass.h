@@ -1,0 +1,38 @@
+#ifndef hati_model_point_mass_h
+#define hati_model_point_mass_h
+
+#include <hati/model/model.h>
+
+namespace hati
+{
+/**
+ * A rigid point mass with three translational DoFs above a rigid ground
+ * plane z = 0 (the bouncing ball, algorithms.md 6.1). The contact row is
+ * `L = [0 0 1]`, the gap `g = z0 + u_z`. Monitor point `ball`.
+ */
+class PointMass : public Model
+{
+public:
+  struct Parameters
+  {
+    static void declare_parameters(ParameterHandler &prm);
+    void parse_parameters(ParameterHandler &prm);
+    double mass = 1.;             ///< kg
+    double initial_height = 1.;   ///< m, above the ground
+    double initial_velocity = 0.; ///< m/s, vertical, positive upwards
+  };
+
+  explicit PointMass(const Parameters &parameters);
+  void build(const CommonModelParameters &common, DiscreteSystem &system) override;
+  void write_vtu(std::ostream &out,
+                 const std::vector<NamedVector> &fields,
+                 const double time,
+                 const unsigned int cycle) const override;
+  std::string description() const override;
+
+private:
+  const Parameters parameters;
+};
+} // namespace hati
+
+#endif

@@ -1,0 +1,43 @@
+#ifndef hati_parameters_run_parameters_h
+#define hati_parameters_run_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace hati
+{
+using namespace dealii;
+
+/** `Time integration` subsection: scheme, steps, limits. */
+struct TimeIntegrationParameters
+{
+  static void declare_parameters(ParameterHandler &prm);
+  void parse_parameters(ParameterHandler &prm);
+
+  /** "CD-Lagrange" (event capturing) or "event-driven" (CVODE reference). */
+  std::string method = "CD-Lagrange";
+  double time_step = 1e-3;   ///< s
+  double end_time = 1.;      ///< s
+  double safety_factor = 1.; ///< dt <= safety * dt_crit
+  unsigned int max_events = 200;
+  unsigned int max_event_driven_dofs = 36;
+  double relative_tolerance = 1e-12;
+  double absolute_tolerance = 1e-14;
+};
+
+/** `Output` subsection. */
+struct OutputParameters
+{
+  static void declare_parameters(ParameterHandler &prm);
+  void parse_parameters(ParameterHandler &prm);
+
+  /** Output directory; empty: `output/<parameter file name>/`. */
+  std::string directory;
+  double vtu_interval = 0.;      ///< s; 0: no VTU output
+  double history_interval = 0.;  ///< s; 0: every step
+  double progress_interval = 2.; ///< s of wall time between progress lines
+};
+} // namespace hati
+
+#endif

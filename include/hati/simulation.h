@@ -1,0 +1,60 @@
+#ifndef hati_simulation_h
+#define hati_simulation_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <hati/model/discrete_system.h>
+#include <hati/model/model.h>
+#include <hati/parameters/run_parameters.h>
+
+#include <memory>
+#include <ostream>
+#include <string>
+
+namespace hati
+{
+using namespace dealii;
+
+/**
+ * One run: reads the parameters, builds the model's discrete system, runs
+ * the chosen time integration with its outputs, prints a summary.
+ */
+class Simulation
+{
+public:
+  /** Declare every parameter of hati. */
+  static void declare_parameters(ParameterHandler &prm);
+
+  /**
+   * Parse @p prm (already read from @p parameter_file) and build the model.
+   * The output directory defaults to `output/<parameter file stem>/`.
+   */
+  Simulation(ParameterHandler &prm, const std::string &parameter_file);
+  ~Simulation();
+
+  /** Run the time integration and write every output. */
+  void run();
+
+private:
+  void run_cd_lagrange();
+  void run_event_driven();
+
+  TimeIntegrationParameters time_parameters;
+  OutputParameters output_parameters;
+  CommonModelParameters common_parameters;
+  std::unique_ptr<Model> model;
+  DiscreteSystem system;
+  std::string output_directory;
+  std::string parameter_file;
+};
+
+/**
+ * The command line of the `hati` executable (Boost.Program_options):
+ * `hati file.prm [--set "Subsection/Entry=value"]...`,
+ * `hati --print-parameters`, `hati --help`. Returns the exit code; errors
+ * are printed as one line on stderr.
+ */
+int run_command_line(int argc, char **argv);
+} // namespace hati
+
+#endif

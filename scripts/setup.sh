@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Shared set-up of run.sh and test.sh: install the missing Debian packages,
+# configure and build the Release build in build/. Idempotent and quick when
+# nothing changed.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(libdeal.ii-dev numdiff libboost-program-options-dev cmake make g++
+          python3-numpy python3-matplotlib)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "== installing Debian packages: ${missing[*]}"
+  sudo_cmd=""
+  [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
+  $sudo_cmd apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+if [ ! -f build/CMakeCache.txt ]; then
+  echo "== configuring build/ (Release)"
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+fi
+echo "== building"
+cmake --build build -j2

@@ -1,0 +1,157 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <boost/program_options.hpp>
+
+#include <hati/simulation.h>
+
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace hati
+{
+namespace
+{
+/** The message of an exception on one line, without deal.II's banner. */
+std::string one_line(const std::exception &e)
+{
+  std::string text;
+  if (const auto *d = dynamic_cast<const ExceptionBase *>(&e))
+  {
+    std::ostringstream s;
+    d->print_info(s);
+    text = s.str();
+  }
+  else
+    text = e.what();
+  std::string r;
+  bool space = false;
+  for (const char c : text)
+  {
+    if (std::isspace(static_cast<unsigned char>(c)))
+      space = !r.empty();
+    else
+    {
+      if (space)
+        r += ' ';
+      r += c;
+      space = false;
+    }
+  }
+  const std::string prefix = "Additional information: ";
+  if (r.compare(0, prefix.size(), prefix) == 0)
+    r = r.substr(prefix.size());
+  return r;
+}
+
+/** Apply one `--set "Subsection/Entry=value"` override. */
+void apply_override(ParameterHandler &prm, const std::string &assignment)
+{
+  const auto eq = assignment.find('=');
+  AssertThrow(
+      eq != std::string::npos && eq > 0,
+      ExcMessage("--set '" + assignment + "': expected \"Subsection/Entry=value\""));
+  const std::string path = Utilities::trim(assignment.substr(0, eq));
+  const std::string value = Utilities::trim(assignment.substr(eq + 1));
+  std::vector<std::string> parts;
+  std::string::size_type start = 0, slash;
+  while ((slash = path.find('/', start)) != std::string::npos)
+  {
+    parts.push_back(Utilities::trim(path.substr(start, slash - start)));
+    start = slash + 1;
+  }
+  const std::string entry = Utilities::trim(path.substr(start));
+
+  try
+  {
+    prm.get(parts, entry); // throws ExcEntryUndeclared
+  }
+  catch (const std::exception &)
+  {
+    AssertThrow(false,
+                ExcMessage("--set '" + assignment + "': no parameter '" + path +
+                           "' is declared (see hati --print-parameters)"));
+  }
+  for (const auto &p : parts)
+    prm.enter_subsection(p);
+  try
+  {
+    prm.set(entry, value);
+  }
+  catch (const std::exception &)
+  {
+    for (unsigned int i = 0; i < parts.size(); ++i)
+      prm.leave_subsection();
+    AssertThrow(false,
+                ExcMessage("--set '" + assignment + "': the value '" + value +
+                           "' does not match the pattern of '" + path +
+                           "' (see hati --print-parameters)"));
+  }
+  for (unsigned int i = 0; i < parts.size(); ++i)
+    prm.leave_subsection();
+}
+} // namespace
+
+int run_command_line(int argc, char **argv)
+{
+  namespace po = boost::program_options;
+  po::options_description options(
+      "hati: nonsmooth structural dynamics (CD-Lagrange "
+      "contact/impact)\nUsage: hati file.prm [options]\nOptions");
+  options.add_options()("help,h", "print this help and exit")(
+      "print-parameters", "print every parameter with its default and documentation")(
+      "set",
+      po::value<std::vector<std::string>>()->composing(),
+      "override a parameter, \"Subsection/Entry=value\" (repeatable)")(
+      "parameter-file", po::value<std::string>(), "the .prm file to run");
+  po::positional_options_description positional;
+  positional.add("parameter-file", 1);
+
+  try
+  {
+    po::variables_map vm;
+    po::store(
+        po::command_line_parser(argc, argv).options(options).positional(positional).run(),
+        vm);
+    po::notify(vm);
+
+    ParameterHandler prm;
+    Simulation::declare_parameters(prm);
+
+    if (vm.count("help"))
+    {
+      std::cout << options << std::endl;
+      return 0;
+    }
+    if (vm.count("print-parameters"))
+    {
+      prm.print_parameters(std::cout, ParameterHandler::PRM);
+      return 0;
+    }
+    if (!vm.count("parameter-file"))
+    {
+      std::cerr << "hati: error: no parameter file given (hati file.prm; hati --help)"
+                << std::endl;
+      return 2;
+    }
+    const std::string file = vm["parameter-file"].as<std::string>();
+    AssertThrow(std::filesystem::is_regular_file(file),
+                ExcMessage("parameter file '" + file + "' does not exist"));
+    prm.parse_input(file);
+    if (vm.count("set"))
+      for (const auto &s : vm["set"].as<std::vector<std::string>>())
+        apply_override(prm, s);
+
+    Simulation simulation(prm, file);
+    simulation.run();
+    return 0;
+  }
+  catch (const std::exception &e)
+  {
+    std::cerr << "hati: error: " << one_line(e) << std::endl;
+    return 1;
+  }
+}
+} // namespace hati

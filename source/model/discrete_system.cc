@@ -1,0 +1,76 @@
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <hati/model/discrete_system.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hati
+{
+void DiscreteSystem::reinit(const unsigned int n)
+{
+  lumped_mass.reinit(n);
+  fixed.assign(n, false);
+  constant_force.reinit(n);
+  initial_displacement.reinit(n);
+  initial_velocity.reinit(n);
+  time_dependent_loads.clear();
+  contacts.clear();
+  monitors.clear();
+}
+
+void DiscreteSystem::external_force(const double t, Vector<double> &f) const
+{
+  f = constant_force;
+  for (const auto &load : time_dependent_loads)
+    f.add(load.amplitude(t), load.shape);
+}
+
+double DiscreteSystem::highest_frequency_bound() const
+{
+  if (omega_max_bound >= 0.)
+    return omega_max_bound;
+  if (!has_stiffness())
+    return 0.;
+  // Gershgorin: lambda_max(M^-1 K) <= max_i sum_j |K_ij| / m_i
+  double bound = 0.;
+  for (unsigned int i = 0; i < stiffness.m(); ++i)
+  {
+    if (fixed[i])
+      continue;
+    double row = 0.;
+    for (auto it = stiffness.begin(i); it != stiffness.end(i); ++it)
+      if (!fixed[it->column()])
+        row += std::abs(it->value());
+    bound = std::max(bound, row / lumped_mass[i]);
+  }
+  return std::sqrt(bound);
+}
+
+double element_omega_squared(const FullMatrix<double> &element_stiffness,
+                             const std::vector<double> &element_mass)
+{
+  const unsigned int n = element_mass.size();
+  if (n == 2) // closed form for two DoFs
+  {
+    const double a = element_stiffness(0, 0) / element_mass[0],
+                 d = element_stiffness(1, 1) / element_mass[1],
+                 b = element_stiffness(0, 1) /
+                     std::sqrt(element_mass[0] * element_mass[1]);
+    return 0.5 * (a + d) + std::sqrt(0.25 * (a - d) * (a - d) + b * b);
+  }
+  LAPACKFullMatrix<double> a(n, n);
+  for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int j = 0; j < n; ++j)
+      a(i, j) = element_stiffness(i, j) / std::sqrt(element_mass[i] * element_mass[j]);
+  Vector<double> eigenvalues;
+  FullMatrix<double> eigenvectors;
+  a.compute_eigenvalues_symmetric(
+      -1., std::numeric_limits<double>::max(), 0., eigenvalues, eigenvectors);
+  double lmax = 0.;
+  for (unsigned int i = 0; i < eigenvalues.size(); ++i)
+    lmax = std::max(lmax, eigenvalues[i]);
+  return lmax;
+}
+} // namespace hati

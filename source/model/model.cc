@@ -1,0 +1,108 @@
+#include <deal.II/base/utilities.h>
+
+#include <hati/model/bar.h>
+#include <hati/model/model.h>
+#include <hati/model/point_mass.h>
+#include <hati/model/solid.h>
+
+namespace hati
+{
+void CommonModelParameters::declare_parameters(ParameterHandler &prm)
+{
+  prm.enter_subsection("Loading");
+  prm.declare_entry("Gravity",
+                    "0, 0, -9.81",
+                    Patterns::List(Patterns::Double(), 3, 3, ","),
+                    "Gravity acceleration vector gx, gy, gz (m/s^2), global axes. The 1D "
+                    "bar uses its x component.");
+  prm.leave_subsection();
+
+  prm.enter_subsection("Contact");
+  prm.declare_entry("Name",
+                    "contact",
+                    Patterns::Anything(),
+                    "Name of the contact, used in contacts.csv.");
+  prm.declare_entry("Restitution coefficient",
+                    "0",
+                    Patterns::Double(0., 1.),
+                    "Newton's restitution coefficient e (-), 0 <= e <= 1: the normal "
+                    "velocity after an impact is -e times the one before. 0 (plastic "
+                    "impact) is the usual choice for finite-element contact.");
+  prm.declare_entry("Initial gap",
+                    "0",
+                    Patterns::Double(0.),
+                    "Distance between the body and the rigid obstacle at t = 0 (m). Used "
+                    "by the bar and the solid; the point mass uses its Initial height.");
+  prm.leave_subsection();
+}
+
+void CommonModelParameters::parse_parameters(ParameterHandler &prm)
+{
+  prm.enter_subsection("Loading");
+  const auto g =
+      Utilities::string_to_double(Utilities::split_string_list(prm.get("Gravity"), ','));
+  for (unsigned int d = 0; d < 3; ++d)
+    gravity[d] = g[d];
+  prm.leave_subsection();
+
+  prm.enter_subsection("Contact");
+  contact_name = prm.get("Name");
+  restitution = prm.get_double("Restitution coefficient");
+  initial_gap = prm.get_double("Initial gap");
+  prm.leave_subsection();
+}
+
+void declare_model_parameters(ParameterHandler &prm)
+{
+  prm.enter_subsection("Model");
+  prm.declare_entry("Type",
+                    "point mass",
+                    Patterns::Selection("point mass|bar|solid"),
+                    "Which model to build: 'point mass' (rigid, 3 DoFs: the bouncing "
+                    "ball), 'bar' (1D elastic bar) or 'solid' (3D elastic prism).");
+  prm.enter_subsection("Point mass");
+  PointMass::Parameters::declare_parameters(prm);
+  prm.leave_subsection();
+  prm.enter_subsection("Bar");
+  Bar::Parameters::declare_parameters(prm);
+  prm.leave_subsection();
+  prm.enter_subsection("Solid");
+  Solid::Parameters::declare_parameters(prm);
+  prm.leave_subsection();
+  prm.leave_subsection();
+  CommonModelParameters::declare_parameters(prm);
+}
+
+std::unique_ptr<Model> create_model(ParameterHandler &prm)
+{
+  prm.enter_subsection("Model");
+  const std::string type = prm.get("Type");
+  std::unique_ptr<Model> model;
+  if (type == "point mass")
+  {
+    prm.enter_subsection("Point mass");
+    PointMass::Parameters p;
+    p.parse_parameters(prm);
+    prm.leave_subsection();
+    model = std::make_unique<PointMass>(p);
+  }
+  else if (type == "bar")
+  {
+    prm.enter_subsection("Bar");
+    Bar::Parameters p;
+    p.parse_parameters(prm);
+    prm.leave_subsection();
+    model = std::make_unique<Bar>(p);
+  }
+  else
+  {
+    prm.enter_subsection("Solid");
+    Solid::Parameters p;
+    p.parse_parameters(prm);
+    prm.leave_subsection();
+    model = std::make_unique<Solid>(p);
+  }
+  prm.leave_subsection();
+  return model;
+}
+} // namespace hati

@@ -1,0 +1,103 @@
+#include <hati/parameters/run_parameters.h>
+
+namespace hati
+{
+void TimeIntegrationParameters::declare_parameters(ParameterHandler &prm)
+{
+  prm.enter_subsection("Time integration");
+  prm.declare_entry(
+      "Method",
+      "CD-Lagrange",
+      Patterns::Selection("CD-Lagrange|event-driven"),
+      "CD-Lagrange: explicit event-capturing central differences with "
+      "velocity-level Lagrange multipliers (algorithms.md A1-A6). "
+      "event-driven: CVODE between impacts, impacts located by root "
+      "finding, Newton's restitution law at each event (reference for small "
+      "rigid systems).");
+  prm.declare_entry(
+      "Time step",
+      "1e-3",
+      Patterns::Double(0.),
+      "Time step dt of CD-Lagrange (s), > 0. Refused above the critical "
+      "step 2/omega_max times the Safety factor. For event-driven: the "
+      "sampling interval of history.csv when Output/History interval is 0.");
+  prm.declare_entry("End time", "1", Patterns::Double(0.), "End of the simulation (s).");
+  prm.declare_entry("Safety factor",
+                    "1",
+                    Patterns::Double(0., 1.),
+                    "The time step must satisfy dt <= Safety factor * dt_crit (-), "
+                    "0 < factor <= 1.");
+  prm.declare_entry("Maximum number of events",
+                    "200",
+                    Patterns::Integer(1),
+                    "event-driven: stop with an error after this many impacts (Zeno "
+                    "accumulation: an event-driven scheme cannot pass the accumulation "
+                    "point, an event-capturing one can).");
+  prm.declare_entry("Maximum number of DoFs",
+                    "36",
+                    Patterns::Integer(1),
+                    "event-driven: refuse models with more DoFs than this (-).");
+  prm.declare_entry("Relative tolerance",
+                    "1e-12",
+                    Patterns::Double(0.),
+                    "event-driven: CVODE relative tolerance (-).");
+  prm.declare_entry("Absolute tolerance",
+                    "1e-14",
+                    Patterns::Double(0.),
+                    "event-driven: CVODE absolute tolerance (m, m/s).");
+  prm.leave_subsection();
+}
+
+void TimeIntegrationParameters::parse_parameters(ParameterHandler &prm)
+{
+  prm.enter_subsection("Time integration");
+  method = prm.get("Method");
+  time_step = prm.get_double("Time step");
+  end_time = prm.get_double("End time");
+  safety_factor = prm.get_double("Safety factor");
+  max_events = prm.get_integer("Maximum number of events");
+  max_event_driven_dofs = prm.get_integer("Maximum number of DoFs");
+  relative_tolerance = prm.get_double("Relative tolerance");
+  absolute_tolerance = prm.get_double("Absolute tolerance");
+  prm.leave_subsection();
+  AssertThrow(time_step > 0.,
+              ExcMessage("Time integration/Time step must be > 0 (s), got " +
+                         std::to_string(time_step) + "."));
+  AssertThrow(safety_factor > 0.,
+              ExcMessage("Time integration/Safety factor must be > 0."));
+}
+
+void OutputParameters::declare_parameters(ParameterHandler &prm)
+{
+  prm.enter_subsection("Output");
+  prm.declare_entry("Output directory",
+                    "",
+                    Patterns::Anything(),
+                    "Directory of every output file; empty: output/<name of the "
+                    "parameter file without extension>/ in the current directory.");
+  prm.declare_entry("Output interval",
+                    "0",
+                    Patterns::Double(0.),
+                    "Simulated time between two VTU snapshots (s); 0: no VTU output.");
+  prm.declare_entry("History interval",
+                    "0",
+                    Patterns::Double(0.),
+                    "Simulated time between two rows of history.csv, contacts.csv and "
+                    "energy.csv (s); 0: every time step.");
+  prm.declare_entry("Progress interval",
+                    "2",
+                    Patterns::Double(0.),
+                    "Wall-clock time between two progress lines on the terminal (s).");
+  prm.leave_subsection();
+}
+
+void OutputParameters::parse_parameters(ParameterHandler &prm)
+{
+  prm.enter_subsection("Output");
+  directory = prm.get("Output directory");
+  vtu_interval = prm.get_double("Output interval");
+  history_interval = prm.get_double("History interval");
+  progress_interval = prm.get_double("Progress interval");
+  prm.leave_subsection();
+}
+} // namespace hati

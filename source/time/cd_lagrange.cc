@@ -1,0 +1,277 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <hati/contact/lcp_solver.h>
+#include <hati/time/cd_lagrange.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <sstream>
+
+namespace hati
+{
+CDLagrange::CDLagrange(const DiscreteSystem &system,
+                       const double dt,
+                       const double safety_factor)
+    : system(system), dt(dt)
+{
+  const unsigned int n = system.n_dofs();
+  AssertThrow(dt > 0. && std::isfinite(dt),
+              ExcMessage("Time integration/Time step must be positive and finite."));
+
+  // Stability: dt <= safety * 2 / omega_max (algorithms.md section 1)
+  const double omega_max = system.highest_frequency_bound();
+  dt_crit = omega_max > 0. ? 2. / omega_max : std::numeric_limits<double>::infinity();
+  if (dt > safety_factor * dt_crit)
+  {
+    std::ostringstream s;
+    s.precision(6);
+    s << "the time step dt = " << dt << " s is above the stability limit of the "
+      << "explicit scheme: dt_crit = 2/omega_max = " << dt_crit << " s (safety factor "
+      << safety_factor << ", so dt must be <= " << safety_factor * dt_crit
+      << " s). Reduce 'Time integration/Time step'.";
+    AssertThrow(false, ExcMessage(s.str()));
+  }
+
+  for (unsigned int i = 0; i < n; ++i)
+    AssertThrow(
+        system.fixed[i] || system.lumped_mass[i] > 0.,
+        ExcMessage("CD-Lagrange needs a positive lumped mass on every free DoF."));
+
+  dt_minv.reinit(n);
+  for (unsigned int i = 0; i < n; ++i)
+    dt_minv[i] = system.fixed[i] ? 0. : dt / system.lumped_mass[i];
+
+  // compressed rows of dt M^-1 K (rows of fixed DoFs are empty)
+  row_start.assign(n + 1, 0);
+  if (system.has_stiffness())
+  {
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      row_start[i + 1] = row_start[i];
+      if (system.fixed[i])
+        continue;
+      for (auto it = system.stiffness.begin(i); it != system.stiffness.end(i); ++it)
+        if (it->value() != 0.)
+        {
+          column.push_back(it->column());
+          value.push_back(dt_minv[i] * it->value());
+          ++row_start[i + 1];
+        }
+    }
+  }
+
+  dt_minv_force.reinit(n);
+  dt_minv_force.scale(dt_minv); // no-op on zeros, keeps the size
+  for (unsigned int i = 0; i < n; ++i)
+    dt_minv_force[i] = dt_minv[i] * system.constant_force[i];
+  for (const auto &load : system.time_dependent_loads)
+  {
+    Vector<double> s(load.shape);
+    s.scale(dt_minv);
+    dt_minv_load_shapes.push_back(s);
+  }
+
+  // initial state
+  U = system.initial_displacement;
+  U0 = U;
+  velocity_a.reinit(n);
+  velocity_b.reinit(n);
+  V = &velocity_a;
+  V_prev = &velocity_b;
+
+  // V_{1/2} = V_0 + dt/2 M^-1 (F_ext(0) - K U_0)
+  Vector<double> f(n), ku(n);
+  system.external_force(0., f);
+  if (system.has_stiffness())
+    system.stiffness.vmult(ku, U);
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    const double v0 = system.fixed[i] ? 0. : system.initial_velocity[i];
+    (*V)[i] = v0 + 0.5 * dt_minv[i] * (f[i] - ku[i]);
+    (*V_prev)[i] = (*V)[i] - dt_minv[i] * (f[i] - ku[i]); // stands for V_{-1/2}
+  }
+
+  // contacts: which contacts are coupled through a common free DoF
+  const unsigned int nc = system.contacts.size();
+  gap.resize(nc);
+  lambda.assign(nc, 0.);
+  lambda_prev.assign(nc, 0.);
+  is_active.assign(nc, false);
+  coupled_with.resize(nc);
+  for (unsigned int k = 0; k < nc; ++k)
+  {
+    const auto &c = system.contacts[k];
+    double w = 0.;
+    for (unsigned int a = 0; a < c.dofs.size(); ++a)
+      w += c.coefficients[a] * c.coefficients[a] * dt_minv[c.dofs[a]];
+    AssertThrow(w > 0.,
+                ExcMessage("contact '" + c.name +
+                           "' acts only on fixed or massless degrees of freedom"));
+    gap[k] = c.initial_gap + c.apply(U);
+  }
+  for (unsigned int k = 0; k < nc; ++k)
+    for (unsigned int l = k + 1; l < nc; ++l)
+    {
+      bool shared = false;
+      for (const auto d : system.contacts[k].dofs)
+        if (!system.fixed[d])
+          for (const auto e : system.contacts[l].dofs)
+            shared = shared || (d == e);
+      if (shared)
+      {
+        coupled_with[k].push_back(l);
+        coupled_with[l].push_back(k);
+      }
+    }
+}
+
+void CDLagrange::step()
+{
+  const unsigned int n = U.size();
+  double *const u = U.data();
+  const double *const v = V->data();
+  double *const v_new = V_prev->data(); // receives V_{n+3/2}, V_prev becomes V
+
+  // (A1) U_{n+1} = U_n + dt V_{n+1/2}
+  for (unsigned int i = 0; i < n; ++i)
+    u[i] += dt * v[i];
+
+  t = (n_steps + 1) * dt;
+  ++n_steps;
+
+  // (A2)-(A3) V_free = V_{n+1/2} + dt M^-1 (F_ext(t_{n+1}) - K U_{n+1}),
+  // with dt M^-1 folded into the stored operator and force
+  const double *const a = dt_minv_force.data();
+  const std::size_t *const rs = row_start.data();
+  const unsigned int *const col = column.data();
+  const double *const val = value.data();
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    double ku = 0.;
+    for (std::size_t k = rs[i]; k < rs[i + 1]; ++k)
+      ku += val[k] * u[col[k]];
+    v_new[i] = v[i] + a[i] - ku;
+  }
+  if (!dt_minv_load_shapes.empty())
+  {
+    // work of the time-dependent loads, trapezoidal on the increment
+    // (the constant part is F . (U - U_0), computed at output times)
+    for (unsigned int l = 0; l < dt_minv_load_shapes.size(); ++l)
+    {
+      const auto &load = system.time_dependent_loads[l];
+      const double s1 = load.amplitude(t), s0 = load.amplitude(t - dt);
+      time_dependent_work += 0.5 * (s0 + s1) * dt * (load.shape * (*V));
+      V_prev->add(s1, dt_minv_load_shapes[l]);
+    }
+  }
+
+  std::swap(V, V_prev); // V = V_free, V_prev = V_{n+1/2}
+
+  if (!system.contacts.empty())
+    apply_contacts();
+}
+
+void CDLagrange::apply_contacts()
+{
+  const unsigned int nc = system.contacts.size();
+  Vector<double> &v = *V;
+
+  // contact work, first half: 1/2 (L V_{n+1/2}) lambda_n (doc/theory.md E1)
+  for (unsigned int k = 0; k < nc; ++k)
+    if (lambda[k] != 0.)
+      contact_work += 0.5 * system.contacts[k].apply(*V_prev) * lambda[k];
+  lambda_prev = lambda;
+
+  // (A4) active set from the position-level gap
+  std::vector<unsigned int> active_list;
+  for (unsigned int k = 0; k < nc; ++k)
+  {
+    const auto &c = system.contacts[k];
+    gap[k] = c.initial_gap + c.apply(U);
+    is_active[k] = (gap[k] <= 0.);
+    lambda[k] = 0.;
+    if (is_active[k])
+      active_list.push_back(k);
+  }
+  if (active_list.empty())
+    return;
+
+  // (A5) clusters of coupled active contacts, each an LCP w = W lambda + q
+  std::vector<bool> done(nc, false);
+  for (const unsigned int k0 : active_list)
+  {
+    if (done[k0])
+      continue;
+    std::vector<unsigned int> cluster{k0};
+    done[k0] = true;
+    for (unsigned int c = 0; c < cluster.size(); ++c)
+      for (const unsigned int l : coupled_with[cluster[c]])
+        if (is_active[l] && !done[l])
+        {
+          done[l] = true;
+          cluster.push_back(l);
+        }
+
+    const unsigned int m = cluster.size();
+    FullMatrix<double> W(m, m);
+    Vector<double> q(m);
+    for (unsigned int a = 0; a < m; ++a)
+    {
+      const auto &ca = system.contacts[cluster[a]];
+      // q = L V_free + e L V_{n+1/2}
+      q[a] = ca.apply(v) + ca.restitution * ca.apply(*V_prev);
+      for (unsigned int b = 0; b < m; ++b)
+      {
+        const auto &cb = system.contacts[cluster[b]];
+        double w = 0.;
+        for (unsigned int i = 0; i < ca.dofs.size(); ++i)
+          for (unsigned int j = 0; j < cb.dofs.size(); ++j)
+            if (ca.dofs[i] == cb.dofs[j])
+              w += ca.coefficients[i] * cb.coefficients[j] * dt_minv[ca.dofs[i]] / dt;
+        W(a, b) = w;
+      }
+    }
+    const Vector<double> l = solve_lcp(W, q);
+
+    // V_{n+3/2} = V_free + M^-1 L^T lambda  (A5); lambda is an impulse (A6)
+    for (unsigned int a = 0; a < m; ++a)
+    {
+      const auto &c = system.contacts[cluster[a]];
+      lambda[cluster[a]] = l[a];
+      for (unsigned int i = 0; i < c.dofs.size(); ++i)
+        v[c.dofs[i]] += dt_minv[c.dofs[i]] / dt * c.coefficients[i] * l[a];
+    }
+  }
+
+  // contact work, second half: 1/2 (L V_{n+1/2}) lambda_{n+1}
+  for (const unsigned int k : active_list)
+    if (lambda[k] != 0.)
+      contact_work += 0.5 * system.contacts[k].apply(*V_prev) * lambda[k];
+}
+
+std::vector<double> CDLagrange::normal_velocities() const
+{
+  std::vector<double> w(system.contacts.size());
+  for (unsigned int k = 0; k < w.size(); ++k)
+    w[k] = system.contacts[k].apply(*V);
+  return w;
+}
+
+Energies CDLagrange::energies() const
+{
+  Energies e;
+  const unsigned int n = U.size();
+  for (unsigned int i = 0; i < n; ++i)
+    e.kinetic += 0.5 * (*V_prev)[i] * system.lumped_mass[i] * (*V)[i];
+  if (system.has_stiffness())
+    e.internal = 0.5 * system.stiffness.matrix_norm_square(U);
+  Vector<double> du(U);
+  du -= U0;
+  e.external_work = system.constant_force * du + time_dependent_work;
+  e.contact_work = contact_work;
+  return e;
+}
+} // namespace hati
