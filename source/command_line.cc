@@ -64,33 +64,26 @@ void apply_override(ParameterHandler &prm, const std::string &assignment)
   }
   const std::string entry = Utilities::trim(path.substr(start));
 
-  try
-  {
-    prm.get(parts, entry); // throws ExcEntryUndeclared
-  }
-  catch (const std::exception &)
-  {
-    AssertThrow(false,
-                ExcMessage("--set '" + assignment + "': no parameter '" + path +
-                           "' is declared (see hati --print-parameters)"));
-  }
   for (const auto &p : parts)
     prm.enter_subsection(p);
+  std::string problem;
   try
   {
     prm.set(entry, value);
   }
+  catch (const ParameterHandler::ExcEntryUndeclared &)
+  {
+    problem = "no parameter '" + path + "' is declared";
+  }
   catch (const std::exception &)
   {
-    for (unsigned int i = 0; i < parts.size(); ++i)
-      prm.leave_subsection();
-    AssertThrow(false,
-                ExcMessage("--set '" + assignment + "': the value '" + value +
-                           "' does not match the pattern of '" + path +
-                           "' (see hati --print-parameters)"));
+    problem = "the value '" + value + "' does not match the pattern of '" + path + "'";
   }
   for (unsigned int i = 0; i < parts.size(); ++i)
     prm.leave_subsection();
+  AssertThrow(problem.empty(),
+              ExcMessage("--set '" + assignment + "': " + problem +
+                         " (see hati --print-parameters)"));
 }
 } // namespace
 

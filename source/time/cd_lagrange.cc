@@ -12,6 +12,85 @@
 
 namespace hati
 {
+namespace
+{
+/** Padded row widths with a compiled kernel; wider rows use the generic one. */
+constexpr unsigned int kernel_widths[] = {2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 81, 96};
+
+unsigned int padded_width(const unsigned int w)
+{
+  if (w == 0)
+    return 0;
+  for (const unsigned int k : kernel_widths)
+    if (w <= k)
+      return k;
+  return w;
+}
+
+/**
+ * v_new = v + a - S u for a row-padded operator S of width W (A2-A3 with
+ * S = dt M^-1 K, a = dt M^-1 F_ext). W is a compile-time constant so that
+ * the row loop is unrolled.
+ */
+template <unsigned int W>
+void free_velocity_kernel(const unsigned int n,
+                          const unsigned int *__restrict col,
+                          const double *__restrict val,
+                          const double *__restrict u,
+                          const double *__restrict v,
+                          const double *__restrict a,
+                          double *__restrict v_new)
+{
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    double ku = 0.;
+    for (unsigned int k = 0; k < W; ++k)
+      ku += val[std::size_t(i) * W + k] * u[col[std::size_t(i) * W + k]];
+    v_new[i] = v[i] + a[i] - ku;
+  }
+}
+
+void free_velocity(const unsigned int width,
+                   const unsigned int n,
+                   const unsigned int *col,
+                   const double *val,
+                   const double *u,
+                   const double *v,
+                   const double *a,
+                   double *v_new)
+{
+  switch (width)
+  {
+#define HATI_KERNEL(W)                                                                   \
+  case W:                                                                                \
+    return free_velocity_kernel<W>(n, col, val, u, v, a, v_new);
+    HATI_KERNEL(0)
+    HATI_KERNEL(2)
+    HATI_KERNEL(3)
+    HATI_KERNEL(4)
+    HATI_KERNEL(6)
+    HATI_KERNEL(8)
+    HATI_KERNEL(12)
+    HATI_KERNEL(16)
+    HATI_KERNEL(24)
+    HATI_KERNEL(32)
+    HATI_KERNEL(48)
+    HATI_KERNEL(64)
+    HATI_KERNEL(81)
+    HATI_KERNEL(96)
+#undef HATI_KERNEL
+  default:
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      double ku = 0.;
+      for (unsigned int k = 0; k < width; ++k)
+        ku += val[std::size_t(i) * width + k] * u[col[std::size_t(i) * width + k]];
+      v_new[i] = v[i] + a[i] - ku;
+    }
+  }
+}
+} // namespace
+
 CDLagrange::CDLagrange(const DiscreteSystem &system,
                        const double dt,
                        const double safety_factor)
@@ -44,22 +123,30 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
   for (unsigned int i = 0; i < n; ++i)
     dt_minv[i] = system.fixed[i] ? 0. : dt / system.lumped_mass[i];
 
-  // compressed rows of dt M^-1 K (rows of fixed DoFs are empty)
-  row_start.assign(n + 1, 0);
+  // dt M^-1 K in padded rows of a fixed width (ELLPACK): rows of fixed DoFs
+  // are empty, padding entries are zeros pointing at the row itself
+  row_width = 0;
   if (system.has_stiffness())
   {
     for (unsigned int i = 0; i < n; ++i)
+      if (!system.fixed[i])
+        row_width = std::max<unsigned int>(row_width, system.stiffness.get_row_length(i));
+    row_width = padded_width(row_width);
+    column.assign(std::size_t(n) * row_width, 0);
+    value.assign(std::size_t(n) * row_width, 0.);
+    for (unsigned int i = 0; i < n; ++i)
     {
-      row_start[i + 1] = row_start[i];
-      if (system.fixed[i])
-        continue;
-      for (auto it = system.stiffness.begin(i); it != system.stiffness.end(i); ++it)
-        if (it->value() != 0.)
-        {
-          column.push_back(it->column());
-          value.push_back(dt_minv[i] * it->value());
-          ++row_start[i + 1];
-        }
+      unsigned int k = 0;
+      if (!system.fixed[i])
+        for (auto it = system.stiffness.begin(i); it != system.stiffness.end(i); ++it)
+          if (it->value() != 0.)
+          {
+            column[std::size_t(i) * row_width + k] = it->column();
+            value[std::size_t(i) * row_width + k] = dt_minv[i] * it->value();
+            ++k;
+          }
+      for (; k < row_width; ++k)
+        column[std::size_t(i) * row_width + k] = i;
     }
   }
 
@@ -145,16 +232,7 @@ void CDLagrange::step()
   // (A2)-(A3) V_free = V_{n+1/2} + dt M^-1 (F_ext(t_{n+1}) - K U_{n+1}),
   // with dt M^-1 folded into the stored operator and force
   const double *const a = dt_minv_force.data();
-  const std::size_t *const rs = row_start.data();
-  const unsigned int *const col = column.data();
-  const double *const val = value.data();
-  for (unsigned int i = 0; i < n; ++i)
-  {
-    double ku = 0.;
-    for (std::size_t k = rs[i]; k < rs[i + 1]; ++k)
-      ku += val[k] * u[col[k]];
-    v_new[i] = v[i] + a[i] - ku;
-  }
+  free_velocity(row_width, n, column.data(), value.data(), u, v, a, v_new);
   if (!dt_minv_load_shapes.empty())
   {
     // work of the time-dependent loads, trapezoidal on the increment

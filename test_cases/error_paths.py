@@ -1,0 +1,66 @@
+#!/usr/bin/python3
+"""Bad input gives a one-line error that names the file/line or parameter and
+a non-zero exit code, never a crash: a value failing its pattern (in a file
+and through --set), an unknown entry, a missing file, an unknown option, and
+a time step above the critical one (the message must print dt_crit, checked
+against the analytical h / c of the lumped linear bar)."""
+import os
+import re
+import subprocess
+
+import numpy as np
+
+from hati_test import Context
+
+ctx = Context()
+
+
+def hati(*args):
+    p = subprocess.run([ctx.hati, *args], capture_output=True, text=True, timeout=120,
+                       cwd=ctx.work)
+    return p.returncode, p.stderr.strip()
+
+
+def expect_error(what, args, *fragments):
+    rc, err = hati(*args)
+    lines = err.splitlines()
+    ok = (rc not in (0,) and rc > 0 and len(lines) == 1 and lines[0].startswith("hati: error:")
+          and all(f in err for f in fragments))
+    ctx.check_true(what, ok, "(exit %d) %s" % (rc, err))
+
+
+def write(name, text):
+    path = os.path.join(ctx.work, name)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+bad_value = write("bad_value.prm", "subsection Time integration\n  set Time step = abc\nend\n")
+expect_error("value failing its pattern, in a file", [bad_value], "Line <2>", "bad_value.prm",
+             "Time step", "abc")
+unknown = write("unknown.prm", "subsection Contact\n  set Restitution = 1\nend\n")
+expect_error("unknown entry, in a file", [unknown], "Line <2>", "unknown.prm", "Restitution")
+bar = ctx.prm("bar_impact_1d.prm")
+expect_error("value failing its pattern, --set", [bar, "--set", "Contact/Restitution coefficient=1.5"],
+             "Contact/Restitution coefficient", "1.5")
+expect_error("unknown entry, --set", [bar, "--set", "Contact/Bogus=1"], "Contact/Bogus")
+expect_error("missing parameter file", ["does_not_exist.prm"], "does_not_exist.prm")
+expect_error("unknown option", [bar, "--bogus"], "bogus")
+expect_error("negative end time", [bar, "--set", "Time integration/End time=-1"], "End time")
+
+# time step above critical: refused, printing dt_crit = h / c (analytical)
+rc, err = hati(bar, "--set", "Time integration/Time step=3e-6",
+               "--set", "Output/Output directory=" + os.path.join(ctx.work, "crit"))
+m = re.search(r"dt_crit = [^=]*= ([0-9.eE+-]+) s", err)
+ctx.check_true("time step above critical refused", rc != 0 and m is not None, err)
+if m:
+    ctx.check("printed dt_crit (s)", float(m.group(1)), 0.01 / np.sqrt(2e11 / 7800), rel=1e-5)
+
+# the documented entry names exist
+rc = subprocess.run([ctx.hati, "--print-parameters"], capture_output=True, text=True)
+for entry in ("Initial height", "Restitution coefficient", "Time step", "End time",
+              "Initial velocity", "Initial gap", "Number of elements"):
+    ctx.check_true("--print-parameters lists '%s'" % entry, "set " + entry in rc.stdout)
+ctx.check_true("--help exits 0", subprocess.run([ctx.hati, "--help"], capture_output=True).returncode == 0)
+ctx.finish()
