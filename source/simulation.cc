@@ -122,6 +122,17 @@ Simulation::Simulation(ParameterHandler &prm, const std::string &parameter_file)
   if (output_directory.empty())
     output_directory = "output/" + std::filesystem::path(parameter_file).stem().string();
   std::filesystem::create_directories(output_directory);
+  // remove what an earlier run wrote here, so that the directory never mixes
+  // two runs (files of other programs are left alone)
+  for (const auto &entry : std::filesystem::directory_iterator(output_directory))
+  {
+    const std::string name = entry.path().filename().string();
+    const bool vtu =
+        name.rfind("solution-", 0) == 0 && entry.path().extension() == ".vtu";
+    if (vtu || name == "solution.pvd" || name == "history.csv" ||
+        name == "contacts.csv" || name == "energy.csv" || name == "summary.json")
+      std::filesystem::remove(entry.path());
+  }
   std::ofstream used(output_directory + "/parameters.prm");
   prm.print_parameters(used, ParameterHandler::PRM);
 }

@@ -151,7 +151,6 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
   }
 
   dt_minv_force.reinit(n);
-  dt_minv_force.scale(dt_minv); // no-op on zeros, keeps the size
   for (unsigned int i = 0; i < n; ++i)
     dt_minv_force[i] = dt_minv[i] * system.constant_force[i];
   for (const auto &load : system.time_dependent_loads)
@@ -185,7 +184,6 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
   const unsigned int nc = system.contacts.size();
   gap.resize(nc);
   lambda.assign(nc, 0.);
-  lambda_prev.assign(nc, 0.);
   is_active.assign(nc, false);
   coupled_with.resize(nc);
   for (unsigned int k = 0; k < nc; ++k)
@@ -261,7 +259,6 @@ void CDLagrange::apply_contacts()
   for (unsigned int k = 0; k < nc; ++k)
     if (lambda[k] != 0.)
       contact_work += 0.5 * system.contacts[k].apply(*V_prev) * lambda[k];
-  lambda_prev = lambda;
 
   // (A4) active set from the position-level gap
   std::vector<unsigned int> active_list;

@@ -104,7 +104,7 @@ private:
   Vector<double> *V_prev; // V_{n-1/2}
 
   // contacts
-  std::vector<double> gap, lambda, lambda_prev;
+  std::vector<double> gap, lambda;
   std::vector<bool> is_active;
   std::vector<std::vector<unsigned int>> coupled_with;
   double contact_work = 0.;
