@@ -1,0 +1,96 @@
+#ifndef hati_output_output_writer_h
+#define hati_output_output_writer_h
+
+#include <deal.II/lac/vector.h>
+
+#include <hati/model/discrete_system.h>
+#include <hati/model/model.h>
+#include <hati/parameters/run_parameters.h>
+#include <hati/time/cd_lagrange.h>
+
+#include <fstream>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hati
+{
+using namespace dealii;
+
+/**
+ * The state of a run at one output time, whatever the integrator.
+ * Contact vectors follow the order of `DiscreteSystem::contacts`.
+ */
+struct OutputState
+{
+  double time = 0.;
+  const Vector<double> *displacement = nullptr;
+  const Vector<double> *velocity = nullptr;
+  std::vector<double> gaps;
+  std::vector<double> normal_velocities;
+  std::vector<double> impulses;
+  std::vector<bool> active;
+  /** Duration over which the impulses act (s): dt for CD-Lagrange. */
+  double impulse_duration = 0.;
+};
+
+/**
+ * Writes every output file of a run into one directory, flushing as it goes
+ * (doc/user_guide.md):
+ * `history.csv` (monitor points), `contacts.csv` (one row per contact name
+ * and output time: smallest gap, mean normal velocity, summed impulse, mean
+ * force = impulse / duration, number of active rows), `energy.csv`,
+ * `solution.pvd` + `solution-NNNNN.vtu`, and `summary.json` at the end.
+ * It also counts impacts (a contact name going from no impulse to a
+ * positive impulse) and the largest penetration.
+ */
+class OutputWriter
+{
+public:
+  OutputWriter(const std::string &directory,
+               const DiscreteSystem &system,
+               const Model &model);
+
+  /** Rows of history.csv and contacts.csv at @p state.time. */
+  void write_history(const OutputState &state);
+  /** A row of energy.csv; the drift is relative to the first row. */
+  void write_energy(const double time, const Energies &energies);
+  /** A VTU snapshot and the updated PVD index. */
+  void write_vtu(const OutputState &state);
+  /**
+   * Track impacts and the largest penetration from the gaps and impulses
+   * of the contacts (call after every step; touches contacts only).
+   */
+  void track_contacts(const std::vector<double> &gaps,
+                      const std::vector<double> &impulses);
+  /** Flush every open file. */
+  void flush();
+
+  unsigned int n_impacts() const { return impacts; }
+  double max_penetration() const { return penetration; }
+  /** Last energy balance error (J) and the largest energy seen (J). */
+  std::pair<double, double> energy_balance() const { return {last_drift, energy_scale}; }
+  const std::string &directory() const { return dir; }
+
+private:
+  const std::string dir;
+  const DiscreteSystem &system;
+  const Model &model;
+  std::ofstream history, contacts, energy;
+  std::vector<std::string> contact_names;
+  std::vector<unsigned int> contact_group;
+  std::vector<bool> group_was_pushing;
+  unsigned int impacts = 0;
+  double penetration = 0.;
+  bool have_energy = false;
+  double energy0 = 0., last_drift = 0., energy_scale = 0.;
+  std::vector<std::pair<double, std::string>> vtu_files;
+};
+
+/** Write `summary.json` (numbers and strings given as pre-formatted JSON values). */
+void write_summary(const std::string &filename,
+                   const std::vector<std::pair<std::string, std::string>> &entries);
+} // namespace hati
+
+#endif
