@@ -58,12 +58,13 @@ void Bar::build(const CommonModelParameters &common, DiscreteSystem &system)
   DoFTools::make_sparsity_pattern(dof_handler, dsp);
   system.stiffness_pattern.copy_from(dsp);
   system.stiffness.reinit(system.stiffness_pattern);
+  system.consistent_mass.reinit(system.stiffness_pattern);
 
   const QGauss<1> quadrature(2);
   FEValues<1> fe_values(
       fe, quadrature, update_values | update_gradients | update_JxW_values);
   const unsigned int dpc = fe.n_dofs_per_cell();
-  FullMatrix<double> ke(dpc, dpc);
+  FullMatrix<double> ke(dpc, dpc), mc(dpc, dpc);
   std::vector<double> me(dpc);
   std::vector<types::global_dof_index> dofs(dpc);
   const double EA = parameters.young_modulus * parameters.area;
@@ -73,6 +74,7 @@ void Bar::build(const CommonModelParameters &common, DiscreteSystem &system)
   {
     fe_values.reinit(cell);
     ke = 0.;
+    mc = 0.;
     std::fill(me.begin(), me.end(), 0.);
     for (unsigned int q = 0; q < quadrature.size(); ++q)
       for (unsigned int i = 0; i < dpc; ++i)
@@ -80,12 +82,15 @@ void Bar::build(const CommonModelParameters &common, DiscreteSystem &system)
         {
           ke(i, j) += EA * fe_values.shape_grad(i, q)[0] * fe_values.shape_grad(j, q)[0] *
                       fe_values.JxW(q);
+          mc(i, j) += rhoA * fe_values.shape_value(i, q) * fe_values.shape_value(j, q) *
+                      fe_values.JxW(q);
           // lumped mass: row sums of the consistent mass
           me[i] += rhoA * fe_values.shape_value(i, q) * fe_values.shape_value(j, q) *
                    fe_values.JxW(q);
         }
     cell->get_dof_indices(dofs);
     system.stiffness.add(dofs, ke);
+    system.consistent_mass.add(dofs, mc);
     for (unsigned int i = 0; i < dpc; ++i)
     {
       system.lumped_mass[dofs[i]] += me[i];
@@ -106,8 +111,12 @@ void Bar::build(const CommonModelParameters &common, DiscreteSystem &system)
         right = cell->vertex_dof_index(v, 0);
     }
 
+  system.influence[0].reinit(n);
   for (unsigned int i = 0; i < n; ++i)
+  {
     system.initial_velocity[i] = parameters.initial_velocity;
+    system.influence[0][i] = 1.;
+  }
 
   ContactRow wall;
   wall.name = common.contact_name;

@@ -16,6 +16,8 @@ void DiscreteSystem::reinit(const unsigned int n)
   initial_displacement.reinit(n);
   initial_velocity.reinit(n);
   time_dependent_loads.clear();
+  for (auto &r : influence)
+    r.reinit(0);
   contacts.clear();
   monitors.clear();
 }

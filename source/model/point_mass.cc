@@ -38,6 +38,11 @@ void PointMass::build(const CommonModelParameters &common, DiscreteSystem &syste
     system.constant_force[d] = parameters.mass * common.gravity[d]; // F = M g
   }
   system.initial_velocity[2] = parameters.initial_velocity;
+  for (unsigned int d = 0; d < 3; ++d)
+  {
+    system.influence[d].reinit(3);
+    system.influence[d][d] = 1.;
+  }
 
   ContactRow ground;
   ground.name = common.contact_name;

@@ -82,6 +82,7 @@ void Solid::build(const CommonModelParameters &common, DiscreteSystem &system)
   DoFTools::make_sparsity_pattern(dof_handler, dsp);
   system.stiffness_pattern.copy_from(dsp);
   system.stiffness.reinit(system.stiffness_pattern);
+  system.consistent_mass.reinit(system.stiffness_pattern);
 
   const double E = parameters.young_modulus, nu = parameters.poisson_ratio;
   const double lambda = E * nu / ((1. + nu) * (1. - 2. * nu)), mu = E / (2. * (1. + nu));
@@ -91,7 +92,7 @@ void Solid::build(const CommonModelParameters &common, DiscreteSystem &system)
   FEValues<3> fe_values(
       fe, quadrature, update_values | update_gradients | update_JxW_values);
   const unsigned int dpc = fe.n_dofs_per_cell();
-  FullMatrix<double> ke(dpc, dpc);
+  FullMatrix<double> ke(dpc, dpc), mc(dpc, dpc);
   std::vector<double> me(dpc);
   std::vector<types::global_dof_index> dofs(dpc);
   double omega2 = 0.;
@@ -99,6 +100,7 @@ void Solid::build(const CommonModelParameters &common, DiscreteSystem &system)
   {
     fe_values.reinit(cell);
     ke = 0.;
+    mc = 0.;
     std::fill(me.begin(), me.end(), 0.);
     for (unsigned int q = 0; q < quadrature.size(); ++q)
       for (unsigned int i = 0; i < dpc; ++i)
@@ -114,12 +116,17 @@ void Solid::build(const CommonModelParameters &common, DiscreteSystem &system)
                        (ci == cj ? mu * (gi * gj) : 0.)) *
                       fe_values.JxW(q);
           if (ci == cj) // lumped mass: row sums of the consistent mass
-            me[i] += rho * fe_values.shape_value(i, q) * fe_values.shape_value(j, q) *
-                     fe_values.JxW(q);
+          {
+            const double m = rho * fe_values.shape_value(i, q) *
+                             fe_values.shape_value(j, q) * fe_values.JxW(q);
+            mc(i, j) += m;
+            me[i] += m;
+          }
         }
       }
     cell->get_dof_indices(dofs);
     system.stiffness.add(dofs, ke);
+    system.consistent_mass.add(dofs, mc);
     for (unsigned int i = 0; i < dpc; ++i)
     {
       system.lumped_mass[dofs[i]] += me[i];
@@ -141,6 +148,16 @@ void Solid::build(const CommonModelParameters &common, DiscreteSystem &system)
     for (const auto i : fixed_z)
       system.fixed[i] = true;
   }
+
+  for (unsigned int c = 0; c < 3; ++c)
+    system.influence[c].reinit(n);
+  for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const unsigned int v : cell->vertex_indices())
+      for (unsigned int c = 0; c < 3; ++c)
+      {
+        const auto i = cell->vertex_dof_index(v, c);
+        system.influence[c][i] = system.fixed[i] ? 0. : 1.;
+      }
 
   // initial velocity along x on every node
   std::vector<bool> seen(n, false);

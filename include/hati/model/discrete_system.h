@@ -6,6 +6,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -85,6 +86,9 @@ public:
   /** Whether a stiffness matrix was assembled (false for a rigid mass). */
   bool has_stiffness() const { return stiffness_pattern.n_rows() > 0; }
 
+  /** Whether a consistent mass matrix was assembled (implicit integrator). */
+  bool has_consistent_mass() const { return consistent_mass.m() > 0; }
+
   /** External force at time @p t: constant part plus time-dependent ones. */
   void external_force(const double t, Vector<double> &f) const;
 
@@ -99,14 +103,33 @@ public:
   /** Lumped (diagonal) mass, kg (or kg m^2 for rotations). */
   Vector<double> lumped_mass;
   /**
-   * Flags of the DoFs held fixed (supports, lateral constraints); they have
-   * zero velocity and the integrators do not move them.
+   * Flags of the DoFs held fixed (supports, lateral constraints, and the
+   * slave DoFs of ties, whose values the model restores for output); they
+   * have zero velocity and the integrators do not move them. The matrices
+   * are condensed: rows and columns of fixed DoFs hold only a diagonal
+   * entry.
    */
   std::vector<bool> fixed;
 
   SparsityPattern stiffness_pattern;
   /** Stiffness K (N/m); empty for a rigid point mass. */
   SparseMatrix<double> stiffness;
+
+  /**
+   * Consistent mass (kg, kg m^2), on the sparsity pattern of the stiffness;
+   * empty when the model provides only the lumped mass. Used by the
+   * implicit integrator and the static and modal analyses (the lumped mass
+   * stands in when it is empty).
+   */
+  SparseMatrix<double> consistent_mass;
+
+  /**
+   * Influence vectors of a rigid translation along global x, y, z (one per
+   * direction, 1 on the translational DoFs of that direction, 0 elsewhere
+   * and on fixed DoFs): base excitation `F = -M r a_g` and modal
+   * participation factors. Empty vectors where the model has no such DoFs.
+   */
+  std::array<Vector<double>, 3> influence;
 
   /** Constant external force (N), e.g. gravity `M g`. */
   Vector<double> constant_force;

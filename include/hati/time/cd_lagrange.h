@@ -23,7 +23,12 @@ struct Energies
   double internal = 0.;
   double external_work = 0.;
   double contact_work = 0.;
-  double total() const { return kinetic + internal - external_work - contact_work; }
+  /** Energy dissipated by damping (J), >= 0. */
+  double dissipated = 0.;
+  double total() const
+  {
+    return kinetic + internal + dissipated - external_work - contact_work;
+  }
 };
 
 /**
