@@ -2,10 +2,14 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/timer.h>
 
+#include <hati/analysis/modal_analysis.h>
+#include <hati/analysis/static_analysis.h>
+#include <hati/loading/base_excitation.h>
 #include <hati/output/output_writer.h>
 #include <hati/simulation.h>
 #include <hati/time/cd_lagrange.h>
 #include <hati/time/event_driven.h>
+#include <hati/time/newmark.h>
 
 #include <chrono>
 #include <cmath>
@@ -14,32 +18,12 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <type_traits>
 
 namespace hati
 {
 namespace
 {
-std::string json_number(const double x)
-{
-  if (!std::isfinite(x))
-    return "null";
-  std::ostringstream s;
-  s << std::setprecision(15) << x;
-  return s.str();
-}
-
-std::string json_string(const std::string &x)
-{
-  std::string r = "\"";
-  for (const char c : x)
-  {
-    if (c == '"' || c == '\\')
-      r += '\\';
-    r += c;
-  }
-  return r + "\"";
-}
-
 /** Steps between two outputs of interval @p interval (s); 0 means every step. */
 unsigned long steps_between(const double interval, const double dt)
 {
@@ -106,14 +90,32 @@ private:
 void Simulation::declare_parameters(ParameterHandler &prm)
 {
   declare_model_parameters(prm);
+  AnalysisParameters::declare_parameters(prm);
   TimeIntegrationParameters::declare_parameters(prm);
+  prm.enter_subsection("Time integration");
+  prm.enter_subsection("Newmark");
+  NewmarkParameters::declare_parameters(prm);
+  prm.leave_subsection();
+  prm.enter_subsection("Damping");
+  RayleighDamping::declare_parameters(prm);
+  prm.leave_subsection();
+  prm.leave_subsection();
   OutputParameters::declare_parameters(prm);
 }
 
 Simulation::Simulation(ParameterHandler &prm, const std::string &parameter_file)
     : parameter_file(parameter_file)
 {
+  analysis_parameters.parse_parameters(prm);
   time_parameters.parse_parameters(prm);
+  prm.enter_subsection("Time integration");
+  prm.enter_subsection("Newmark");
+  newmark_parameters.parse_parameters(prm);
+  prm.leave_subsection();
+  prm.enter_subsection("Damping");
+  damping.parse_parameters(prm);
+  prm.leave_subsection();
+  prm.leave_subsection();
   output_parameters.parse_parameters(prm);
   common_parameters.parse_parameters(prm);
   model = create_model(prm);
@@ -129,8 +131,11 @@ Simulation::Simulation(ParameterHandler &prm, const std::string &parameter_file)
     const std::string name = entry.path().filename().string();
     const bool vtu =
         name.rfind("solution-", 0) == 0 && entry.path().extension() == ".vtu";
-    if (vtu || name == "solution.pvd" || name == "history.csv" ||
-        name == "contacts.csv" || name == "energy.csv" || name == "summary.json")
+    const bool mode = name.rfind("mode-", 0) == 0 && entry.path().extension() == ".vtu";
+    if (vtu || mode || name == "solution.pvd" || name == "modes.pvd" ||
+        name == "history.csv" || name == "contacts.csv" || name == "energy.csv" ||
+        name == "summary.json" || name == "modes.csv" || name == "section_forces.csv" ||
+        name == "static.csv")
       std::filesystem::remove(entry.path());
   }
   std::ofstream used(output_directory + "/parameters.prm");
@@ -145,21 +150,63 @@ void Simulation::run()
   std::cout << "hati: " << parameter_file << "\n  model: " << model->description()
             << "\n  DoFs: " << system.n_dofs() << ", contacts: " << system.contacts.size()
             << "\n  output: " << output_directory << "/" << std::endl;
+  add_base_excitation(system,
+                      base_acceleration_step(common_parameters.base_acceleration,
+                                             common_parameters.base_acceleration_start));
+  if (analysis_parameters.type == "static")
+    return run_static();
+  if (analysis_parameters.type == "modal")
+    return run_modal();
+  if (analysis_parameters.initial_state == "static")
+  {
+    std::cout << "  initial state: static equilibrium under F_ext(0)" << std::endl;
+    solve_static(
+        system, 0., system.initial_displacement, newmark_parameters.linear_solver);
+    system.initial_velocity = 0.;
+  }
   if (time_parameters.method == "event-driven")
     run_event_driven();
+  else if (time_parameters.method == "Newmark")
+    run_newmark();
   else
     run_cd_lagrange();
 }
 
-void Simulation::run_cd_lagrange()
+namespace
 {
-  TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
-  const double dt = time_parameters.time_step, T = time_parameters.end_time;
+/** State of an integrator for the output writer (contacts only for CD-Lagrange). */
+OutputState output_state(const CDLagrange &integrator)
+{
+  OutputState s;
+  s.time = integrator.time();
+  s.displacement = &integrator.displacement();
+  s.velocity = &integrator.velocity();
+  s.gaps = integrator.gaps();
+  s.normal_velocities = integrator.normal_velocities();
+  s.impulses = integrator.impulses();
+  s.active = integrator.active();
+  s.impulse_duration = integrator.time_step();
+  return s;
+}
 
-  timer.enter_subsection("setup");
-  CDLagrange integrator(system, dt, time_parameters.safety_factor);
+OutputState output_state(const Newmark &integrator)
+{
+  OutputState s;
+  s.time = integrator.time();
+  s.displacement = &integrator.displacement();
+  s.velocity = &integrator.velocity();
+  return s;
+}
+} // namespace
+
+template <class Integrator>
+void Simulation::run_transient(Integrator &integrator,
+                               TimerOutput &timer,
+                               std::vector<std::pair<std::string, std::string>> summary)
+{
+  constexpr bool explicit_scheme = std::is_same_v<Integrator, CDLagrange>;
+  const double dt = integrator.time_step(), T = time_parameters.end_time;
   OutputWriter writer(output_directory, system, *model);
-  timer.leave_subsection();
 
   const unsigned long n_steps = std::llround(std::ceil(T / dt - 1e-9));
   const unsigned long every_history =
@@ -167,27 +214,13 @@ void Simulation::run_cd_lagrange()
   const unsigned long every_vtu = output_parameters.vtu_interval > 0.
                                       ? steps_between(output_parameters.vtu_interval, dt)
                                       : 0;
-  std::cout << "  CD-Lagrange: dt = " << dt
-            << " s, dt_crit = " << integrator.critical_time_step() << " s, " << n_steps
-            << " steps to t = " << T << " s" << std::endl;
+  std::cout << "  " << n_steps << " steps of " << dt << " s to t = " << T << " s"
+            << std::endl;
 
-  auto state = [&]()
-  {
-    OutputState s;
-    s.time = integrator.time();
-    s.displacement = &integrator.displacement();
-    s.velocity = &integrator.velocity();
-    s.gaps = integrator.gaps();
-    s.normal_velocities = integrator.normal_velocities();
-    s.impulses = integrator.impulses();
-    s.active = integrator.active();
-    s.impulse_duration = dt;
-    return s;
-  };
   auto write = [&](const unsigned long step)
   {
     TimerOutput::Scope scope(timer, "output");
-    const OutputState s = state();
+    const OutputState s = output_state(integrator);
     check_finite(*s.displacement, s.time);
     if (step % every_history == 0 || step == n_steps)
     {
@@ -205,12 +238,13 @@ void Simulation::run_cd_lagrange()
     for (unsigned long step = 1; step <= n_steps; ++step)
     {
       integrator.step();
-      if (!system.contacts.empty())
-        writer.track_contacts(integrator.gaps(), integrator.impulses());
+      if constexpr (explicit_scheme)
+        if (!system.contacts.empty())
+          writer.track_contacts(integrator.gaps(), integrator.impulses());
       if (step % every_history == 0 || (every_vtu > 0 && step % every_vtu == 0) ||
           step == n_steps)
         write(step);
-      if ((step & 255) == 0 && progress.due())
+      if ((!explicit_scheme || (step & 255) == 0) && progress.due())
       {
         check_finite(integrator.displacement(), integrator.time());
         progress.print(integrator.time(), step);
@@ -225,14 +259,12 @@ void Simulation::run_cd_lagrange()
   // time of the steps alone: the stepping loop minus the output inside it
   auto times = timer.get_summary_data(TimerOutput::total_wall_time);
   const double stepping = times["time stepping"] - times["output"];
-  write_summary(
-      output_directory + "/summary.json",
-      {{"method", json_string("CD-Lagrange")},
-       {"model", json_string(model->description())},
+  summary.insert(
+      summary.end(),
+      {{"model", json_string(model->description())},
        {"n_dofs", std::to_string(system.n_dofs())},
        {"n_contacts", std::to_string(system.contacts.size())},
        {"dt", json_number(dt)},
-       {"dt_crit", json_number(integrator.critical_time_step())},
        {"end_time", json_number(integrator.time())},
        {"n_steps", std::to_string(n_steps)},
        {"wall_time", json_number(wall)},
@@ -243,13 +275,52 @@ void Simulation::run_cd_lagrange()
        {"max_penetration", json_number(writer.max_penetration())},
        {"energy_balance_error", json_number(drift)},
        {"energy_balance_relative", json_number(scale > 0. ? drift / scale : 0.)}});
-  std::cout << "  done: " << n_steps << " steps in " << wall
-            << " s; impacts: " << writer.n_impacts()
-            << ", max penetration: " << writer.max_penetration()
-            << " m, energy balance error: " << drift << " J ("
+  write_summary(output_directory + "/summary.json", summary);
+  std::cout << "  done: " << n_steps << " steps in " << wall << " s; ";
+  if (!system.contacts.empty())
+    std::cout << "impacts: " << writer.n_impacts()
+              << ", max penetration: " << writer.max_penetration() << " m, ";
+  std::cout << "energy balance error: " << drift << " J ("
             << (scale > 0. ? drift / scale : 0.) << " of the largest energy)\n"
             << "  summary: " << output_directory << "/summary.json" << std::endl;
   timer.print_summary();
+}
+
+void Simulation::run_cd_lagrange()
+{
+  TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
+  timer.enter_subsection("setup");
+  CDLagrange integrator(system, time_parameters.time_step, time_parameters.safety_factor);
+  timer.leave_subsection();
+  std::cout << "  CD-Lagrange: dt_crit = " << integrator.critical_time_step() << " s"
+            << std::endl;
+  run_transient(integrator,
+                timer,
+                {{"method", json_string("CD-Lagrange")},
+                 {"dt_crit", json_number(integrator.critical_time_step())}});
+}
+
+void Simulation::run_newmark()
+{
+  AssertThrow(
+      system.contacts.empty(),
+      ExcMessage("Time integration/Method = Newmark: the model has contacts, which "
+                 "need the explicit CD-Lagrange integrator."));
+  TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
+  timer.enter_subsection("setup (assembly, factorisation)");
+  Newmark integrator(system, time_parameters.time_step, newmark_parameters, damping);
+  timer.leave_subsection();
+  std::cout << "  Newmark (beta = " << newmark_parameters.beta
+            << ", gamma = " << newmark_parameters.gamma << ", "
+            << newmark_parameters.linear_solver << " solver): factorisation "
+            << integrator.factorization_time()
+            << " s, Rayleigh a0 = " << integrator.mass_damping_coefficient()
+            << " 1/s, a1 = " << integrator.stiffness_damping_coefficient() << " s"
+            << std::endl;
+  run_transient(integrator,
+                timer,
+                {{"method", json_string("Newmark")},
+                 {"factorization_time", json_number(integrator.factorization_time())}});
 }
 
 void Simulation::run_event_driven()

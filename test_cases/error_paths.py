@@ -49,6 +49,22 @@ expect_error("missing parameter file", ["does_not_exist.prm"], "does_not_exist.p
 expect_error("unknown option", [bar, "--bogus"], "bogus")
 expect_error("negative end time", [bar, "--set", "Time integration/End time=-1"], "End time")
 
+# frames: a member naming a missing node, a zero-length member, and a model
+# without supports (singular stiffness: a clear message, not a Trilinos crash)
+frame = ctx.prm("cantilever_static.prm")
+expect_error("frame member naming a missing node",
+             [frame, "--set", "Model/Frame/Members=beam: root, nowhere, rect, steel, 4"],
+             "Model/Frame/Members", "beam", "nowhere")
+expect_error("zero-length frame member",
+             [frame, "--set", "Model/Frame/Nodes=root: 0, 0, 0; tip: 0, 0, 0"],
+             "Model/Frame/Members", "zero length")
+expect_error("frame without supports (singular)", [frame, "--set", "Model/Frame/Supports="],
+             "singular", "supports")
+expect_error("malformed frame section", [frame, "--set", "Model/Frame/Sections=rect: rectangle, 0.05"],
+             "Model/Frame/Sections", "rect")
+expect_error("Newmark on a model with contacts",
+             [bar, "--set", "Time integration/Method=Newmark"], "contacts")
+
 # time step above critical: refused, printing dt_crit = h / c (analytical)
 rc, err = hati(bar, "--set", "Time integration/Time step=3e-6",
                "--set", "Output/Output directory=" + os.path.join(ctx.work, "crit"))

@@ -14,7 +14,7 @@ class Context:
     def __init__(self):
         if len(sys.argv) < 4:
             sys.exit("usage: test.py HATI SOURCE_DIR WORK_DIR")
-        self.hati, self.source, self.work = sys.argv[1:4]
+        self.hati, self.source, self.work = (os.path.abspath(a) for a in sys.argv[1:4])
         self.failures = 0
         os.makedirs(self.work, exist_ok=True)
 
@@ -58,7 +58,7 @@ class Context:
 
 
 def read_csv(path):
-    return np.genfromtxt(path, delimiter=",", names=True, dtype=None, encoding=None)
+    return np.atleast_1d(np.genfromtxt(path, delimiter=",", names=True, dtype=None, encoding=None))
 
 
 def read_summary(out):

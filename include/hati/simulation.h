@@ -3,13 +3,18 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <deal.II/base/timer.h>
+
 #include <hati/model/discrete_system.h>
 #include <hati/model/model.h>
 #include <hati/parameters/run_parameters.h>
+#include <hati/time/newmark.h>
 
 #include <memory>
 #include <ostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace hati
 {
@@ -38,8 +43,19 @@ public:
 private:
   void run_cd_lagrange();
   void run_event_driven();
+  void run_newmark();
+  void run_static();
+  void run_modal();
+  /** The time loop with outputs, for CDLagrange and Newmark. */
+  template <class Integrator>
+  void run_transient(Integrator &integrator,
+                     TimerOutput &timer,
+                     std::vector<std::pair<std::string, std::string>> summary);
 
+  AnalysisParameters analysis_parameters;
   TimeIntegrationParameters time_parameters;
+  NewmarkParameters newmark_parameters;
+  RayleighDamping damping;
   OutputParameters output_parameters;
   CommonModelParameters common_parameters;
   std::unique_ptr<Model> model;

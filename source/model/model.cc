@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <hati/model/bar.h>
+#include <hati/model/frame.h>
 #include <hati/model/model.h>
 #include <hati/model/point_mass.h>
 #include <hati/model/solid.h>
@@ -15,6 +16,18 @@ void CommonModelParameters::declare_parameters(ParameterHandler &prm)
                     Patterns::List(Patterns::Double(), 3, 3, ","),
                     "Gravity acceleration vector gx, gy, gz (m/s^2), global axes. The 1D "
                     "bar uses its x component.");
+  prm.declare_entry(
+      "Base acceleration",
+      "0, 0, 0",
+      Patterns::List(Patterns::Double(), 3, 3, ","),
+      "Uniform base (support) acceleration a_g, x, y, z (m/s^2), applied as a "
+      "step from 'Base acceleration start' in the relative formulation "
+      "F = -M r a_g (algorithms.md section 4): displacements are relative "
+      "to the moving base.");
+  prm.declare_entry("Base acceleration start",
+                    "0",
+                    Patterns::Double(0.),
+                    "Time at which the base acceleration step is applied (s).");
   prm.leave_subsection();
 
   prm.enter_subsection("Contact");
@@ -43,6 +56,11 @@ void CommonModelParameters::parse_parameters(ParameterHandler &prm)
       Utilities::string_to_double(Utilities::split_string_list(prm.get("Gravity"), ','));
   for (unsigned int d = 0; d < 3; ++d)
     gravity[d] = g[d];
+  const auto a = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Base acceleration"), ','));
+  for (unsigned int d = 0; d < 3; ++d)
+    base_acceleration[d] = a[d];
+  base_acceleration_start = prm.get_double("Base acceleration start");
   prm.leave_subsection();
 
   prm.enter_subsection("Contact");
@@ -55,11 +73,13 @@ void CommonModelParameters::parse_parameters(ParameterHandler &prm)
 void declare_model_parameters(ParameterHandler &prm)
 {
   prm.enter_subsection("Model");
-  prm.declare_entry("Type",
-                    "point mass",
-                    Patterns::Selection("point mass|bar|solid"),
-                    "Which model to build: 'point mass' (rigid, 3 DoFs: the bouncing "
-                    "ball), 'bar' (1D elastic bar) or 'solid' (3D elastic prism).");
+  prm.declare_entry(
+      "Type",
+      "point mass",
+      Patterns::Selection("point mass|bar|solid|frame"),
+      "Which model to build: 'point mass' (rigid, 3 DoFs: the bouncing "
+      "ball), 'bar' (1D elastic bar), 'solid' (3D elastic prism) or 'frame' "
+      "(3D beam frame).");
   prm.enter_subsection("Point mass");
   PointMass::Parameters::declare_parameters(prm);
   prm.leave_subsection();
@@ -68,6 +88,9 @@ void declare_model_parameters(ParameterHandler &prm)
   prm.leave_subsection();
   prm.enter_subsection("Solid");
   Solid::Parameters::declare_parameters(prm);
+  prm.leave_subsection();
+  prm.enter_subsection("Frame");
+  Frame::Parameters::declare_parameters(prm);
   prm.leave_subsection();
   prm.leave_subsection();
   CommonModelParameters::declare_parameters(prm);
@@ -93,6 +116,14 @@ std::unique_ptr<Model> create_model(ParameterHandler &prm)
     p.parse_parameters(prm);
     prm.leave_subsection();
     model = std::make_unique<Bar>(p);
+  }
+  else if (type == "frame")
+  {
+    prm.enter_subsection("Frame");
+    Frame::Parameters p;
+    p.parse_parameters(prm);
+    prm.leave_subsection();
+    model = std::make_unique<Frame>(p);
   }
   else
   {

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <limits>
+#include <sstream>
 
 namespace hati
 {
@@ -56,7 +57,15 @@ OutputWriter::OutputWriter(const std::string &directory,
   group_was_pushing.assign(contact_names.size(), false);
 
   energy = open(dir + "/energy.csv");
-  energy << "time,kinetic,internal,external_work,contact_work,total,balance_drift\n";
+  energy << "time,kinetic,internal,external_work,contact_work,dissipated,total,balance_"
+            "drift\n";
+
+  const std::string header = model.section_forces_header();
+  if (!header.empty())
+  {
+    section_forces = open(dir + "/section_forces.csv");
+    section_forces << header << '\n';
+  }
 }
 
 void OutputWriter::write_history(const OutputState &s)
@@ -70,7 +79,11 @@ void OutputWriter::write_history(const OutputState &s)
       history << ',' << (*s.velocity)[d];
   }
   history << '\n';
+  if (section_forces.is_open())
+    model.write_section_forces(section_forces, s.time, *s.displacement);
 
+  if (s.gaps.size() != system.contacts.size())
+    return; // no contact state (implicit or static analyses)
   const unsigned int ng = contact_names.size();
   std::vector<double> gap(ng, std::numeric_limits<double>::max()), vn(ng, 0.),
       imp(ng, 0.);
@@ -124,7 +137,8 @@ void OutputWriter::write_energy(const double time, const Energies &e)
                            std::abs(e.external_work),
                            std::abs(e.contact_work)});
   energy << time << ',' << e.kinetic << ',' << e.internal << ',' << e.external_work << ','
-         << e.contact_work << ',' << total << ',' << last_drift << '\n';
+         << e.contact_work << ',' << e.dissipated << ',' << total << ',' << last_drift
+         << '\n';
 }
 
 void OutputWriter::write_vtu(const OutputState &s)
@@ -169,6 +183,29 @@ void OutputWriter::flush()
   history.flush();
   contacts.flush();
   energy.flush();
+  if (section_forces.is_open())
+    section_forces.flush();
+}
+
+std::string json_number(const double x)
+{
+  if (!std::isfinite(x))
+    return "null";
+  std::ostringstream s;
+  s << std::setprecision(15) << x;
+  return s.str();
+}
+
+std::string json_string(const std::string &x)
+{
+  std::string r = "\"";
+  for (const char c : x)
+  {
+    if (c == '"' || c == '\\')
+      r += '\\';
+    r += c;
+  }
+  return r + "\"";
 }
 
 void write_summary(const std::string &filename,

@@ -8,12 +8,13 @@ void TimeIntegrationParameters::declare_parameters(ParameterHandler &prm)
   prm.declare_entry(
       "Method",
       "CD-Lagrange",
-      Patterns::Selection("CD-Lagrange|event-driven"),
+      Patterns::Selection("CD-Lagrange|event-driven|Newmark"),
       "CD-Lagrange: explicit event-capturing central differences with "
       "velocity-level Lagrange multipliers (algorithms.md A1-A6). "
       "event-driven: CVODE between impacts, impacts located by root "
       "finding, Newton's restitution law at each event (reference for small "
-      "rigid systems).");
+      "rigid systems). Newmark: implicit average acceleration (algorithms.md N1-N3, "
+      "Trilinos), for models without contacts; Time step is then DT.");
   prm.declare_entry(
       "Time step",
       "1e-3",
@@ -65,6 +66,38 @@ void TimeIntegrationParameters::parse_parameters(ParameterHandler &prm)
                          std::to_string(time_step) + "."));
   AssertThrow(safety_factor > 0.,
               ExcMessage("Time integration/Safety factor must be > 0."));
+}
+
+void AnalysisParameters::declare_parameters(ParameterHandler &prm)
+{
+  prm.enter_subsection("Analysis");
+  prm.declare_entry("Type",
+                    "transient",
+                    Patterns::Selection("transient|static|modal"),
+                    "transient: time history with the Time integration method; static: "
+                    "K U = F_ext(0) (gravity, nodal loads); modal: the lowest natural "
+                    "frequencies and mode shapes (modes.csv, mode shapes in VTU).");
+  prm.declare_entry(
+      "Number of modes",
+      "6",
+      Patterns::Integer(1),
+      "modal: number of natural frequencies and mode shapes to compute (-).");
+  prm.declare_entry(
+      "Initial state",
+      "given",
+      Patterns::Selection("given|static"),
+      "transient: start from the model's initial displacement and velocity "
+      "(given) or from the static equilibrium under F_ext(0) at rest (static).");
+  prm.leave_subsection();
+}
+
+void AnalysisParameters::parse_parameters(ParameterHandler &prm)
+{
+  prm.enter_subsection("Analysis");
+  type = prm.get("Type");
+  n_modes = prm.get_integer("Number of modes");
+  initial_state = prm.get("Initial state");
+  prm.leave_subsection();
 }
 
 void OutputParameters::declare_parameters(ParameterHandler &prm)

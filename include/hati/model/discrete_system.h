@@ -87,7 +87,7 @@ public:
   bool has_stiffness() const { return stiffness_pattern.n_rows() > 0; }
 
   /** Whether a consistent mass matrix was assembled (implicit integrator). */
-  bool has_consistent_mass() const { return consistent_mass.m() > 0; }
+  bool has_consistent_mass() const { return !consistent_mass.empty(); }
 
   /** External force at time @p t: constant part plus time-dependent ones. */
   void external_force(const double t, Vector<double> &f) const;

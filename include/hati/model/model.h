@@ -25,6 +25,10 @@ struct CommonModelParameters
 
   /** Gravity acceleration vector (m/s^2). */
   Tensor<1, 3> gravity;
+  /** Base (support) acceleration step, applied from base_acceleration_start (m/s^2). */
+  Tensor<1, 3> base_acceleration;
+  /** Time at which the base acceleration step starts (s). */
+  double base_acceleration_start = 0.;
   /** Name of the contact in contacts.csv. */
   std::string contact_name;
   /** Newton's restitution coefficient e in [0, 1]. */
@@ -60,6 +64,19 @@ public:
 
   /** One line describing the model for the terminal and summary.json. */
   virtual std::string description() const = 0;
+
+  /**
+   * Header of `section_forces.csv`, or an empty string if the model writes
+   * no section forces (the default).
+   */
+  virtual std::string section_forces_header() const { return ""; }
+
+  /** Rows of `section_forces.csv` at time @p time for displacement @p U. */
+  virtual void write_section_forces(std::ostream & /*out*/,
+                                    const double /*time*/,
+                                    const Vector<double> & /*U*/) const
+  {
+  }
 };
 
 /** Declare the `Model` subsection with the parameters of every model type. */

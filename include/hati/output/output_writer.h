@@ -41,7 +41,8 @@ struct OutputState
  * `history.csv` (monitor points), `contacts.csv` (one row per contact name
  * and output time: smallest gap, mean normal velocity, summed impulse, mean
  * force = impulse / duration, number of active rows), `energy.csv`,
- * `solution.pvd` + `solution-NNNNN.vtu`, and `summary.json` at the end.
+ * `solution.pvd` + `solution-NNNNN.vtu`, `section_forces.csv` when the model
+ * writes section forces, and `summary.json` at the end.
  * It also counts impacts (a contact name going from no impulse to a
  * positive impulse) and the largest penetration.
  */
@@ -77,7 +78,7 @@ private:
   const std::string dir;
   const DiscreteSystem &system;
   const Model &model;
-  std::ofstream history, contacts, energy;
+  std::ofstream history, contacts, energy, section_forces;
   std::vector<std::string> contact_names;
   std::vector<unsigned int> contact_group;
   std::vector<bool> group_was_pushing;
@@ -87,6 +88,11 @@ private:
   double energy0 = 0., last_drift = 0., energy_scale = 0.;
   std::vector<std::pair<double, std::string>> vtu_files;
 };
+
+/** A number as a JSON value (null if not finite), 15 significant digits. */
+std::string json_number(const double x);
+/** A string as a quoted JSON value. */
+std::string json_string(const std::string &x);
 
 /** Write `summary.json` (numbers and strings given as pre-formatted JSON values). */
 void write_summary(const std::string &filename,

@@ -26,6 +26,19 @@ struct TimeIntegrationParameters
   double absolute_tolerance = 1e-14;
 };
 
+/** `Analysis` subsection: what to compute. */
+struct AnalysisParameters
+{
+  static void declare_parameters(ParameterHandler &prm);
+  void parse_parameters(ParameterHandler &prm);
+
+  /** "transient", "static" or "modal". */
+  std::string type = "transient";
+  unsigned int n_modes = 6;
+  /** "given" (the model's initial state) or "static" (static equilibrium). */
+  std::string initial_state = "given";
+};
+
 /** `Output` subsection. */
 struct OutputParameters
 {

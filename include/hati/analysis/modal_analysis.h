@@ -1,0 +1,48 @@
+#ifndef hati_analysis_modal_analysis_h
+#define hati_analysis_modal_analysis_h
+
+#include <deal.II/lac/vector.h>
+
+#include <hati/model/discrete_system.h>
+
+#include <array>
+#include <vector>
+
+namespace hati
+{
+using namespace dealii;
+
+/** The lowest vibration modes of a DiscreteSystem (compute_modes()). */
+struct ModalResult
+{
+  /** Natural frequencies f_k = omega_k / (2 pi) (Hz), ascending. */
+  std::vector<double> frequencies;
+  /** Mode shapes phi_k, mass-normalised: phi_k.M phi_k = 1 (zero on fixed DoFs). */
+  std::vector<Vector<double>> modes;
+  /** Participation factors Gamma_kd = phi_k.M r_d (kg^(1/2)), d = x, y, z. */
+  std::vector<std::array<double, 3>> participation;
+  /** Effective modal masses Gamma_kd^2 (kg). */
+  std::vector<std::array<double, 3>> effective_mass;
+  /** Total mass per direction r_d.M r_d (kg); sum_k Gamma_kd^2 over all modes. */
+  std::array<double, 3> total_mass{{0., 0., 0.}};
+};
+
+/**
+ * The @p n_modes lowest modes of the generalized eigenproblem
+ * `K phi = omega^2 M phi` (free DoFs; M the consistent mass if the system has
+ * one, else the lumped diagonal). Rigid-body modes, if the model has any,
+ * come out with frequency 0.
+ *
+ * Uses ARPACK (shift-invert Lanczos, one Amesos_Klu factorisation of
+ * `K - sigma M`) when its constraint `2 n_modes + 1 < ncv <= n_free` can be
+ * met, dense LAPACK (dsygv) on the free DoFs otherwise. Every returned pair
+ * satisfies `||K phi - omega^2 M phi|| <= 1e-6 (||K phi|| + omega^2 ||M phi||)`
+ * or an exception is thrown.
+ *
+ * @param system the discrete system (stiffness, mass, fixed DoFs, influence).
+ * @param n_modes number of modes wanted (-), at most the number of free DoFs.
+ */
+ModalResult compute_modes(const DiscreteSystem &system, const unsigned int n_modes);
+} // namespace hati
+
+#endif

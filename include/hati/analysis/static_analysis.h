@@ -1,0 +1,37 @@
+#ifndef hati_analysis_static_analysis_h
+#define hati_analysis_static_analysis_h
+
+#include <deal.II/lac/vector.h>
+
+#include <hati/model/discrete_system.h>
+
+#include <string>
+
+namespace hati
+{
+using namespace dealii;
+
+/**
+ * Linear static analysis: solve `K U = F_ext(t)` with the fixed DoFs held at
+ * zero (the static limit of N2 in algorithms.md section 2, `M_eff = K`).
+ *
+ * @param system the discrete system (stiffness, external forces, fixed DoFs).
+ * @param time time t at which the external force is evaluated (s).
+ * @param U the displacement (m, rad); resized to the number of DoFs.
+ * @param linear_solver "direct" (Amesos_Klu, followed by up to two steps of
+ *        iterative refinement) or "iterative" (CG + ML AMG, relative
+ *        residual 1e-12).
+ *
+ * Throws ExcMessage with "the stiffness matrix is singular: the model can
+ * move as a rigid body (check the supports)" if a rigid translation of the
+ * model costs no strain energy (`K r_d = 0` for an influence vector), if the
+ * factorisation fails, if the solution is not finite or if the residual
+ * `||K U - F|| > 1e-8 ||F||` (free DoFs).
+ */
+void solve_static(const DiscreteSystem &system,
+                  const double time,
+                  Vector<double> &U,
+                  const std::string &linear_solver = "direct");
+} // namespace hati
+
+#endif

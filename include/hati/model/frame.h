@@ -1,0 +1,117 @@
+#ifndef hati_model_frame_h
+#define hati_model_frame_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <hati/model/frame_element.h>
+#include <hati/model/model.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace hati
+{
+/**
+ * A 3D frame of straight linear elastic members (algorithms.md section 5):
+ * `Triangulation<1,3>` of line cells, `FESystem(FE_Q<1,3>(1), 6)` for the
+ * six DoFs of a node (ux, uy, uz, rx, ry, rz in global axes), element
+ * matrices of the Timoshenko frame element (frame_element.h) computed in
+ * closed form, not by deal.II's FEValues.
+ *
+ * Every member gets its own vertices (deal.II 9.4 mishandles vertices
+ * shared by three or more line cells, see shared/notes); members meeting at
+ * a node are tied with AffineConstraints: all six DoFs for a rigid joint,
+ * the translations only for the members after the first at a hinged joint.
+ * Supports fix DoFs (constraints) or add a spring stiffness. The matrices
+ * are condensed (constraints.distribute_local_to_global) and constrained DoFs
+ * are flagged fixed in the DiscreteSystem; their values are restored with
+ * constraints.distribute() for output.
+ */
+class Frame : public Model
+{
+public:
+  /** The `Model/Frame` subsection, lists given as `name: values; ...`. */
+  struct Parameters
+  {
+    static void declare_parameters(ParameterHandler &prm);
+    void parse_parameters(ParameterHandler &prm);
+
+    struct Member
+    {
+      std::string name, start, end, section, material;
+      unsigned int n_elements = 1;
+      Tensor<1, 3> y_reference;
+    };
+    struct PointMassData
+    {
+      std::string node;
+      double mass = 0.;
+      Tensor<1, 3> rotary_inertia;
+    };
+    struct Support
+    {
+      std::string node;
+      /** Per DoF: -1 free, 0 fixed, > 0 spring stiffness (N/m, N m/rad). */
+      std::array<double, 6> stiffness{{-1., -1., -1., -1., -1., -1.}};
+    };
+
+    std::map<std::string, Point<3>> nodes;
+    std::vector<std::string> node_order;
+    std::map<std::string, FrameMaterial> materials;
+    std::map<std::string, FrameSection> sections;
+    std::vector<Member> members;
+    std::vector<PointMassData> point_masses;
+    std::vector<Support> supports;
+    std::vector<std::string> hinged_joints;
+    std::map<std::string, std::array<double, 6>> nodal_loads;
+    std::vector<std::string> monitor_nodes;
+    std::vector<std::string> section_force_members;
+  };
+
+  explicit Frame(const Parameters &parameters);
+  void build(const CommonModelParameters &common, DiscreteSystem &system) override;
+  void write_vtu(std::ostream &out,
+                 const std::vector<NamedVector> &fields,
+                 const double time,
+                 const unsigned int cycle) const override;
+  std::string description() const override;
+  std::string section_forces_header() const override;
+  void write_section_forces(std::ostream &out,
+                            const double time,
+                            const Vector<double> &U) const override;
+
+  /** Master DoF of component @p c (0..5) at node @p node. */
+  types::global_dof_index node_dof(const std::string &node, const unsigned int c) const;
+
+private:
+  /** Per active cell: its member, its index along the member, its rotation. */
+  struct CellInfo
+  {
+    unsigned int member = 0;
+    unsigned int element = 0;
+    double length = 0.;
+    Tensor<2, 3> rotation;
+    std::array<types::global_dof_index, 12> dofs;
+  };
+
+  /** Section forces (N, Vy, Vz, T, My, Mz at both ends) of one cell. */
+  std::array<double, 12> cell_section_forces(const CellInfo &cell,
+                                             const Vector<double> &U) const;
+
+  const Parameters parameters;
+  Triangulation<1, 3> triangulation;
+  FESystem<1, 3> fe;
+  DoFHandler<1, 3> dof_handler;
+  AffineConstraints<double> constraints;
+  std::vector<CellInfo> cells;
+  std::vector<FullMatrix<double>> local_stiffness_of_member;
+  std::map<std::string, std::array<types::global_dof_index, 6>> node_dofs;
+  double total_mass = 0.;
+};
+} // namespace hati
+
+#endif

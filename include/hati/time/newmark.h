@@ -1,0 +1,213 @@
+#ifndef hati_time_newmark_h
+#define hati_time_newmark_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/vector.h>
+
+#include <hati/model/discrete_system.h>
+#include <hati/time/cd_lagrange.h>
+
+#include <memory>
+#include <string>
+
+namespace hati
+{
+using namespace dealii;
+
+/**
+ * Parameters of the implicit Newmark integrator (algorithms.md section 2,
+ * N1-N3). The defaults are the average acceleration scheme (trapezoidal rule,
+ * `beta = 1/4`, `gamma = 1/2`): unconditionally stable, second order, no
+ * numerical dissipation.
+ */
+struct NewmarkParameters
+{
+  /**
+   * Declare "Beta", "Gamma", "Linear solver" and "Solver tolerance" in the
+   * subsection @p prm currently is in (the caller enters it).
+   */
+  static void declare_parameters(ParameterHandler &prm);
+
+  /**
+   * Read the entries declared by declare_parameters() from the current
+   * subsection. Throws if `gamma < 1/2` (the scheme would amplify the
+   * solution: negative numerical damping).
+   */
+  void parse_parameters(ParameterHandler &prm);
+
+  /** Newmark beta (-), weight of A_{n+1} in U_{n+1} (N1, N3). */
+  double beta = 0.25;
+  /** Newmark gamma (-), weight of A_{n+1} in V_{n+1} (N1, N3); >= 1/2. */
+  double gamma = 0.5;
+  /**
+   * "direct": the effective matrix of N2 is factorised once with
+   * Amesos_Klu; "iterative": CG preconditioned by ML algebraic multigrid.
+   */
+  std::string linear_solver = "direct";
+  /** Relative residual of the iterative solver, ||r|| <= tol ||b|| (-). */
+  double solver_tolerance = 1e-10;
+};
+
+/**
+ * Rayleigh damping `C = a0 M + a1 K` (algorithms.md section 2), given either
+ * by its two coefficients or by a damping ratio zeta reached exactly at two
+ * frequencies f1, f2: with `w_i = 2 pi f_i`,
+ * `a0 = 2 zeta w1 w2 / (w1 + w2)`, `a1 = 2 zeta / (w1 + w2)`
+ * (the modal damping ratio is `zeta(w) = a0 / (2 w) + a1 w / 2`).
+ */
+struct RayleighDamping
+{
+  /**
+   * Declare "Mass coefficient", "Stiffness coefficient", "Damping ratio",
+   * "First frequency" and "Second frequency" in the current subsection.
+   */
+  static void declare_parameters(ParameterHandler &prm);
+
+  /**
+   * Read the entries from the current subsection and compute a0, a1 from the
+   * damping ratio if it is > 0. Throws if both the damping ratio and a
+   * coefficient are given, or if a frequency is missing.
+   */
+  void parse_parameters(ParameterHandler &prm);
+
+  /** Mass-proportional coefficient a0 (1/s). */
+  double a0 = 0.;
+  /** Stiffness-proportional coefficient a1 (s). */
+  double a1 = 0.;
+};
+
+/**
+ * Implicit Newmark integrator of `M A + C V + K U = F_ext(t)` for a linear
+ * DiscreteSystem (algorithms.md section 2):
+ *
+ * - (N1) predictors `U* = U_n + DT V_n + DT^2 (1/2 - beta) A_n`,
+ *   `V* = V_n + DT (1 - gamma) A_n`;
+ * - (N2) `M_eff A_{n+1} = F_{n+1} - C V* - K U*`,
+ *   `M_eff = M + gamma DT C + beta DT^2 K`, `C = a0 M + a1 K`;
+ * - (N3) correctors `U_{n+1} = U* + beta DT^2 A_{n+1}`,
+ *   `V_{n+1} = V* + gamma DT A_{n+1}`.
+ *
+ * M is the consistent mass of the system when it has one, else the lumped
+ * diagonal. M_eff is assembled once as a Trilinos matrix and factorised once
+ * (Amesos_Klu) or handed to CG + ML AMG. Fixed DoFs stay at zero: their rows
+ * of M_eff are decoupled and their right-hand sides are set to zero.
+ *
+ * The integrator only sees the DiscreteSystem (no model type, no mesh).
+ */
+class Newmark
+{
+public:
+  /**
+   * Assemble and factorise M_eff (N2) and compute the initial acceleration
+   * from the system's initial displacement and velocity (set_initial_state()).
+   *
+   * @param system the discrete system; it must outlive the integrator.
+   * @param DT time step (s), > 0.
+   * @param parameters beta, gamma (-) and the linear solver.
+   * @param damping Rayleigh coefficients a0 (1/s) and a1 (s).
+   *
+   * Throws ExcMessage if the factorisation fails (a singular M_eff: a model
+   * without mass and without enough supports).
+   */
+  Newmark(const DiscreteSystem &system,
+          const double DT,
+          const NewmarkParameters &parameters,
+          const RayleighDamping &damping);
+
+  ~Newmark();
+  Newmark(const Newmark &) = delete;
+  Newmark &operator=(const Newmark &) = delete;
+
+  /**
+   * Restart from displacement @p U0 (m) and velocity @p V0 (m/s) at the
+   * current time t: the initial acceleration solves
+   * `M A_0 = F_ext(t) - C V_0 - K U_0` (algorithms.md section 2), fixed DoFs
+   * are zeroed, and the accumulated external work and dissipated energy are
+   * reset to zero. Free DoFs with zero lumped mass get A_0 = 0.
+   */
+  void set_initial_state(const Vector<double> &U0, const Vector<double> &V0);
+
+  /** One step t_n -> t_{n+1}: predictors (N1), solve (N2), correctors (N3). */
+  void step();
+
+  /** Current time t_n (s). */
+  double time() const { return t; }
+  /** Number of steps done since construction. */
+  unsigned long step_number() const { return n_steps; }
+  /** Time step DT (s). */
+  double time_step() const { return dt; }
+
+  /** U_n (m). */
+  const Vector<double> &displacement() const { return U; }
+  /** V_n (m/s). */
+  const Vector<double> &velocity() const { return V; }
+  /** A_n (m/s^2). */
+  const Vector<double> &acceleration() const { return A; }
+
+  /**
+   * Energies at t_n (J): kinetic `1/2 V.M V`, internal `1/2 U.K U`,
+   * external work accumulated with the trapezoidal rule
+   * `1/2 (U_{n+1} - U_n).(F_n + F_{n+1})` and dissipated energy
+   * `1/2 (U_{n+1} - U_n).C (V_n + V_{n+1})`. For average acceleration
+   * total() stays constant to round-off (proof in newmark.cc).
+   */
+  Energies energies() const;
+
+  /** Wall time of the factorisation (or AMG set-up) of M_eff (s). */
+  double factorization_time() const { return factorization_seconds; }
+  /** Wall time of the last solve with M_eff (s). */
+  double last_solve_time() const { return last_solve_seconds; }
+
+  /**
+   * Solve `M_eff x = b` (the matrix of N2) with the existing factorisation
+   * (or CG + AMG, @p x being the initial guess), for the explicit/implicit
+   * coupling. @p b is a force (N), @p x an acceleration (m/s^2). Rows of
+   * fixed DoFs are decoupled diagonal rows: give b = 0 there to get x = 0.
+   * Throws if the solution is not finite or CG does not converge.
+   */
+  void solve_with_effective_matrix(Vector<double> &x, const Vector<double> &b) const;
+
+  /** Rayleigh coefficients a0 (1/s) and a1 (s) in use. */
+  double mass_damping_coefficient() const { return a0; }
+  double stiffness_damping_coefficient() const { return a1; }
+
+private:
+  /** dst = M src with the consistent or the lumped mass. */
+  void mass_vmult(Vector<double> &dst, const Vector<double> &src) const;
+  /** dst = K src (zero without stiffness). */
+  void stiffness_vmult(Vector<double> &dst, const Vector<double> &src) const;
+  /** dst = C src = a0 M src + a1 K src; dst = 0 without damping. */
+  void damping_vmult(Vector<double> &dst, const Vector<double> &src) const;
+  /** Zero the entries of fixed DoFs. */
+  void zero_fixed(Vector<double> &x) const;
+
+  const DiscreteSystem &system;
+  const double dt;
+  const double beta, gamma;
+  const double a0, a1;
+  const bool direct;
+  const double tolerance;
+  const bool use_consistent_mass;
+
+  double t = 0.;
+  unsigned long n_steps = 0;
+
+  /** Trilinos M_eff and its factorisation or preconditioner (newmark.cc). */
+  struct EffectiveSolver;
+  std::unique_ptr<EffectiveSolver> solver;
+
+  double factorization_seconds = 0.;
+  mutable double last_solve_seconds = 0.;
+
+  Vector<double> U, V, A;
+  Vector<double> F;  // F_ext(t_n)
+  Vector<double> CV; // C V_n (kept for the dissipated energy)
+  // work vectors
+  mutable Vector<double> U_star, V_star, rhs, tmp, F_new, CV_new, damping_work;
+
+  double external_work = 0.;
+  double dissipated = 0.;
+};
+} // namespace hati
+
+#endif

@@ -1,0 +1,335 @@
+// Modal analysis: the lowest modes of K phi = omega^2 M phi.
+//
+// Why ARPACK: deal.II 9.4 on this machine is built with ARPACK, whose
+// ArpackSolver is serial and works directly on deal.II vectors and on any
+// operator with a vmult(); the shift-invert operator (K - sigma M)^-1 is then
+// applied with the same Amesos_Klu factorisation (Trilinos) that the static
+// analysis and the Newmark integrator use. SLEPc (also installed) would need
+// copies of K and M as PETSc matrices and a PETSc linear solver for the
+// spectral transformation, for no gain on the serial problems hati solves.
+// Small problems where ARPACK's constraint 2 nev + 1 < ncv <= n_free cannot
+// be met go to dense LAPACK (dsygv) on the free DoFs.
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/lac/arpack_solver.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <hati/analysis/modal_analysis.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <sstream>
+
+namespace hati
+{
+namespace
+{
+/**
+ * The shift-invert operator (K - sigma M)^-1 of ARPACK's mode 3: one
+ * Amesos_Klu factorisation, one forward/backward substitution per vmult().
+ */
+class ShiftedInverse
+{
+public:
+  explicit ShiftedInverse(const SparseMatrix<double> &shifted_matrix)
+      : solver(control,
+               TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu")),
+        x(shifted_matrix.m()), b(shifted_matrix.m())
+  {
+    matrix.reinit(shifted_matrix, 0.);
+    try
+    {
+      solver.initialize(matrix);
+    }
+    catch (const std::exception &)
+    {
+      AssertThrow(false,
+                  ExcMessage("modal analysis: Amesos_Klu found a zero pivot in the "
+                             "shifted stiffness K - sigma M (a free DoF without "
+                             "stiffness and without mass?)."));
+    }
+  }
+
+  /** dst = (K - sigma M)^-1 src. */
+  void vmult(Vector<double> &dst, const Vector<double> &src) const
+  {
+    std::copy(src.begin(), src.end(), b.begin());
+    solver.solve(x, b);
+    std::copy(x.begin(), x.end(), dst.begin());
+  }
+
+private:
+  TrilinosWrappers::SparseMatrix matrix;
+  mutable SolverControl control;
+  mutable TrilinosWrappers::SolverDirect solver;
+  mutable LinearAlgebra::distributed::Vector<double> x, b;
+};
+
+/** One eigenpair before sorting. */
+struct Eigenpair
+{
+  double lambda;
+  Vector<double> phi;
+};
+
+/** Dense generalized eigenproblem on the free DoFs (LAPACK dsygv). */
+std::vector<Eigenpair> dense_modes(const SparseMatrix<double> &K,
+                                   const SparseMatrix<double> &M,
+                                   const std::vector<bool> &fixed)
+{
+  const unsigned int n = K.m();
+  std::vector<unsigned int> free_index(n, numbers::invalid_unsigned_int), free_dofs;
+  for (unsigned int i = 0; i < n; ++i)
+    if (!fixed[i])
+    {
+      free_index[i] = free_dofs.size();
+      free_dofs.push_back(i);
+    }
+  const unsigned int nf = free_dofs.size();
+  LAPACKFullMatrix<double> A(nf, nf), B(nf, nf);
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    if (fixed[i])
+      continue;
+    for (auto it = K.begin(i); it != K.end(i); ++it)
+      if (!fixed[it->column()])
+        A(free_index[i], free_index[it->column()]) += it->value();
+    for (auto it = M.begin(i); it != M.end(i); ++it)
+      if (!fixed[it->column()])
+        B(free_index[i], free_index[it->column()]) += it->value();
+  }
+  std::vector<Vector<double>> vectors(nf, Vector<double>(nf));
+  try
+  {
+    A.compute_generalized_eigenvalues_symmetric(B, vectors);
+  }
+  catch (const std::exception &)
+  {
+    AssertThrow(false,
+                ExcMessage("modal analysis (dense LAPACK): the mass matrix is not "
+                           "positive definite on the free DoFs (a free DoF without "
+                           "mass?)."));
+  }
+  std::vector<Eigenpair> pairs(nf);
+  for (unsigned int k = 0; k < nf; ++k)
+  {
+    pairs[k].lambda = A.eigenvalue(k).real();
+    pairs[k].phi.reinit(n);
+    for (unsigned int j = 0; j < nf; ++j)
+      pairs[k].phi[free_dofs[j]] = vectors[k][j];
+  }
+  return pairs;
+}
+
+/** ARPACK shift-invert Lanczos with ncv Lanczos vectors. */
+std::vector<Eigenpair> arpack_modes(const SparseMatrix<double> &K,
+                                    const SparseMatrix<double> &M,
+                                    const std::vector<bool> &fixed,
+                                    const unsigned int n_modes,
+                                    const unsigned int ncv)
+{
+  const unsigned int n = K.m();
+  // Shift sigma = -s < 0: K - sigma M = K + s M is positive definite even if
+  // the model has rigid-body modes (K only semi-definite), and the wanted
+  // eigenvalues lambda >= 0 > sigma are the largest nu = 1/(lambda - sigma)
+  // in magnitude. s is tiny next to the stiffness scale: the accuracy of the
+  // elastic eigenvalues does not depend on it (round-off eps ||K||).
+  double ratio = std::numeric_limits<double>::max();
+  for (unsigned int i = 0; i < n; ++i)
+    if (!fixed[i] && M.diag_element(i) > 0. && K.diag_element(i) > 0.)
+      ratio = std::min(ratio, K.diag_element(i) / M.diag_element(i));
+  const double sigma =
+      -(ratio < std::numeric_limits<double>::max() ? 1e-8 * ratio : 1e-8);
+
+  SparseMatrix<double> shifted(K.get_sparsity_pattern());
+  shifted.copy_from(K);
+  shifted.add(-sigma, M);
+  // fixed rows: K keeps a positive diagonal, M is zero there
+  const ShiftedInverse inverse(shifted);
+
+  SolverControl control(10000, 1e-13);
+  ArpackSolver::AdditionalData data(ncv, ArpackSolver::largest_magnitude, true);
+  ArpackSolver eigensolver(control, data);
+  eigensolver.set_shift(sigma);
+  // deterministic pseudo-random start vector (all ones would miss the
+  // antisymmetric modes of symmetric structures), zero on fixed DoFs
+  Vector<double> start(n);
+  std::mt19937 generator(20240501);
+  std::uniform_real_distribution<double> uniform(0.5, 1.5);
+  for (unsigned int i = 0; i < n; ++i)
+    start[i] = fixed[i] ? 0. : uniform(generator);
+  eigensolver.set_initial_vector(start);
+
+  std::vector<std::complex<double>> lambda(n_modes);
+  std::vector<Vector<double>> vectors(n_modes, Vector<double>(n));
+  eigensolver.solve(K, M, inverse, lambda, vectors, n_modes);
+
+  std::vector<Eigenpair> pairs(n_modes);
+  for (unsigned int k = 0; k < n_modes; ++k)
+  {
+    pairs[k].lambda = lambda[k].real();
+    pairs[k].phi = vectors[k];
+  }
+  return pairs;
+}
+} // namespace
+
+ModalResult compute_modes(const DiscreteSystem &system, const unsigned int n_modes)
+{
+  const unsigned int n = system.n_dofs();
+  const std::vector<bool> &fixed = system.fixed;
+  AssertThrow(fixed.size() == n,
+              ExcMessage("modal analysis: the DiscreteSystem has no fixed flags."));
+  const unsigned int n_free = std::count(fixed.begin(), fixed.end(), false);
+  AssertThrow(n_modes <= n_free,
+              ExcMessage("modal analysis: " + std::to_string(n_modes) +
+                         " modes requested, but the model has only " +
+                         std::to_string(n_free) +
+                         " free degrees of freedom (the number of modes)."));
+
+  // K and M on one pattern (a diagonal one for a model without stiffness);
+  // fixed DoFs: K keeps a positive diagonal, M rows and columns are zero, so
+  // that their eigenvalues are infinite and never found
+  SparsityPattern diagonal_pattern;
+  if (!system.has_stiffness())
+  {
+    diagonal_pattern.reinit(n, n, 1);
+    diagonal_pattern.compress();
+  }
+  const SparsityPattern &pattern =
+      system.has_stiffness() ? system.stiffness_pattern : diagonal_pattern;
+  SparseMatrix<double> K(pattern), M(pattern);
+  if (system.has_stiffness())
+    K.copy_from(system.stiffness);
+  // (not has_consistent_mass(): m() of a never initialised matrix is a null
+  // dereference)
+  if (!system.consistent_mass.empty())
+  {
+    for (unsigned int i = 0; i < n; ++i)
+      for (auto it = system.consistent_mass.begin(i); it != system.consistent_mass.end(i);
+           ++it)
+        if (it->value() != 0.)
+        {
+          AssertThrow(pattern.exists(i, it->column()),
+                      ExcMessage("modal analysis: the consistent mass has an entry "
+                                 "outside the sparsity pattern of the stiffness."));
+          M.add(i, it->column(), it->value());
+        }
+  }
+  else
+    for (unsigned int i = 0; i < n; ++i)
+      M.set(i, i, system.lumped_mass[i]);
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    for (auto it = K.begin(i); it != K.end(i); ++it)
+    {
+      const unsigned int j = it->column();
+      if (i == j)
+      {
+        if (fixed[i] && !(it->value() > 0.))
+          it->value() = 1.;
+      }
+      else if (fixed[i] || fixed[j])
+        it->value() = 0.;
+    }
+    for (auto it = M.begin(i); it != M.end(i); ++it)
+      if (fixed[i] || fixed[it->column()])
+        it->value() = 0.;
+  }
+
+  ModalResult result;
+  std::array<Vector<double>, 3> Mr;
+  for (unsigned int d = 0; d < 3; ++d)
+    if (system.influence[d].size() == n)
+    {
+      Mr[d].reinit(n);
+      M.vmult(Mr[d], system.influence[d]);
+      result.total_mass[d] = system.influence[d] * Mr[d];
+    }
+  if (n_modes == 0)
+    return result;
+
+  // ARPACK needs 2 n_modes + 1 < ncv < n; ncv <= n_free keeps the Lanczos
+  // basis inside the space of the free DoFs
+  const unsigned int ncv =
+      std::min({n_free, n - 1, std::max(2 * n_modes + 2, n_modes + 20)});
+  std::vector<Eigenpair> pairs = (ncv >= 2 * n_modes + 2)
+                                     ? arpack_modes(K, M, fixed, n_modes, ncv)
+                                     : dense_modes(K, M, fixed);
+  std::sort(pairs.begin(),
+            pairs.end(),
+            [](const Eigenpair &a, const Eigenpair &b) { return a.lambda < b.lambda; });
+  pairs.resize(n_modes);
+
+  // mass-normalise, fix the sign (largest entry positive), check K phi = lambda M phi
+  double norm_K = 0.;
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    double row = 0.;
+    for (auto it = K.begin(i); it != K.end(i); ++it)
+      row += std::abs(it->value());
+    norm_K = std::max(norm_K, row);
+  }
+  Vector<double> Kphi(n), Mphi(n), r(n);
+  for (unsigned int k = 0; k < n_modes; ++k)
+  {
+    Vector<double> &phi = pairs[k].phi;
+    for (unsigned int i = 0; i < n; ++i)
+      if (fixed[i])
+        phi[i] = 0.;
+    M.vmult(Mphi, phi);
+    const double mass = phi * Mphi;
+    AssertThrow(mass > 0. && std::isfinite(mass),
+                ExcMessage("modal analysis: mode " + std::to_string(k + 1) +
+                           " has no kinetic energy (ARPACK did not converge or the "
+                           "mass matrix is singular)."));
+    unsigned int largest = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      if (std::abs(phi[i]) > std::abs(phi[largest]))
+        largest = i;
+    const double scale = (phi[largest] < 0. ? -1. : 1.) / std::sqrt(mass);
+    phi *= scale;
+    Mphi *= scale;
+
+    const double lambda = pairs[k].lambda;
+    K.vmult(Kphi, phi);
+    r = Kphi;
+    r.add(-lambda, Mphi);
+    for (unsigned int i = 0; i < n; ++i)
+      if (fixed[i])
+        r[i] = 0.;
+    const double tolerance = 1e-6 * (Kphi.l2_norm() + std::abs(lambda) * Mphi.l2_norm()) +
+                             1e-10 * norm_K * phi.l2_norm();
+    if (!(r.l2_norm() <= tolerance))
+    {
+      std::ostringstream message;
+      message << "modal analysis: mode " << k + 1 << " (lambda = " << lambda
+              << " 1/s^2) is not an eigenpair: ||K phi - lambda M phi|| = " << r.l2_norm()
+              << " > " << tolerance << " (the eigensolver did not converge).";
+      AssertThrow(false, ExcMessage(message.str()));
+    }
+
+    result.frequencies.push_back(std::sqrt(std::max(lambda, 0.)) / (2. * M_PI));
+    std::array<double, 3> gamma{{0., 0., 0.}}, effective{{0., 0., 0.}};
+    for (unsigned int d = 0; d < 3; ++d)
+      if (Mr[d].size() == n)
+      {
+        gamma[d] = phi * Mr[d];
+        effective[d] = gamma[d] * gamma[d];
+      }
+    result.participation.push_back(gamma);
+    result.effective_mass.push_back(effective);
+    result.modes.push_back(std::move(phi));
+  }
+  return result;
+}
+} // namespace hati

@@ -1,0 +1,652 @@
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/grid/tria_description.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <hati/model/frame.h>
+
+#include <cmath>
+#include <iomanip>
+#include <set>
+#include <sstream>
+
+namespace hati
+{
+namespace
+{
+const char *const component_labels[6] = {"x", "y", "z", "rx", "ry", "rz"};
+
+/** One item "name: v1, v2, ..." of a list entry. */
+struct Item
+{
+  std::string name;
+  std::vector<std::string> values;
+};
+
+/** Split `name: v, v; name: v, v` into items; @p entry names the parameter in errors. */
+std::vector<Item> parse_items(const std::string &text, const std::string &entry)
+{
+  std::vector<Item> items;
+  for (const std::string &raw : Utilities::split_string_list(text, ';'))
+  {
+    const std::string item = Utilities::trim(raw);
+    if (item.empty())
+      continue;
+    const auto colon = item.find(':');
+    AssertThrow(colon != std::string::npos && colon > 0,
+                ExcMessage("Model/Frame/" + entry + ": item '" + item +
+                           "' is not of the form 'name: values'"));
+    Item it;
+    it.name = Utilities::trim(item.substr(0, colon));
+    for (const std::string &v : Utilities::split_string_list(item.substr(colon + 1), ','))
+      it.values.push_back(Utilities::trim(v));
+    if (it.values.size() == 1 && it.values[0].empty())
+      it.values.clear();
+    items.push_back(it);
+  }
+  return items;
+}
+
+double to_number(const std::string &value, const std::string &entry, const Item &item)
+{
+  char *end = nullptr;
+  const double x = std::strtod(value.c_str(), &end);
+  AssertThrow(!value.empty() && end != nullptr && *end == '\0' && std::isfinite(x),
+              ExcMessage("Model/Frame/" + entry + ": item '" + item.name + "': '" +
+                         value + "' is not a number"));
+  return x;
+}
+
+void expect_values(const Item &item,
+                   const std::string &entry,
+                   const std::vector<unsigned int> &counts,
+                   const std::string &expected)
+{
+  for (const unsigned int c : counts)
+    if (item.values.size() == c)
+      return;
+  AssertThrow(false,
+              ExcMessage("Model/Frame/" + entry + ": item '" + item.name + "' has " +
+                         std::to_string(item.values.size()) + " values, expected " +
+                         expected));
+}
+} // namespace
+
+void Frame::Parameters::declare_parameters(ParameterHandler &prm)
+{
+  prm.declare_entry("Nodes",
+                    "",
+                    Patterns::Anything(),
+                    "Named nodes, 'name: x, y, z; ...' (m, global axes).");
+  prm.declare_entry(
+      "Materials",
+      "steel: 2.1e11, 0.3, 7850",
+      Patterns::Anything(),
+      "Named materials, 'name: E, nu, rho; ...' with Young's modulus E (Pa), "
+      "Poisson's ratio nu (-, G = E / (2 (1 + nu))) and density rho (kg/m^3).");
+  prm.declare_entry(
+      "Sections",
+      "",
+      Patterns::Anything(),
+      "Named cross-sections, 'name: kind, values; ...' with kind 'rectangle, b, h' "
+      "(solid, width b along local y, height h along local z, m), 'box, b, h, t_web, "
+      "t_flange' (thin-walled closed box, m) or 'general, A, Iy, Iz, J, Asy, Asz' (m^2, "
+      "m^4, m^4, m^4, m^2, m^2; Iy = int z^2 dA for bending about local y; shear areas "
+      "Asy, Asz, 0 for no shear deformation).");
+  prm.declare_entry(
+      "Members",
+      "",
+      Patterns::Anything(),
+      "Named members, 'name: start node, end node, section, material, number of "
+      "elements[, yx, yy, yz]; ...'. Local x runs from the start to the end node; the "
+      "optional vector (global axes) fixes the section's local y axis (its part "
+      "orthogonal to the member); default: global Y, or global X for members parallel "
+      "to Y.");
+  prm.declare_entry(
+      "Point masses",
+      "",
+      Patterns::Anything(),
+      "Nodal masses, 'node: m[, Ixx, Iyy, Izz]; ...' (kg, kg m^2 about global "
+      "axes through the node).");
+  prm.declare_entry(
+      "Supports",
+      "",
+      Patterns::Anything(),
+      "Supports, 'node: clamped | pinned | c1, c2, c3, c4, c5, c6; ...' with one code "
+      "per "
+      "DoF ux, uy, uz, rx, ry, rz: 'fixed', 'free' or a spring stiffness (N/m for "
+      "translations, N m/rad for rotations). 'pinned' fixes the translations only.");
+  prm.declare_entry(
+      "Hinged joints",
+      "",
+      Patterns::Anything(),
+      "Nodes where the members are hinged, 'node, node, ...': the first "
+      "member at the node keeps the node's rotations, the others share only "
+      "the translations. Joints are rigid by default.");
+  prm.declare_entry(
+      "Nodal loads",
+      "",
+      Patterns::Anything(),
+      "Constant nodal loads, 'node: Fx, Fy, Fz[, Mx, My, Mz]; ...' (N, N m, "
+      "global axes).");
+  prm.declare_entry("Monitor nodes",
+                    "",
+                    Patterns::Anything(),
+                    "Nodes written to history.csv, 'node, node, ...' (columns "
+                    "NODE.ux ... NODE.urz, NODE.vx ... NODE.vrz).");
+  prm.declare_entry("Section force members",
+                    "",
+                    Patterns::Anything(),
+                    "Members whose section forces are written to section_forces.csv at "
+                    "every history row, 'member, member, ...'.");
+}
+
+void Frame::Parameters::parse_parameters(ParameterHandler &prm)
+{
+  for (const Item &it : parse_items(prm.get("Nodes"), "Nodes"))
+  {
+    expect_values(it, "Nodes", {3}, "3 (x, y, z)");
+    AssertThrow(nodes.count(it.name) == 0,
+                ExcMessage("Model/Frame/Nodes: node '" + it.name + "' is defined twice"));
+    nodes[it.name] = Point<3>(to_number(it.values[0], "Nodes", it),
+                              to_number(it.values[1], "Nodes", it),
+                              to_number(it.values[2], "Nodes", it));
+    node_order.push_back(it.name);
+  }
+  for (const Item &it : parse_items(prm.get("Materials"), "Materials"))
+  {
+    expect_values(it, "Materials", {3}, "3 (E, nu, rho)");
+    FrameMaterial m;
+    m.E = to_number(it.values[0], "Materials", it);
+    const double nu = to_number(it.values[1], "Materials", it);
+    m.rho = to_number(it.values[2], "Materials", it);
+    AssertThrow(m.E > 0. && nu > -1. && nu < 0.5 && m.rho > 0.,
+                ExcMessage("Model/Frame/Materials: item '" + it.name +
+                           "' needs E > 0, -1 < nu < 0.5 and rho > 0"));
+    m.G = m.E / (2. * (1. + nu));
+    materials[it.name] = m;
+  }
+  for (const Item &it : parse_items(prm.get("Sections"), "Sections"))
+  {
+    AssertThrow(!it.values.empty(),
+                ExcMessage("Model/Frame/Sections: item '" + it.name + "' has no kind"));
+    const std::string kind = it.values[0];
+    std::vector<double> v;
+    for (unsigned int i = 1; i < it.values.size(); ++i)
+    {
+      v.push_back(to_number(it.values[i], "Sections", it));
+      AssertThrow(v.back() >= 0.,
+                  ExcMessage("Model/Frame/Sections: item '" + it.name +
+                             "' has a negative value"));
+    }
+    FrameSection s;
+    if (kind == "rectangle")
+    {
+      expect_values(it, "Sections", {3}, "'rectangle, b, h'");
+      s = FrameSection::rectangle(v[0], v[1]);
+    }
+    else if (kind == "box")
+    {
+      expect_values(it, "Sections", {5}, "'box, b, h, t_web, t_flange'");
+      s = FrameSection::box(v[0], v[1], v[2], v[3]);
+    }
+    else if (kind == "general")
+    {
+      expect_values(it, "Sections", {7}, "'general, A, Iy, Iz, J, Asy, Asz'");
+      s.A = v[0];
+      s.Iy = v[1];
+      s.Iz = v[2];
+      s.J = v[3];
+      s.shear_area_y = v[4];
+      s.shear_area_z = v[5];
+    }
+    else
+      AssertThrow(false,
+                  ExcMessage("Model/Frame/Sections: item '" + it.name +
+                             "': unknown kind '" + kind +
+                             "', expected rectangle, box or general"));
+    AssertThrow(s.A > 0. && s.Iy > 0. && s.Iz > 0. && s.J > 0.,
+                ExcMessage("Model/Frame/Sections: item '" + it.name +
+                           "' needs A, Iy, Iz and J > 0"));
+    sections[it.name] = s;
+  }
+  for (const Item &it : parse_items(prm.get("Members"), "Members"))
+  {
+    expect_values(it,
+                  "Members",
+                  {5, 8},
+                  "5 or 8 (start, end, section, material, elements[, yx, yy, yz])");
+    Member m;
+    m.name = it.name;
+    m.start = it.values[0];
+    m.end = it.values[1];
+    m.section = it.values[2];
+    m.material = it.values[3];
+    const double ne = to_number(it.values[4], "Members", it);
+    AssertThrow(ne >= 1. && ne == std::floor(ne),
+                ExcMessage("Model/Frame/Members: member '" + it.name +
+                           "': the number of elements must be a positive integer"));
+    m.n_elements = static_cast<unsigned int>(ne);
+    if (it.values.size() == 8)
+      for (unsigned int d = 0; d < 3; ++d)
+        m.y_reference[d] = to_number(it.values[5 + d], "Members", it);
+    members.push_back(m);
+  }
+  for (const Item &it : parse_items(prm.get("Point masses"), "Point masses"))
+  {
+    expect_values(it, "Point masses", {1, 4}, "1 or 4 (m[, Ixx, Iyy, Izz])");
+    PointMassData p;
+    p.node = it.name;
+    p.mass = to_number(it.values[0], "Point masses", it);
+    if (it.values.size() == 4)
+      for (unsigned int d = 0; d < 3; ++d)
+        p.rotary_inertia[d] = to_number(it.values[1 + d], "Point masses", it);
+    point_masses.push_back(p);
+  }
+  for (const Item &it : parse_items(prm.get("Supports"), "Supports"))
+  {
+    Support s;
+    s.node = it.name;
+    if (it.values.size() == 1 && it.values[0] == "clamped")
+      s.stiffness = {{0., 0., 0., 0., 0., 0.}};
+    else if (it.values.size() == 1 && it.values[0] == "pinned")
+      s.stiffness = {{0., 0., 0., -1., -1., -1.}};
+    else
+    {
+      expect_values(it, "Supports", {6}, "'clamped', 'pinned' or 6 codes");
+      for (unsigned int c = 0; c < 6; ++c)
+      {
+        const std::string &code = it.values[c];
+        if (code == "fixed")
+          s.stiffness[c] = 0.;
+        else if (code == "free")
+          s.stiffness[c] = -1.;
+        else
+        {
+          s.stiffness[c] = to_number(code, "Supports", it);
+          AssertThrow(s.stiffness[c] > 0.,
+                      ExcMessage("Model/Frame/Supports: node '" + it.name +
+                                 "': a spring stiffness must be > 0"));
+        }
+      }
+    }
+    supports.push_back(s);
+  }
+  auto names = [](const std::string &text)
+  {
+    std::vector<std::string> r;
+    for (const auto &s : Utilities::split_string_list(text, ','))
+      if (!Utilities::trim(s).empty())
+        r.push_back(Utilities::trim(s));
+    return r;
+  };
+  hinged_joints = names(prm.get("Hinged joints"));
+  monitor_nodes = names(prm.get("Monitor nodes"));
+  section_force_members = names(prm.get("Section force members"));
+  for (const Item &it : parse_items(prm.get("Nodal loads"), "Nodal loads"))
+  {
+    expect_values(it, "Nodal loads", {3, 6}, "3 or 6 (Fx, Fy, Fz[, Mx, My, Mz])");
+    std::array<double, 6> f{{0., 0., 0., 0., 0., 0.}};
+    for (unsigned int c = 0; c < it.values.size(); ++c)
+      f[c] = to_number(it.values[c], "Nodal loads", it);
+    nodal_loads[it.name] = f;
+  }
+
+  // cross-checks, with the entry that is wrong
+  AssertThrow(!members.empty(), ExcMessage("Model/Frame/Members: no member is defined"));
+  std::set<std::string> member_names, used_nodes;
+  for (const auto &m : members)
+  {
+    AssertThrow(
+        member_names.insert(m.name).second,
+        ExcMessage("Model/Frame/Members: member '" + m.name + "' is defined twice"));
+    for (const auto &n : {m.start, m.end})
+    {
+      AssertThrow(nodes.count(n),
+                  ExcMessage("Model/Frame/Members: member '" + m.name + "' names node '" +
+                             n + "', which is not in Model/Frame/Nodes"));
+      used_nodes.insert(n);
+    }
+    AssertThrow(sections.count(m.section),
+                ExcMessage("Model/Frame/Members: member '" + m.name +
+                           "' names section '" + m.section +
+                           "', which is not in Model/Frame/Sections"));
+    AssertThrow(materials.count(m.material),
+                ExcMessage("Model/Frame/Members: member '" + m.name +
+                           "' names material '" + m.material +
+                           "', which is not in Model/Frame/Materials"));
+    AssertThrow(nodes[m.start].distance(nodes[m.end]) > 0.,
+                ExcMessage("Model/Frame/Members: member '" + m.name +
+                           "' has zero length (both ends at the same point)"));
+  }
+  auto check_node = [&](const std::string &n, const std::string &entry)
+  {
+    AssertThrow(used_nodes.count(n),
+                ExcMessage("Model/Frame/" + entry + ": node '" + n +
+                           "' is not an end of any member in Model/Frame/Members"));
+  };
+  for (const auto &p : point_masses)
+    check_node(p.node, "Point masses");
+  for (const auto &s : supports)
+    check_node(s.node, "Supports");
+  for (const auto &n : hinged_joints)
+    check_node(n, "Hinged joints");
+  for (const auto &n : monitor_nodes)
+    check_node(n, "Monitor nodes");
+  for (const auto &l : nodal_loads)
+    check_node(l.first, "Nodal loads");
+  for (const auto &m : section_force_members)
+    AssertThrow(
+        member_names.count(m),
+        ExcMessage("Model/Frame/Section force members: no member named '" + m + "'"));
+}
+
+Frame::Frame(const Parameters &parameters) : parameters(parameters), fe(FE_Q<1, 3>(1), 6)
+{
+}
+
+types::global_dof_index Frame::node_dof(const std::string &node,
+                                        const unsigned int c) const
+{
+  const auto it = node_dofs.find(node);
+  AssertThrow(it != node_dofs.end(), ExcMessage("frame: unknown node '" + node + "'"));
+  return it->second[c];
+}
+
+void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
+{
+  const auto &P = parameters;
+
+  // every member its own vertices; remember the end vertices at each node
+  std::vector<Point<3>> vertices;
+  std::vector<CellData<1>> cell_data;
+  std::map<std::string, std::vector<unsigned int>> node_vertices; // in member order
+  std::vector<std::pair<unsigned int, unsigned int>> cell_member; // (member, element)
+  for (unsigned int m = 0; m < P.members.size(); ++m)
+  {
+    const auto &member = P.members[m];
+    const Point<3> x1 = P.nodes.at(member.start), x2 = P.nodes.at(member.end);
+    const unsigned int base = vertices.size();
+    for (unsigned int i = 0; i <= member.n_elements; ++i)
+      vertices.push_back(x1 + (x2 - x1) * (double(i) / member.n_elements));
+    node_vertices[member.start].push_back(base);
+    node_vertices[member.end].push_back(base + member.n_elements);
+    for (unsigned int i = 0; i < member.n_elements; ++i)
+    {
+      CellData<1> c;
+      c.vertices = {base + i, base + i + 1};
+      c.material_id = m;
+      cell_data.push_back(c);
+      cell_member.emplace_back(m, i);
+    }
+  }
+  triangulation.create_triangulation(vertices, cell_data, SubCellData());
+  dof_handler.reinit(triangulation);
+  dof_handler.distribute_dofs(fe);
+  const unsigned int n = dof_handler.n_dofs();
+  system.reinit(n);
+
+  // DoFs of every vertex, and the cells in creation order
+  std::vector<std::array<types::global_dof_index, 6>> vertex_dofs(vertices.size());
+  cells.clear();
+  for (const auto &cell : dof_handler.active_cell_iterators())
+  {
+    CellInfo info;
+    std::tie(info.member, info.element) = cell_member[cell->active_cell_index()];
+    const auto &member = P.members[info.member];
+    // local x from the member's start to its end, whatever the cell's orientation
+    const unsigned int first = (cell->vertex(0).distance(P.nodes.at(member.start)) <=
+                                cell->vertex(1).distance(P.nodes.at(member.start)))
+                                   ? 0
+                                   : 1;
+    for (unsigned int v = 0; v < 2; ++v)
+      for (unsigned int c = 0; c < 6; ++c)
+      {
+        vertex_dofs[cell->vertex_index(v)][c] = cell->vertex_dof_index(v, c);
+        info.dofs[6 * (v == first ? 0 : 1) + c] = cell->vertex_dof_index(v, c);
+      }
+    Tensor<1, 3> y_ref = member.y_reference;
+    const Tensor<1, 3> axis = P.nodes.at(member.end) - P.nodes.at(member.start);
+    if (y_ref.norm() == 0.)
+    {
+      y_ref[1] = 1.;
+      if (std::abs(axis[1]) > (1. - 1e-9) * axis.norm())
+        y_ref = Tensor<1, 3>({1., 0., 0.});
+    }
+    info.length = cell->vertex(0).distance(cell->vertex(1));
+    try
+    {
+      info.rotation = frame_rotation(cell->vertex(first), cell->vertex(1 - first), y_ref);
+    }
+    catch (const std::exception &)
+    {
+      AssertThrow(
+          false,
+          ExcMessage("Model/Frame/Members: member '" + member.name +
+                     "': its section orientation vector is parallel to the member"));
+    }
+    cells.push_back(info);
+  }
+
+  // joints and supports as constraints
+  constraints.clear();
+  node_dofs.clear();
+  const std::set<std::string> hinged(P.hinged_joints.begin(), P.hinged_joints.end());
+  for (const auto &[node, list] : node_vertices)
+  {
+    node_dofs[node] = vertex_dofs[list[0]];
+    for (unsigned int k = 1; k < list.size(); ++k)
+      for (unsigned int c = 0; c < (hinged.count(node) ? 3u : 6u); ++c)
+      {
+        const auto slave = vertex_dofs[list[k]][c], master = vertex_dofs[list[0]][c];
+        constraints.add_line(slave);
+        constraints.add_entry(slave, master, 1.);
+      }
+  }
+  for (const auto &s : P.supports)
+    for (unsigned int c = 0; c < 6; ++c)
+      if (s.stiffness[c] == 0. && !constraints.is_constrained(node_dofs[s.node][c]))
+        constraints.add_line(node_dofs[s.node][c]);
+  constraints.close();
+
+  DynamicSparsityPattern dsp(n, n);
+  DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+  system.stiffness_pattern.copy_from(dsp);
+  system.stiffness.reinit(system.stiffness_pattern);
+  system.consistent_mass.reinit(system.stiffness_pattern);
+
+  // element matrices, identical along a member
+  std::vector<FullMatrix<double>> kl(P.members.size()), ml(P.members.size());
+  std::vector<std::vector<double>> lumped_local(P.members.size());
+  local_stiffness_of_member.resize(P.members.size());
+  std::vector<bool> done(P.members.size(), false);
+  FullMatrix<double> kg(12, 12), mg(12, 12);
+  Vector<double> lumped_cell(12);
+  std::vector<types::global_dof_index> dofs(12);
+  double omega2 = 0.;
+  total_mass = 0.;
+  for (const auto &info : cells)
+  {
+    const auto &member = P.members[info.member];
+    const FrameSection &section = P.sections.at(member.section);
+    const FrameMaterial &material = P.materials.at(member.material);
+    if (!done[info.member])
+    {
+      kl[info.member] = local_stiffness(info.length, section, material);
+      ml[info.member] = local_consistent_mass(info.length, section, material);
+      lumped_local[info.member] = local_lumped_mass(info.length, section, material);
+      local_stiffness_of_member[info.member] = kl[info.member];
+      done[info.member] = true;
+    }
+    kg = to_global(kl[info.member], info.rotation);
+    mg = to_global(ml[info.member], info.rotation);
+    // lumped: diagonal of T^T D T, so that it stays diagonal in global axes
+    const auto &R = info.rotation;
+    const auto &D = lumped_local[info.member];
+    for (unsigned int b = 0; b < 4; ++b)
+      for (unsigned int i = 0; i < 3; ++i)
+      {
+        double d = 0.;
+        for (unsigned int k = 0; k < 3; ++k)
+          d += R[k][i] * R[k][i] * D[3 * b + k];
+        lumped_cell[3 * b + i] = d;
+      }
+    std::copy(info.dofs.begin(), info.dofs.end(), dofs.begin());
+    constraints.distribute_local_to_global(kg, dofs, system.stiffness);
+    constraints.distribute_local_to_global(mg, dofs, system.consistent_mass);
+    constraints.distribute_local_to_global(lumped_cell, dofs, system.lumped_mass);
+    omega2 =
+        std::max(omega2,
+                 element_omega_squared(
+                     kg, std::vector<double>(lumped_cell.begin(), lumped_cell.end())));
+    total_mass += material.rho * section.A * info.length;
+  }
+  system.omega_max_bound = std::sqrt(omega2);
+
+  for (const auto &s : P.supports)
+    for (unsigned int c = 0; c < 6; ++c)
+      if (s.stiffness[c] > 0.)
+        system.stiffness.add(node_dofs[s.node][c], node_dofs[s.node][c], s.stiffness[c]);
+  for (const auto &p : P.point_masses)
+    for (unsigned int c = 0; c < 6; ++c)
+    {
+      const auto i = node_dofs[p.node][c];
+      if (constraints.is_constrained(i))
+        continue;
+      const double m = c < 3 ? p.mass : p.rotary_inertia[c - 3];
+      system.lumped_mass[i] += m;
+      system.consistent_mass.add(i, i, m);
+    }
+  for (const auto &p : P.point_masses)
+    total_mass += p.mass;
+
+  for (unsigned int i = 0; i < n; ++i)
+    system.fixed[i] = constraints.is_constrained(i);
+
+  // rigid translations, gravity F = M r g with the consistent mass, nodal loads
+  Vector<double> rg(n);
+  for (unsigned int d = 0; d < 3; ++d)
+  {
+    system.influence[d].reinit(n);
+    for (const auto &vd : vertex_dofs)
+      if (!system.fixed[vd[d]])
+        system.influence[d][vd[d]] = 1.;
+    rg.add(common.gravity[d], system.influence[d]);
+  }
+  system.consistent_mass.vmult(system.constant_force, rg);
+  for (const auto &[node, f] : P.nodal_loads)
+    for (unsigned int c = 0; c < 6; ++c)
+      system.constant_force[node_dofs[node][c]] += f[c];
+  for (unsigned int i = 0; i < n; ++i)
+    if (system.fixed[i])
+      system.constant_force[i] = 0.;
+
+  for (const auto &node : P.monitor_nodes)
+  {
+    MonitorPoint m;
+    m.name = node;
+    for (unsigned int c = 0; c < 6; ++c)
+    {
+      m.labels.push_back(component_labels[c]);
+      m.dofs.push_back(node_dofs[node][c]);
+    }
+    system.monitors.push_back(m);
+  }
+}
+
+std::array<double, 12> Frame::cell_section_forces(const CellInfo &cell,
+                                                  const Vector<double> &U) const
+{
+  Vector<double> ug(12);
+  for (unsigned int i = 0; i < 12; ++i)
+    ug[i] = U[cell.dofs[i]];
+  return section_forces(local_stiffness_of_member[cell.member],
+                        to_local(ug, cell.rotation));
+}
+
+void Frame::write_vtu(std::ostream &out,
+                      const std::vector<NamedVector> &fields,
+                      const double time,
+                      const unsigned int cycle) const
+{
+  DataOut<1, 3> data_out;
+  data_out.attach_dof_handler(dof_handler);
+  std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
+      6, DataComponentInterpretation::component_is_part_of_vector);
+  std::vector<Vector<double>> distributed(fields.size());
+  Vector<float> member_id(triangulation.n_active_cells());
+  std::array<Vector<float>, 6> forces;
+  for (auto &f : forces)
+    f.reinit(triangulation.n_active_cells());
+  for (unsigned int f = 0; f < fields.size(); ++f)
+  {
+    distributed[f] = *fields[f].second;
+    constraints.distribute(distributed[f]);
+    std::vector<std::string> names(3, fields[f].first);
+    for (unsigned int c = 0; c < 3; ++c)
+      names.push_back(fields[f].first + "_rotational");
+    data_out.add_data_vector(
+        distributed[f], names, DataOut<1, 3>::type_dof_data, interpretation);
+    if (fields[f].first == "displacement")
+      for (unsigned int c = 0; c < cells.size(); ++c)
+      {
+        const auto s = cell_section_forces(cells[c], distributed[f]);
+        for (unsigned int k = 0; k < 6; ++k)
+          forces[k][c] = 0.5 * (s[k] + s[6 + k]); // mid-element value
+      }
+  }
+  for (unsigned int c = 0; c < cells.size(); ++c)
+    member_id[c] = cells[c].member;
+  data_out.add_data_vector(member_id, "member", DataOut<1, 3>::type_cell_data);
+  const char *force_names[6] = {"N", "Vy", "Vz", "T", "My", "Mz"};
+  for (unsigned int k = 0; k < 6; ++k)
+    data_out.add_data_vector(forces[k], force_names[k], DataOut<1, 3>::type_cell_data);
+  data_out.build_patches();
+  data_out.set_flags(DataOutBase::VtkFlags(time, cycle));
+  data_out.write_vtu(out);
+}
+
+std::string Frame::section_forces_header() const
+{
+  if (parameters.section_force_members.empty())
+    return "";
+  return "time,member,element,x,N,Vy,Vz,T,My,Mz";
+}
+
+void Frame::write_section_forces(std::ostream &out,
+                                 const double time,
+                                 const Vector<double> &U) const
+{
+  if (parameters.section_force_members.empty())
+    return;
+  Vector<double> u(U);
+  constraints.distribute(u);
+  for (const auto &name : parameters.section_force_members)
+    for (const auto &cell : cells)
+      if (parameters.members[cell.member].name == name)
+      {
+        const auto s = cell_section_forces(cell, u);
+        for (unsigned int end = 0; end < 2; ++end)
+        {
+          out << time << ',' << name << ',' << cell.element << ','
+              << (cell.element + end) * cell.length;
+          for (unsigned int k = 0; k < 6; ++k)
+            out << ',' << s[6 * end + k];
+          out << '\n';
+        }
+      }
+}
+
+std::string Frame::description() const
+{
+  std::ostringstream s;
+  unsigned int ne = 0;
+  for (const auto &m : parameters.members)
+    ne += m.n_elements;
+  s << "3D frame: " << parameters.nodes.size() << " nodes, " << parameters.members.size()
+    << " members, " << ne << " Timoshenko elements, mass " << total_mass << " kg";
+  return s.str();
+}
+} // namespace hati

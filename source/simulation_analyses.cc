@@ -1,0 +1,138 @@
+// Static and modal analyses of Simulation (kept apart from the time loops).
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/timer.h>
+
+#include <hati/analysis/modal_analysis.h>
+#include <hati/analysis/static_analysis.h>
+#include <hati/output/output_writer.h>
+#include <hati/simulation.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace hati
+{
+void Simulation::run_static()
+{
+  const auto start = std::chrono::steady_clock::now();
+  TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
+  Vector<double> U, V(system.n_dofs());
+  {
+    TimerOutput::Scope scope(timer, "static solve");
+    solve_static(system, 0., U, newmark_parameters.linear_solver);
+  }
+  OutputWriter writer(output_directory, system, *model);
+  OutputState s;
+  s.time = 0.;
+  s.displacement = &U;
+  s.velocity = &V;
+  for (const auto &c : system.contacts)
+  {
+    s.gaps.push_back(c.initial_gap + c.apply(U));
+    s.normal_velocities.push_back(0.);
+    s.impulses.push_back(0.);
+    s.active.push_back(false);
+  }
+  writer.write_history(s);
+  writer.write_vtu(s);
+  writer.flush();
+
+  std::cout << "  static analysis (K U = F_ext(0), " << newmark_parameters.linear_solver
+            << " solver):\n";
+  for (const auto &m : system.monitors)
+  {
+    std::cout << "    " << m.name << ":";
+    for (unsigned int i = 0; i < m.dofs.size(); ++i)
+      std::cout << "  u" << m.labels[i] << " = " << std::setprecision(8) << U[m.dofs[i]];
+    std::cout << std::endl;
+  }
+  double umax = 0.;
+  for (unsigned int d = 0; d < 3; ++d)
+    for (unsigned int i = 0; i < system.influence[d].size(); ++i)
+      if (system.influence[d][i] != 0.)
+        umax = std::max(umax, std::abs(U[i]));
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  write_summary(output_directory + "/summary.json",
+                {{"analysis", json_string("static")},
+                 {"model", json_string(model->description())},
+                 {"n_dofs", std::to_string(system.n_dofs())},
+                 {"max_translation", json_number(umax)},
+                 {"wall_time", json_number(wall)}});
+  std::cout << "  largest translation " << umax << " m; results in " << output_directory
+            << "/ (history.csv, solution.pvd, summary.json)" << std::endl;
+  timer.print_summary();
+}
+
+void Simulation::run_modal()
+{
+  const auto start = std::chrono::steady_clock::now();
+  TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
+  ModalResult r;
+  {
+    TimerOutput::Scope scope(timer, "eigenvalue solve");
+    r = compute_modes(system, analysis_parameters.n_modes);
+  }
+  TimerOutput::Scope scope(timer, "output");
+  std::ofstream csv(output_directory + "/modes.csv");
+  AssertThrow(csv, ExcMessage("cannot write " + output_directory + "/modes.csv"));
+  csv << std::setprecision(15);
+  csv << "mode,frequency,period,participation_x,participation_y,participation_z,"
+         "effective_mass_x,effective_mass_y,effective_mass_z,effective_mass_ratio_x,"
+         "effective_mass_ratio_y,effective_mass_ratio_z\n";
+  std::cout << "  modal analysis: " << r.frequencies.size() << " modes\n"
+            << "   mode  frequency (Hz)   period (s)   eff. mass ratio x      y      z\n";
+  std::vector<std::pair<double, std::string>> files;
+  for (unsigned int k = 0; k < r.frequencies.size(); ++k)
+  {
+    const double f = r.frequencies[k];
+    std::array<double, 3> ratio{{0., 0., 0.}};
+    for (unsigned int d = 0; d < 3; ++d)
+      ratio[d] = r.total_mass[d] > 0. ? r.effective_mass[k][d] / r.total_mass[d] : 0.;
+    csv << k + 1 << ',' << f << ',' << (f > 0. ? 1. / f : 0.);
+    for (unsigned int d = 0; d < 3; ++d)
+      csv << ',' << r.participation[k][d];
+    for (unsigned int d = 0; d < 3; ++d)
+      csv << ',' << r.effective_mass[k][d];
+    for (unsigned int d = 0; d < 3; ++d)
+      csv << ',' << ratio[d];
+    csv << '\n';
+    std::cout << std::setw(7) << k + 1 << std::setw(16) << std::setprecision(8) << f
+              << std::setw(13) << std::setprecision(6) << (f > 0. ? 1. / f : 0.)
+              << std::fixed << std::setprecision(3) << std::setw(12) << ratio[0]
+              << std::setw(7) << ratio[1] << std::setw(7) << ratio[2] << std::defaultfloat
+              << std::endl;
+
+    char name[64];
+    std::snprintf(name, sizeof(name), "mode-%03u.vtu", k + 1);
+    std::ofstream out(output_directory + "/" + name);
+    model->write_vtu(out, {{"displacement", &r.modes[k]}}, k + 1, k + 1);
+    files.emplace_back(k + 1, name);
+  }
+  csv.flush();
+  std::ofstream pvd(output_directory + "/modes.pvd");
+  DataOutBase::write_pvd_record(pvd, files);
+
+  std::ostringstream list;
+  list << '[';
+  for (unsigned int k = 0; k < r.frequencies.size(); ++k)
+    list << (k ? ", " : "") << json_number(r.frequencies[k]);
+  list << ']';
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  write_summary(output_directory + "/summary.json",
+                {{"analysis", json_string("modal")},
+                 {"model", json_string(model->description())},
+                 {"n_dofs", std::to_string(system.n_dofs())},
+                 {"frequencies", list.str()},
+                 {"wall_time", json_number(wall)}});
+  std::cout << "  modes.csv and mode shapes (modes.pvd: 'time' = mode number) in "
+            << output_directory << "/" << std::endl;
+}
+} // namespace hati

@@ -1,0 +1,523 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <hati/time/newmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+// Energy balance of the average acceleration scheme (beta = 1/4, gamma = 1/2)
+// -------------------------------------------------------------------------
+// N1 and N3 together give
+//   U_{n+1} = U_n + DT V_n + DT^2/4 (A_n + A_{n+1}),
+//   V_{n+1} = V_n + DT/2 (A_n + A_{n+1}),
+// hence  dU := U_{n+1} - U_n = DT/2 (V_n + V_{n+1})  and
+//        A_n + A_{n+1} = 2 (V_{n+1} - V_n) / DT.
+// N2 is the equation of motion at t_{n+1}: with N3,
+//   M A_{n+1} + C V_{n+1} + K U_{n+1}
+//     = M_eff A_{n+1} + C V* + K U* = F_{n+1},
+// and set_initial_state() makes it hold at t_0. Average the equations at t_n
+// and t_{n+1} and take the dot product with dU (M, C, K symmetric):
+//   dU.M (A_n + A_{n+1})/2 = (V_n + V_{n+1}).M (V_{n+1} - V_n)/2
+//                          = 1/2 V_{n+1}.M V_{n+1} - 1/2 V_n.M V_n,
+//   dU.K (U_n + U_{n+1})/2 = 1/2 U_{n+1}.K U_{n+1} - 1/2 U_n.K U_n,
+//   dU.C (V_n + V_{n+1})/2 = increment of `dissipated`,
+//   dU.(F_n + F_{n+1})/2   = increment of `external_work`.
+// So  d(kinetic) + d(internal) + d(dissipated) - d(external_work) = 0  in
+// every step: Energies::total() is constant up to the round-off of the
+// solves (and the tolerance of CG with the iterative solver). Rows of fixed
+// DoFs do not satisfy the equation of motion (their reactions are not
+// computed), but dU = 0 there, so they add nothing. For other (beta, gamma)
+// the balance holds only to O(DT) (gamma > 1/2 dissipates numerically).
+
+namespace hati
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(const Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/**
+ * dst += factor * src for two deal.II matrices whose patterns may differ;
+ * every entry of src must exist in the pattern of dst.
+ */
+void add_matrix(SparseMatrix<double> &dst,
+                const double factor,
+                const SparseMatrix<double> &src)
+{
+  if (&dst.get_sparsity_pattern() == &src.get_sparsity_pattern())
+  {
+    dst.add(factor, src);
+    return;
+  }
+  const SparsityPattern &pattern = dst.get_sparsity_pattern();
+  for (unsigned int i = 0; i < src.m(); ++i)
+    for (auto it = src.begin(i); it != src.end(i); ++it)
+    {
+      if (it->value() == 0.)
+        continue;
+      AssertThrow(pattern.exists(i, it->column()),
+                  ExcMessage("Newmark: the mass matrix has an entry outside the "
+                             "sparsity pattern of the stiffness matrix."));
+      dst.add(i, it->column(), factor * it->value());
+    }
+}
+
+/**
+ * Decouple the fixed DoFs: their rows and columns keep only a positive
+ * diagonal entry (the DiscreteSystem matrices are condensed already; this
+ * makes it hold whatever the models put there).
+ */
+void decouple_fixed_dofs(SparseMatrix<double> &m, const std::vector<bool> &fixed)
+{
+  for (unsigned int i = 0; i < m.m(); ++i)
+    for (auto it = m.begin(i); it != m.end(i); ++it)
+    {
+      const unsigned int j = it->column();
+      if (i == j)
+      {
+        if (fixed[i] && !(it->value() > 0.))
+          it->value() = 1.;
+      }
+      else if (fixed[i] || fixed[j])
+        it->value() = 0.;
+    }
+}
+
+void check_finite(const Vector<double> &x, const std::string &what)
+{
+  AssertThrow(std::isfinite(x.l2_norm()),
+              ExcMessage(what + ": the solution is not finite (NaN or infinity): the "
+                                "model is singular or ill-conditioned (check the "
+                                "supports, the masses and the time step)."));
+}
+} // namespace
+
+void NewmarkParameters::declare_parameters(ParameterHandler &prm)
+{
+  prm.declare_entry("Beta",
+                    "0.25",
+                    Patterns::Double(0.),
+                    "Newmark beta (-). 0.25 with Gamma = 0.5 is the average "
+                    "acceleration scheme: unconditionally stable, second order, "
+                    "energy conserving. Unconditional stability needs "
+                    "Beta >= Gamma / 2.");
+  prm.declare_entry("Gamma",
+                    "0.5",
+                    Patterns::Double(0.),
+                    "Newmark gamma (-), >= 0.5. Gamma > 0.5 adds numerical "
+                    "damping and makes the scheme first order.");
+  prm.declare_entry("Linear solver",
+                    "direct",
+                    Patterns::Selection("direct|iterative"),
+                    "direct: the effective matrix M + gamma DT C + beta DT^2 K is "
+                    "factorised once (Amesos_Klu) and each step is one "
+                    "forward/backward substitution. iterative: conjugate gradients "
+                    "preconditioned by ML algebraic multigrid (large models).");
+  prm.declare_entry("Solver tolerance",
+                    "1e-10",
+                    Patterns::Double(0.),
+                    "iterative: relative residual ||b - M_eff A|| <= tol ||b|| of "
+                    "each step (-).");
+}
+
+void NewmarkParameters::parse_parameters(ParameterHandler &prm)
+{
+  beta = prm.get_double("Beta");
+  gamma = prm.get_double("Gamma");
+  linear_solver = prm.get("Linear solver");
+  solver_tolerance = prm.get_double("Solver tolerance");
+  AssertThrow(gamma >= 0.5,
+              ExcMessage("Newmark: Gamma must be >= 0.5 (got " + std::to_string(gamma) +
+                         "): with Gamma < 1/2 the scheme has negative numerical "
+                         "damping and the solution grows."));
+  AssertThrow(solver_tolerance > 0.,
+              ExcMessage("Newmark: Solver tolerance must be > 0."));
+}
+
+void RayleighDamping::declare_parameters(ParameterHandler &prm)
+{
+  prm.declare_entry("Mass coefficient",
+                    "0",
+                    Patterns::Double(0.),
+                    "Rayleigh damping C = a0 M + a1 K: a0 (1/s). Do not combine with "
+                    "Damping ratio.");
+  prm.declare_entry("Stiffness coefficient",
+                    "0",
+                    Patterns::Double(0.),
+                    "Rayleigh damping C = a0 M + a1 K: a1 (s). Do not combine with "
+                    "Damping ratio.");
+  prm.declare_entry("Damping ratio",
+                    "0",
+                    Patterns::Double(0.),
+                    "Damping ratio zeta (-). If > 0, a0 and a1 are computed so that "
+                    "the First frequency and the Second frequency have exactly this "
+                    "damping ratio: a0 = 2 zeta w1 w2 / (w1 + w2), "
+                    "a1 = 2 zeta / (w1 + w2), w = 2 pi f.");
+  prm.declare_entry("First frequency",
+                    "0",
+                    Patterns::Double(0.),
+                    "First frequency f1 (Hz) of the damping ratio.");
+  prm.declare_entry("Second frequency",
+                    "0",
+                    Patterns::Double(0.),
+                    "Second frequency f2 (Hz) of the damping ratio.");
+}
+
+void RayleighDamping::parse_parameters(ParameterHandler &prm)
+{
+  a0 = prm.get_double("Mass coefficient");
+  a1 = prm.get_double("Stiffness coefficient");
+  const double zeta = prm.get_double("Damping ratio");
+  const double f1 = prm.get_double("First frequency");
+  const double f2 = prm.get_double("Second frequency");
+  if (zeta > 0.)
+  {
+    AssertThrow(a0 == 0. && a1 == 0.,
+                ExcMessage("Rayleigh damping: give either the Damping ratio (with "
+                           "the First and Second frequency) or the Mass and "
+                           "Stiffness coefficients, not both."));
+    AssertThrow(f1 > 0. && f2 > 0.,
+                ExcMessage("Rayleigh damping: a Damping ratio > 0 needs a First "
+                           "frequency and a Second frequency > 0 (Hz)."));
+    const double w1 = 2. * M_PI * f1, w2 = 2. * M_PI * f2;
+    a0 = 2. * zeta * w1 * w2 / (w1 + w2);
+    a1 = 2. * zeta / (w1 + w2);
+  }
+}
+
+/** The Trilinos effective matrix with its Amesos_Klu factorisation or AMG. */
+struct Newmark::EffectiveSolver
+{
+  TrilinosWrappers::SparseMatrix matrix;
+  SolverControl direct_control;
+  std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
+  TrilinosWrappers::PreconditionAMG amg;
+  // Epetra views for the direct solver
+  LinearAlgebra::distributed::Vector<double> x, b;
+};
+
+Newmark::Newmark(const DiscreteSystem &system,
+                 const double DT,
+                 const NewmarkParameters &parameters,
+                 const RayleighDamping &damping)
+    : system(system), dt(DT), beta(parameters.beta), gamma(parameters.gamma),
+      a0(damping.a0), a1(damping.a1), direct(parameters.linear_solver == "direct"),
+      tolerance(parameters.solver_tolerance),
+      use_consistent_mass(!system.consistent_mass.empty()),
+      solver(std::make_unique<EffectiveSolver>())
+{
+  // use_consistent_mass: not system.has_consistent_mass(), since
+  // SparseMatrix::m() dereferences the pattern pointer, which is null when a
+  // model never initialised the consistent mass (a point mass)
+  AssertThrow(dt > 0., ExcMessage("Newmark: the time step must be > 0 (s)."));
+  AssertThrow(gamma >= 0.5, ExcMessage("Newmark: Gamma must be >= 0.5."));
+  AssertThrow(parameters.linear_solver == "direct" ||
+                  parameters.linear_solver == "iterative",
+              ExcMessage("Newmark: unknown linear solver <" + parameters.linear_solver +
+                         ">: use direct or iterative."));
+  const unsigned int n = system.n_dofs();
+  AssertThrow(system.fixed.size() == n,
+              ExcMessage("Newmark: the DiscreteSystem has no fixed flags."));
+
+  // (N2) M_eff = M + gamma DT C + beta DT^2 K
+  //            = (1 + gamma DT a0) M + (beta DT^2 + gamma DT a1) K
+  const double mass_factor = 1. + gamma * dt * a0;
+  const double stiffness_factor = beta * dt * dt + gamma * dt * a1;
+  SparsityPattern diagonal_pattern;
+  if (!system.has_stiffness())
+  {
+    diagonal_pattern.reinit(n, n, 1);
+    diagonal_pattern.compress();
+  }
+  SparseMatrix<double> m_eff(system.has_stiffness() ? system.stiffness_pattern
+                                                    : diagonal_pattern);
+  if (system.has_stiffness())
+    add_matrix(m_eff, stiffness_factor, system.stiffness);
+  if (use_consistent_mass)
+    add_matrix(m_eff, mass_factor, system.consistent_mass);
+  else
+    for (unsigned int i = 0; i < n; ++i)
+      m_eff.add(i, i, mass_factor * system.lumped_mass[i]);
+  decouple_fixed_dofs(m_eff, system.fixed);
+  for (unsigned int i = 0; i < n; ++i)
+    AssertThrow(m_eff.diag_element(i) > 0.,
+                ExcMessage("Newmark: the effective matrix has a zero or negative "
+                           "diagonal at DoF " +
+                           std::to_string(i) +
+                           " (a DoF without mass and without stiffness): the model "
+                           "is singular."));
+
+  const auto start = Clock::now();
+  solver->matrix.reinit(m_eff, 0.);
+  if (direct)
+  {
+    solver->direct = std::make_unique<TrilinosWrappers::SolverDirect>(
+        solver->direct_control,
+        TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
+    try
+    {
+      solver->direct->initialize(solver->matrix);
+    }
+    catch (const std::exception &)
+    {
+      AssertThrow(false,
+                  ExcMessage("Newmark: the factorisation (Amesos_Klu) of the "
+                             "effective matrix M + gamma DT C + beta DT^2 K found a "
+                             "zero pivot: the model is singular (check the masses and "
+                             "the supports)."));
+    }
+    solver->x.reinit(n);
+    solver->b.reinit(n);
+  }
+  else
+  {
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic = true;
+    data.smoother_sweeps = 2;
+    // near null space: the rigid translations of the model, where it has any
+    for (const auto &r : system.influence)
+      if (r.size() == n && r.linfty_norm() > 0.)
+      {
+        std::vector<bool> mode(n);
+        for (unsigned int i = 0; i < n; ++i)
+          mode[i] = (r[i] != 0.);
+        data.constant_modes.push_back(mode);
+      }
+    solver->amg.initialize(solver->matrix, data);
+  }
+  factorization_seconds = seconds_since(start);
+
+  for (auto *v : {&U,
+                  &V,
+                  &A,
+                  &F,
+                  &CV,
+                  &U_star,
+                  &V_star,
+                  &rhs,
+                  &tmp,
+                  &F_new,
+                  &CV_new,
+                  &damping_work})
+    v->reinit(n);
+  set_initial_state(system.initial_displacement, system.initial_velocity);
+}
+
+Newmark::~Newmark() = default;
+
+void Newmark::zero_fixed(Vector<double> &x) const
+{
+  for (unsigned int i = 0; i < x.size(); ++i)
+    if (system.fixed[i])
+      x[i] = 0.;
+}
+
+void Newmark::mass_vmult(Vector<double> &dst, const Vector<double> &src) const
+{
+  if (use_consistent_mass)
+    system.consistent_mass.vmult(dst, src);
+  else
+    for (unsigned int i = 0; i < dst.size(); ++i)
+      dst[i] = system.lumped_mass[i] * src[i];
+}
+
+void Newmark::stiffness_vmult(Vector<double> &dst, const Vector<double> &src) const
+{
+  if (system.has_stiffness())
+    system.stiffness.vmult(dst, src);
+  else
+    dst = 0.;
+}
+
+void Newmark::damping_vmult(Vector<double> &dst, const Vector<double> &src) const
+{
+  dst = 0.;
+  if (a0 != 0.)
+  {
+    mass_vmult(dst, src);
+    dst *= a0;
+  }
+  if (a1 != 0. && system.has_stiffness())
+  {
+    system.stiffness.vmult(damping_work, src);
+    dst.add(a1, damping_work);
+  }
+}
+
+void Newmark::set_initial_state(const Vector<double> &U0, const Vector<double> &V0)
+{
+  const unsigned int n = system.n_dofs();
+  AssertThrow(U0.size() == n && V0.size() == n,
+              ExcMessage("Newmark: the initial displacement and velocity must have " +
+                         std::to_string(n) + " entries."));
+  U = U0;
+  V = V0;
+  zero_fixed(U);
+  zero_fixed(V);
+
+  // M A_0 = F_ext(t) - C V_0 - K U_0 (algorithms.md section 2)
+  system.external_force(t, F);
+  rhs = F;
+  stiffness_vmult(CV_new, U);
+  rhs -= CV_new;
+  damping_vmult(CV, V);
+  rhs -= CV;
+  zero_fixed(rhs);
+  if (rhs.linfty_norm() == 0.)
+    A = 0.;
+  else if (use_consistent_mass)
+  {
+    SparseMatrix<double> mass(system.consistent_mass.get_sparsity_pattern());
+    mass.copy_from(system.consistent_mass);
+    decouple_fixed_dofs(mass, system.fixed);
+    TrilinosWrappers::SparseMatrix trilinos_mass;
+    trilinos_mass.reinit(mass, 0.);
+    SolverControl control;
+    TrilinosWrappers::SolverDirect mass_solver(
+        control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
+    try
+    {
+      mass_solver.solve(trilinos_mass, A, rhs);
+    }
+    catch (const std::exception &)
+    {
+      AssertThrow(false,
+                  ExcMessage("Newmark: the consistent mass matrix is singular "
+                             "(Amesos_Klu found a zero pivot): the initial "
+                             "acceleration M A_0 = F_0 - C V_0 - K U_0 cannot be "
+                             "computed (a free DoF without mass?)."));
+    }
+    check_finite(A, "Newmark: initial acceleration");
+  }
+  else
+    // a free DoF without lumped mass has no inertia: its equation is static
+    // and it gets A_0 = 0
+    for (unsigned int i = 0; i < n; ++i)
+      A[i] = system.lumped_mass[i] > 0. ? rhs[i] / system.lumped_mass[i] : 0.;
+  zero_fixed(A);
+
+  external_work = 0.;
+  dissipated = 0.;
+}
+
+void Newmark::step()
+{
+  // (N1) predictors
+  U_star = U;
+  U_star.add(dt, V, dt * dt * (0.5 - beta), A);
+  V_star = V;
+  V_star.add(dt * (1. - gamma), A);
+
+  // (N2) M_eff A_{n+1} = F_{n+1} - C V* - K U*
+  const double t_new = (n_steps + 1) * dt;
+  system.external_force(t_new, F_new);
+  rhs = F_new;
+  stiffness_vmult(CV_new, U_star);
+  rhs -= CV_new;
+  const bool damped = (a0 != 0. || a1 != 0.);
+  if (damped)
+  {
+    damping_vmult(CV_new, V_star);
+    rhs -= CV_new;
+  }
+  zero_fixed(rhs);
+  // A_n is the initial guess of CG; A becomes A_{n+1}
+  solve_with_effective_matrix(A, rhs);
+  zero_fixed(A);
+
+  // (N3) correctors: U_star becomes U_{n+1}, V_star V_{n+1}
+  U_star.add(beta * dt * dt, A);
+  V_star.add(gamma * dt, A);
+
+  // energies: dU = U_{n+1} - U_n
+  tmp = U_star;
+  tmp -= U;
+  F += F_new;
+  external_work += 0.5 * (tmp * F);
+  if (damped)
+  {
+    damping_vmult(CV_new, V_star);
+    CV += CV_new;
+    dissipated += 0.5 * (tmp * CV);
+    CV.swap(CV_new);
+  }
+
+  U.swap(U_star);
+  V.swap(V_star);
+  F.swap(F_new);
+  ++n_steps;
+  t = t_new;
+}
+
+Energies Newmark::energies() const
+{
+  Energies e;
+  mass_vmult(tmp, V);
+  e.kinetic = 0.5 * (V * tmp);
+  stiffness_vmult(tmp, U);
+  e.internal = 0.5 * (U * tmp);
+  e.external_work = external_work;
+  e.dissipated = dissipated;
+  return e;
+}
+
+void Newmark::solve_with_effective_matrix(Vector<double> &x,
+                                          const Vector<double> &b) const
+{
+  const auto start = Clock::now();
+  if (direct)
+  {
+    std::copy(b.begin(), b.end(), solver->b.begin());
+    solver->direct->solve(solver->x, solver->b);
+    std::copy(solver->x.begin(), solver->x.end(), x.begin());
+  }
+  else
+  {
+    const double norm_b = b.l2_norm();
+    if (norm_b == 0.)
+      x = 0.;
+    else
+    {
+      SolverControl control(std::max<unsigned int>(1000, b.size()), tolerance * norm_b);
+      TrilinosWrappers::SolverCG cg(control);
+      try
+      {
+        cg.solve(solver->matrix, x, b, solver->amg);
+      }
+      catch (const SolverControl::NoConvergence &e)
+      {
+        std::ostringstream message;
+        message << "Newmark: CG + AMG did not converge on the effective matrix in "
+                << e.last_step << " iterations (residual " << e.last_residual
+                << ", target " << tolerance * norm_b
+                << "): the model is singular or badly conditioned (check the "
+                   "supports), or use Linear solver = direct.";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+      catch (const std::exception &)
+      {
+        AssertThrow(false,
+                    ExcMessage("Newmark: CG + AMG broke down on the effective matrix "
+                               "(p.M_eff p <= 0): the model is singular (check the "
+                               "masses and the supports), or use Linear solver = "
+                               "direct."));
+      }
+    }
+  }
+  last_solve_seconds = seconds_since(start);
+  check_finite(x, "Newmark");
+}
+} // namespace hati
