@@ -4,7 +4,7 @@
 # ball it also draws bouncing_ball.png (numerical vs analytical solution).
 set -euo pipefail
 cd "$(dirname "$0")"
-./scripts/setup.sh
+./scripts/setup.sh hati
 prm="${1:-parameter_files/bouncing_ball.prm}"
 [ $# -gt 0 ] && shift
 ./build/hati "$prm" "$@"

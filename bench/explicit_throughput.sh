@@ -9,7 +9,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
-[ -x "$build/hati" ] || ./scripts/setup.sh
+[ -x "$build/hati" ] || ./scripts/setup.sh hati
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 c=$(/usr/bin/python3 -c "print((2e11/7800)**0.5)")

@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
 solver=${2:-direct}
-[ -x "$build/hati" ] || ./scripts/setup.sh
+[ -x "$build/hati" ] || ./scripts/setup.sh hati
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 printf "%10s %8s %18s %16s %16s\n" "DoFs" "steps" "factorisation (s)" "step (ms)" "us/DoF/step"

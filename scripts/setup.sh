@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Shared set-up of run.sh and test.sh: install the missing Debian packages,
 # configure and build the Release build in build/. Idempotent and quick when
-# nothing changed.
+# nothing changed. Usage: scripts/setup.sh [cmake build target, default all]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -23,5 +23,5 @@ if [ ! -f build/CMakeCache.txt ]; then
   echo "== configuring build/ (Release)"
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 fi
-echo "== building"
-cmake --build build -j2
+echo "== building ${1:-all}"
+cmake --build build -j2 --target "${1:-all}"

@@ -189,6 +189,20 @@ OutputState output_state(const CDLagrange &integrator)
   return s;
 }
 
+OutputState output_state(const EventDriven &integrator)
+{
+  OutputState s;
+  s.time = integrator.time();
+  s.displacement = &integrator.displacement();
+  s.velocity = &integrator.velocity();
+  s.gaps = integrator.gaps();
+  s.normal_velocities = integrator.normal_velocities();
+  s.impulses = integrator.impulses();
+  s.active = integrator.active();
+  s.impulse_duration = 0.; // impulses act at an instant
+  return s;
+}
+
 OutputState output_state(const Newmark &integrator)
 {
   OutputState s;
@@ -338,19 +352,7 @@ void Simulation::run_event_driven()
   std::cout << "  event-driven (CVODE, root finding): sampling every " << sample
             << " s to t = " << T << " s" << std::endl;
 
-  auto state = [&]()
-  {
-    OutputState s;
-    s.time = integrator.time();
-    s.displacement = &integrator.displacement();
-    s.velocity = &integrator.velocity();
-    s.gaps = integrator.gaps();
-    s.normal_velocities = integrator.normal_velocities();
-    s.impulses = integrator.impulses();
-    s.active = integrator.active();
-    s.impulse_duration = 0.;
-    return s;
-  };
+  auto state = [&]() { return output_state(integrator); };
   auto write = [&]()
   {
     TimerOutput::Scope scope(timer, "output");

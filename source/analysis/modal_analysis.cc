@@ -228,23 +228,12 @@ ModalResult compute_modes(const DiscreteSystem &system, const unsigned int n_mod
   else
     for (unsigned int i = 0; i < n; ++i)
       M.set(i, i, system.lumped_mass[i]);
+  decouple_fixed_dofs(K, fixed);
+  // fixed DoFs get no mass: their spurious eigenvalues go to infinity
   for (unsigned int i = 0; i < n; ++i)
-  {
-    for (auto it = K.begin(i); it != K.end(i); ++it)
-    {
-      const unsigned int j = it->column();
-      if (i == j)
-      {
-        if (fixed[i] && !(it->value() > 0.))
-          it->value() = 1.;
-      }
-      else if (fixed[i] || fixed[j])
-        it->value() = 0.;
-    }
     for (auto it = M.begin(i); it != M.end(i); ++it)
       if (fixed[i] || fixed[it->column()])
         it->value() = 0.;
-  }
 
   ModalResult result;
   std::array<Vector<double>, 3> Mr;

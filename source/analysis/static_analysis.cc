@@ -115,18 +115,7 @@ void solve_static(const DiscreteSystem &system,
   // K with the fixed DoFs decoupled (positive diagonal, no couplings)
   SparseMatrix<double> K(system.stiffness_pattern);
   K.copy_from(system.stiffness);
-  for (unsigned int i = 0; i < n; ++i)
-    for (auto it = K.begin(i); it != K.end(i); ++it)
-    {
-      const unsigned int j = it->column();
-      if (i == j)
-      {
-        if (fixed[i] && !(it->value() > 0.))
-          it->value() = 1.;
-      }
-      else if (fixed[i] || fixed[j])
-        it->value() = 0.;
-    }
+  decouple_fixed_dofs(K, fixed);
   TrilinosWrappers::SparseMatrix trilinos_K;
   trilinos_K.reinit(K, 0.);
 

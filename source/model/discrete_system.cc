@@ -50,6 +50,22 @@ double DiscreteSystem::highest_frequency_bound() const
   return std::sqrt(bound);
 }
 
+void decouple_fixed_dofs(SparseMatrix<double> &matrix, const std::vector<bool> &fixed)
+{
+  for (unsigned int i = 0; i < matrix.m(); ++i)
+    for (auto it = matrix.begin(i); it != matrix.end(i); ++it)
+    {
+      const unsigned int j = it->column();
+      if (i == j)
+      {
+        if (fixed[i] && !(it->value() > 0.))
+          it->value() = 1.;
+      }
+      else if (fixed[i] || fixed[j])
+        it->value() = 0.;
+    }
+}
+
 double element_omega_squared(const FullMatrix<double> &element_stiffness,
                              const std::vector<double> &element_mass)
 {

@@ -6,6 +6,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <hati/model/frame.h>
+#include <hati/model/gmsh_frame_reader.h>
 
 #include <cmath>
 #include <iomanip>
@@ -104,6 +105,23 @@ void Frame::Parameters::declare_parameters(ParameterHandler &prm)
       "optional vector (global axes) fixes the section's local y axis (its part "
       "orthogonal to the member); default: global Y, or global X for members parallel "
       "to Y.");
+  prm.declare_entry(
+      "Mesh file",
+      "",
+      Patterns::Anything(),
+      "Optional Gmsh mesh (ASCII format 2.2 or 4.1, path relative to the "
+      "current directory) of 2-node line elements: every named physical curve "
+      "is a member (one element per line element), named physical points name "
+      "nodes (for supports, loads, monitors); other nodes are named '#<tag>'. "
+      "Give each member's section and material in 'Member properties'. Members "
+      "and nodes of the Members and Nodes entries are added to those of the "
+      "file.");
+  prm.declare_entry(
+      "Member properties",
+      "",
+      Patterns::Anything(),
+      "Section, material and optional local-y vector of the members read from "
+      "the Mesh file, 'member: section, material[, yx, yy, yz]; ...'.");
   prm.declare_entry(
       "Point masses",
       "",
@@ -234,6 +252,52 @@ void Frame::Parameters::parse_parameters(ParameterHandler &prm)
         m.y_reference[d] = to_number(it.values[5 + d], "Members", it);
     members.push_back(m);
   }
+  const std::string mesh_file = Utilities::trim(prm.get("Mesh file"));
+  if (!mesh_file.empty())
+  {
+    const GmshFrame mesh = read_gmsh_frame(mesh_file);
+    for (const auto &[name, x] : mesh.nodes)
+    {
+      AssertThrow(nodes.count(name) == 0 || nodes[name].distance(x) < 1e-12,
+                  ExcMessage("Model/Frame/Mesh file: node '" + name +
+                             "' is also in Model/Frame/Nodes at another position"));
+      if (nodes.count(name) == 0)
+        node_order.push_back(name);
+      nodes[name] = x;
+    }
+    std::map<std::string, Item> properties;
+    for (const Item &it : parse_items(prm.get("Member properties"), "Member properties"))
+    {
+      expect_values(
+          it, "Member properties", {2, 5}, "2 or 5 (section, material[, yx, yy, yz])");
+      AssertThrow(mesh.members.count(it.name),
+                  ExcMessage("Model/Frame/Member properties: the mesh file '" +
+                             mesh_file + "' has no member (physical curve) named '" +
+                             it.name + "'"));
+      properties[it.name] = it;
+    }
+    for (const auto &[name, path] : mesh.members)
+    {
+      AssertThrow(
+          properties.count(name),
+          ExcMessage("Model/Frame/Member properties: no section and material for the "
+                     "member '" +
+                     name + "' of the mesh file '" + mesh_file + "'"));
+      const Item &it = properties[name];
+      Member m;
+      m.name = name;
+      m.path = path;
+      m.start = path.front();
+      m.end = path.back();
+      m.section = it.values[0];
+      m.material = it.values[1];
+      m.n_elements = path.size() - 1;
+      if (it.values.size() == 5)
+        for (unsigned int d = 0; d < 3; ++d)
+          m.y_reference[d] = to_number(it.values[2 + d], "Member properties", it);
+      members.push_back(m);
+    }
+  }
   for (const Item &it : parse_items(prm.get("Point masses"), "Point masses"))
   {
     expect_values(it, "Point masses", {1, 4}, "1 or 4 (m[, Ixx, Iyy, Izz])");
@@ -320,6 +384,13 @@ void Frame::Parameters::parse_parameters(ParameterHandler &prm)
     AssertThrow(nodes[m.start].distance(nodes[m.end]) > 0.,
                 ExcMessage("Model/Frame/Members: member '" + m.name +
                            "' has zero length (both ends at the same point)"));
+    for (unsigned int i = 0; i + 1 < m.path.size(); ++i)
+    {
+      AssertThrow(nodes[m.path[i]].distance(nodes[m.path[i + 1]]) > 0.,
+                  ExcMessage("Model/Frame/Mesh file: member '" + m.name +
+                             "' has a zero-length element at node '" + m.path[i] + "'"));
+      used_nodes.insert(m.path[i]);
+    }
   }
   auto check_node = [&](const std::string &n, const std::string &entry)
   {
@@ -364,15 +435,27 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
   std::vector<CellData<1>> cell_data;
   std::map<std::string, std::vector<unsigned int>> node_vertices; // in member order
   std::vector<std::pair<unsigned int, unsigned int>> cell_member; // (member, element)
+  std::vector<unsigned int> cell_start; // first vertex of a cell
+  std::vector<double> cell_position;    // along the member
   for (unsigned int m = 0; m < P.members.size(); ++m)
   {
     const auto &member = P.members[m];
-    const Point<3> x1 = P.nodes.at(member.start), x2 = P.nodes.at(member.end);
     const unsigned int base = vertices.size();
-    for (unsigned int i = 0; i <= member.n_elements; ++i)
-      vertices.push_back(x1 + (x2 - x1) * (double(i) / member.n_elements));
-    node_vertices[member.start].push_back(base);
-    node_vertices[member.end].push_back(base + member.n_elements);
+    if (member.path.empty())
+    {
+      const Point<3> x1 = P.nodes.at(member.start), x2 = P.nodes.at(member.end);
+      for (unsigned int i = 0; i <= member.n_elements; ++i)
+        vertices.push_back(x1 + (x2 - x1) * (double(i) / member.n_elements));
+      node_vertices[member.start].push_back(base);
+      node_vertices[member.end].push_back(base + member.n_elements);
+    }
+    else // from a mesh file: every node along the member may be a joint
+      for (unsigned int i = 0; i < member.path.size(); ++i)
+      {
+        vertices.push_back(P.nodes.at(member.path[i]));
+        node_vertices[member.path[i]].push_back(base + i);
+      }
+    double position = 0.;
     for (unsigned int i = 0; i < member.n_elements; ++i)
     {
       CellData<1> c;
@@ -380,6 +463,9 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
       c.material_id = m;
       cell_data.push_back(c);
       cell_member.emplace_back(m, i);
+      cell_start.push_back(base + i);
+      cell_position.push_back(position);
+      position += vertices[base + i].distance(vertices[base + i + 1]);
     }
   }
   triangulation.create_triangulation(vertices, cell_data, SubCellData());
@@ -397,10 +483,9 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
     std::tie(info.member, info.element) = cell_member[cell->active_cell_index()];
     const auto &member = P.members[info.member];
     // local x from the member's start to its end, whatever the cell's orientation
-    const unsigned int first = (cell->vertex(0).distance(P.nodes.at(member.start)) <=
-                                cell->vertex(1).distance(P.nodes.at(member.start)))
-                                   ? 0
-                                   : 1;
+    const unsigned int first =
+        cell->vertex_index(0) == cell_start[cell->active_cell_index()] ? 0 : 1;
+    info.position = cell_position[cell->active_cell_index()];
     for (unsigned int v = 0; v < 2; ++v)
       for (unsigned int c = 0; c < 6; ++c)
       {
@@ -408,7 +493,7 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
         info.dofs[6 * (v == first ? 0 : 1) + c] = cell->vertex_dof_index(v, c);
       }
     Tensor<1, 3> y_ref = member.y_reference;
-    const Tensor<1, 3> axis = P.nodes.at(member.end) - P.nodes.at(member.start);
+    const Tensor<1, 3> axis = cell->vertex(1) - cell->vertex(0);
     if (y_ref.norm() == 0.)
     {
       y_ref[1] = 1.;
@@ -457,11 +542,6 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
   system.stiffness.reinit(system.stiffness_pattern);
   system.consistent_mass.reinit(system.stiffness_pattern);
 
-  // element matrices, identical along a member
-  std::vector<FullMatrix<double>> kl(P.members.size()), ml(P.members.size());
-  std::vector<std::vector<double>> lumped_local(P.members.size());
-  local_stiffness_of_member.resize(P.members.size());
-  std::vector<bool> done(P.members.size(), false);
   FullMatrix<double> kg(12, 12), mg(12, 12);
   Vector<double> lumped_cell(12);
   std::vector<types::global_dof_index> dofs(12);
@@ -472,19 +552,11 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
     const auto &member = P.members[info.member];
     const FrameSection &section = P.sections.at(member.section);
     const FrameMaterial &material = P.materials.at(member.material);
-    if (!done[info.member])
-    {
-      kl[info.member] = local_stiffness(info.length, section, material);
-      ml[info.member] = local_consistent_mass(info.length, section, material);
-      lumped_local[info.member] = local_lumped_mass(info.length, section, material);
-      local_stiffness_of_member[info.member] = kl[info.member];
-      done[info.member] = true;
-    }
-    kg = to_global(kl[info.member], info.rotation);
-    mg = to_global(ml[info.member], info.rotation);
+    kg = to_global(local_stiffness(info.length, section, material), info.rotation);
+    mg = to_global(local_consistent_mass(info.length, section, material), info.rotation);
     // lumped: diagonal of T^T D T, so that it stays diagonal in global axes
     const auto &R = info.rotation;
-    const auto &D = lumped_local[info.member];
+    const auto D = local_lumped_mass(info.length, section, material);
     for (unsigned int b = 0; b < 4; ++b)
       for (unsigned int i = 0; i < 3; ++i)
       {
@@ -562,7 +634,10 @@ std::array<double, 12> Frame::cell_section_forces(const CellInfo &cell,
   Vector<double> ug(12);
   for (unsigned int i = 0; i < 12; ++i)
     ug[i] = U[cell.dofs[i]];
-  return section_forces(local_stiffness_of_member[cell.member],
+  const auto &member = parameters.members[cell.member];
+  return section_forces(cell.length,
+                        parameters.sections.at(member.section),
+                        parameters.materials.at(member.material),
                         to_local(ug, cell.rotation));
 }
 
@@ -631,7 +706,7 @@ void Frame::write_section_forces(std::ostream &out,
         for (unsigned int end = 0; end < 2; ++end)
         {
           out << time << ',' << name << ',' << cell.element << ','
-              << (cell.element + end) * cell.length;
+              << cell.position + end * cell.length;
           for (unsigned int k = 0; k < 6; ++k)
             out << ',' << s[6 * end + k];
           out << '\n';

@@ -75,27 +75,6 @@ void add_matrix(SparseMatrix<double> &dst,
     }
 }
 
-/**
- * Decouple the fixed DoFs: their rows and columns keep only a positive
- * diagonal entry (the DiscreteSystem matrices are condensed already; this
- * makes it hold whatever the models put there).
- */
-void decouple_fixed_dofs(SparseMatrix<double> &m, const std::vector<bool> &fixed)
-{
-  for (unsigned int i = 0; i < m.m(); ++i)
-    for (auto it = m.begin(i); it != m.end(i); ++it)
-    {
-      const unsigned int j = it->column();
-      if (i == j)
-      {
-        if (fixed[i] && !(it->value() > 0.))
-          it->value() = 1.;
-      }
-      else if (fixed[i] || fixed[j])
-        it->value() = 0.;
-    }
-}
-
 void check_finite(const Vector<double> &x, const std::string &what)
 {
   AssertThrow(std::isfinite(x.l2_norm()),

@@ -146,6 +146,14 @@ public:
 };
 
 /**
+ * Decouple the fixed DoFs of a matrix on the stiffness pattern: their rows
+ * and columns keep only a positive diagonal entry (1 where it was not
+ * positive). The DiscreteSystem matrices are condensed already; this makes
+ * it hold whatever a model put there, before a factorisation.
+ */
+void decouple_fixed_dofs(SparseMatrix<double> &matrix, const std::vector<bool> &fixed);
+
+/**
  * Largest eigenvalue of the element problem `K_e x = omega^2 M_e x` with a
  * diagonal (lumped) element mass @p element_mass. Its maximum over the
  * elements bounds `omega_max^2` of the assembled system from above

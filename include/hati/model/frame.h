@@ -45,6 +45,12 @@ public:
       std::string name, start, end, section, material;
       unsigned int n_elements = 1;
       Tensor<1, 3> y_reference;
+      /**
+       * Nodes along the member, start to end, for members read from a mesh
+       * file (one element between consecutive nodes); empty for members of
+       * the Members entry, which are divided into n_elements equal elements.
+       */
+      std::vector<std::string> path;
     };
     struct PointMassData
     {
@@ -94,6 +100,8 @@ private:
     unsigned int member = 0;
     unsigned int element = 0;
     double length = 0.;
+    /** Distance of the element's first node from the member's start (m). */
+    double position = 0.;
     Tensor<2, 3> rotation;
     std::array<types::global_dof_index, 12> dofs;
   };
@@ -108,7 +116,6 @@ private:
   DoFHandler<1, 3> dof_handler;
   AffineConstraints<double> constraints;
   std::vector<CellInfo> cells;
-  std::vector<FullMatrix<double>> local_stiffness_of_member;
   std::map<std::string, std::array<types::global_dof_index, 6>> node_dofs;
   double total_mass = 0.;
 };

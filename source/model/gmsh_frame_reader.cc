@@ -1,0 +1,280 @@
+#include <deal.II/base/exceptions.h>
+
+#include <hati/model/gmsh_frame_reader.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace hati
+{
+namespace
+{
+/** Line-by-line reader that knows where it is, for the error messages. */
+class Reader
+{
+public:
+  explicit Reader(const std::string &filename) : filename(filename), in(filename)
+  {
+    AssertThrow(in, ExcMessage("cannot open the mesh file '" + filename + "'"));
+  }
+
+  /** The next line (throws at the end of the file). */
+  std::string line()
+  {
+    std::string l;
+    AssertThrow(std::getline(in, l), ExcMessage(where() + "unexpected end of file"));
+    ++number;
+    if (!l.empty() && l.back() == '\r')
+      l.pop_back();
+    return l;
+  }
+
+  bool next(std::string &l)
+  {
+    if (!std::getline(in, l))
+      return false;
+    ++number;
+    if (!l.empty() && l.back() == '\r')
+      l.pop_back();
+    return true;
+  }
+
+  /** Numbers of the next line, at least @p n of them. */
+  std::vector<double> numbers(const unsigned int n)
+  {
+    const std::string l = line();
+    std::istringstream s(l);
+    std::vector<double> v;
+    double x;
+    while (s >> x)
+      v.push_back(x);
+    AssertThrow(v.size() >= n && (s.eof() || v.size() >= n),
+                ExcMessage(where() + "expected at least " + std::to_string(n) +
+                           " numbers, got '" + l + "'"));
+    return v;
+  }
+
+  std::string where() const
+  {
+    return "mesh file '" + filename + "', line " + std::to_string(number) + ": ";
+  }
+
+private:
+  const std::string filename;
+  std::ifstream in;
+  unsigned int number = 0;
+};
+} // namespace
+
+GmshFrame read_gmsh_frame(const std::string &filename)
+{
+  Reader r(filename);
+  double version = 0.;
+  std::map<int, std::string> curve_names, point_names; // physical tag -> name
+  std::map<long, Point<3>> node_coordinates;
+  std::map<int, std::vector<std::pair<long, long>>> lines; // physical tag -> lines
+  std::map<long, int> named_node_tag;                      // node -> physical point tag
+  std::map<int, std::vector<int>> entity_physicals[4];     // v4: entity -> physical tags
+
+  std::string l;
+  while (r.next(l))
+  {
+    if (l == "$MeshFormat")
+    {
+      const auto v = r.numbers(1);
+      version = v[0];
+      AssertThrow(version == 2.2 || (version >= 4.0 && version < 5.0),
+                  ExcMessage(r.where() + "Gmsh format " + std::to_string(version) +
+                             " is not supported: write format 2.2 or 4.1 (ASCII)"));
+      AssertThrow(v.size() < 2 || v[1] == 0,
+                  ExcMessage(r.where() + "binary Gmsh files are not supported"));
+    }
+    else if (l == "$PhysicalNames")
+    {
+      const unsigned int n = r.numbers(1)[0];
+      for (unsigned int i = 0; i < n; ++i)
+      {
+        const std::string t = r.line();
+        std::istringstream s(t);
+        int dim = -1, tag = -1;
+        s >> dim >> tag;
+        const auto q1 = t.find('"'), q2 = t.rfind('"');
+        AssertThrow(s && q1 != std::string::npos && q2 > q1,
+                    ExcMessage(r.where() + "expected 'dimension tag \"name\"'"));
+        const std::string name = t.substr(q1 + 1, q2 - q1 - 1);
+        if (dim == 1)
+          curve_names[tag] = name;
+        else if (dim == 0)
+          point_names[tag] = name;
+      }
+    }
+    else if (l == "$Entities")
+    {
+      const auto counts = r.numbers(4);
+      for (unsigned int dim = 0; dim < 4; ++dim)
+        for (unsigned int i = 0; i < counts[dim]; ++i)
+        {
+          const auto v = r.numbers(dim == 0 ? 5 : 8);
+          // point: tag x y z nphys phys...; others: tag 6 bounds nphys phys...
+          const unsigned int first = dim == 0 ? 4 : 7;
+          const unsigned int np = v[first];
+          AssertThrow(v.size() >= first + 1 + np,
+                      ExcMessage(r.where() + "truncated entity line"));
+          for (unsigned int k = 0; k < np; ++k)
+            entity_physicals[dim][int(v[0])].push_back(int(v[first + 1 + k]));
+        }
+    }
+    else if (l == "$Nodes")
+    {
+      if (version < 4.)
+      {
+        const long n = r.numbers(1)[0];
+        for (long i = 0; i < n; ++i)
+        {
+          const auto v = r.numbers(4);
+          node_coordinates[long(v[0])] = Point<3>(v[1], v[2], v[3]);
+        }
+      }
+      else
+      {
+        const auto h = r.numbers(4);
+        for (long b = 0; b < long(h[0]); ++b)
+        {
+          const auto block = r.numbers(4); // dim entity parametric n
+          AssertThrow(block[2] == 0,
+                      ExcMessage(r.where() + "parametric nodes are not supported"));
+          std::vector<long> tags;
+          for (long i = 0; i < long(block[3]); ++i)
+            tags.push_back(long(r.numbers(1)[0]));
+          for (long i = 0; i < long(block[3]); ++i)
+          {
+            const auto x = r.numbers(3);
+            node_coordinates[tags[i]] = Point<3>(x[0], x[1], x[2]);
+          }
+        }
+      }
+    }
+    else if (l == "$Elements")
+    {
+      auto add =
+          [&](const int type, const std::vector<int> &physicals, const double *nodes)
+      {
+        for (const int p : physicals)
+        {
+          if (type == 1)
+            lines[p].emplace_back(long(nodes[0]), long(nodes[1]));
+          else if (type == 15)
+            named_node_tag[long(nodes[0])] = p;
+        }
+      };
+      if (version < 4.)
+      {
+        const long n = r.numbers(1)[0];
+        for (long i = 0; i < n; ++i)
+        {
+          const auto v = r.numbers(3); // id type ntags tags... nodes...
+          const int type = v[1];
+          const unsigned int ntags = v[2];
+          const unsigned int nn = type == 1 ? 2 : (type == 15 ? 1 : 0);
+          AssertThrow(v.size() >= 3 + ntags + nn,
+                      ExcMessage(r.where() + "truncated element"));
+          if (nn == 0 || ntags == 0)
+            continue;
+          add(type, {int(v[3])}, &v[3 + ntags]);
+        }
+      }
+      else
+      {
+        const auto h = r.numbers(4);
+        for (long b = 0; b < long(h[0]); ++b)
+        {
+          const auto block = r.numbers(4); // dim entity type n
+          const int dim = block[0], entity = block[1], type = block[2];
+          const auto &physicals = entity_physicals[dim][entity];
+          for (long i = 0; i < long(block[3]); ++i)
+          {
+            const auto v = r.numbers(2);
+            if ((type == 1 && v.size() >= 3) || (type == 15 && v.size() >= 2))
+              add(type, physicals, &v[1]);
+          }
+        }
+      }
+    }
+  }
+  AssertThrow(version > 0.,
+              ExcMessage("mesh file '" + filename +
+                         "': no $MeshFormat section (not a Gmsh file?)"));
+
+  GmshFrame frame;
+  auto node_name = [&](const long tag)
+  {
+    const auto it = named_node_tag.find(tag);
+    if (it != named_node_tag.end() && point_names.count(it->second))
+      return point_names[it->second];
+    return "#" + std::to_string(tag);
+  };
+  auto coordinates = [&](const long tag)
+  {
+    const auto it = node_coordinates.find(tag);
+    AssertThrow(it != node_coordinates.end(),
+                ExcMessage("mesh file '" + filename + "': element node " +
+                           std::to_string(tag) + " is not in $Nodes"));
+    return it->second;
+  };
+  for (const auto &[tag, name] : point_names)
+    for (const auto &[node, p] : named_node_tag)
+      if (p == tag)
+        frame.nodes[name] = coordinates(node);
+
+  for (const auto &[tag, segments] : lines)
+  {
+    AssertThrow(
+        curve_names.count(tag),
+        ExcMessage("mesh file '" + filename + "': physical curve " + std::to_string(tag) +
+                   " has no name; name every member, e.g. Physical Curve(\"girder\")"));
+    const std::string &name = curve_names[tag];
+    std::map<long, std::vector<long>> adjacent;
+    for (const auto &[a, b] : segments)
+    {
+      adjacent[a].push_back(b);
+      adjacent[b].push_back(a);
+    }
+    long start = -1;
+    for (const auto &[node, list] : adjacent)
+    {
+      AssertThrow(list.size() <= 2,
+                  ExcMessage("mesh file '" + filename + "': member '" + name +
+                             "' branches at node " + std::to_string(node) +
+                             "; split it into one physical curve per branch"));
+      if (list.size() == 1 && start < 0)
+        start = node;
+    }
+    AssertThrow(start >= 0,
+                ExcMessage("mesh file '" + filename + "': member '" + name +
+                           "' is a closed loop; split it into open physical curves"));
+    std::vector<std::string> path;
+    std::set<long> visited;
+    for (long node = start, previous = -1; node >= 0;)
+    {
+      visited.insert(node);
+      path.push_back(node_name(node));
+      frame.nodes[path.back()] = coordinates(node);
+      long next = -1;
+      for (const long n : adjacent[node])
+        if (n != previous && !visited.count(n))
+          next = n;
+      previous = node;
+      node = next;
+    }
+    AssertThrow(visited.size() == adjacent.size(),
+                ExcMessage("mesh file '" + filename + "': member '" + name +
+                           "' is not one connected chain; split it"));
+    frame.members[name] = path;
+  }
+  AssertThrow(!frame.members.empty(),
+              ExcMessage("mesh file '" + filename +
+                         "': no named physical curve of line elements"));
+  return frame;
+}
+} // namespace hati
