@@ -91,8 +91,9 @@ int run_command_line(int argc, char **argv)
 {
   namespace po = boost::program_options;
   po::options_description options(
-      "hati: nonsmooth structural dynamics (CD-Lagrange "
-      "contact/impact)\nUsage: hati file.prm [options]\nOptions");
+      "hati: nonsmooth structural dynamics: CD-Lagrange contact/impact, Newmark, "
+      "static and modal analyses of bars, solids and 3D frames\n"
+      "Usage: hati file.prm [options]\nOptions");
   options.add_options()("help,h", "print this help and exit")(
       "print-parameters", "print every parameter with its default and documentation")(
       "set",

@@ -150,6 +150,7 @@ void Simulation::run()
   std::cout << "hati: " << parameter_file << "\n  model: " << model->description()
             << "\n  DoFs: " << system.n_dofs() << ", contacts: " << system.contacts.size()
             << "\n  output: " << output_directory << "/" << std::endl;
+  system.fill_default_mass_influence();
   add_base_excitation(system,
                       base_acceleration_step(common_parameters.base_acceleration,
                                              common_parameters.base_acceleration_start));
@@ -159,11 +160,17 @@ void Simulation::run()
     return run_modal();
   if (analysis_parameters.initial_state == "static")
   {
-    std::cout << "  initial state: static equilibrium under F_ext(0)" << std::endl;
+    std::cout << "  initial state: static equilibrium under the constant loads"
+              << std::endl;
     solve_static(
-        system, 0., system.initial_displacement, newmark_parameters.linear_solver);
+        system, 0., system.initial_displacement, newmark_parameters.linear_solver, true);
     system.initial_velocity = 0.;
   }
+  AssertThrow(
+      time_parameters.method == "Newmark" || (damping.a0 == 0. && damping.a1 == 0.),
+      ExcMessage("Time integration/Damping: Rayleigh damping is applied by the Newmark "
+                 "integrator only; remove it for Method = " +
+                 time_parameters.method + "."));
   if (time_parameters.method == "event-driven")
     run_event_driven();
   else if (time_parameters.method == "Newmark")

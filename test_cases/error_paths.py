@@ -65,6 +65,12 @@ expect_error("malformed frame section", [frame, "--set", "Model/Frame/Sections=r
 expect_error("Newmark on a model with contacts",
              [bar, "--set", "Time integration/Method=Newmark"], "contacts")
 
+expect_error("Rayleigh damping with the explicit scheme",
+             [bar, "--set", "Time integration/Damping/Mass coefficient=0.1"], "Damping", "Newmark")
+portal = ctx.prm("portal_frame_dynamic.prm")
+expect_error("Newmark Beta < Gamma / 2 (conditionally stable)",
+             [portal, "--set", "Time integration/Newmark/Beta=0.1"], "Beta", "Gamma")
+
 # time step above critical: refused, printing dt_crit = h / c (analytical)
 rc, err = hati(bar, "--set", "Time integration/Time step=3e-6",
                "--set", "Output/Output directory=" + os.path.join(ctx.work, "crit"))

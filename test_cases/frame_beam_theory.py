@@ -58,6 +58,31 @@ ctx.check("shear force |Vz| (N)", np.max(np.abs(np.abs(s["Vz"]) - P)), 0.0, abs_
 ctx.check("moment along the member max | |My| - P (L - x) | (N m)",
           np.max(np.abs(np.abs(s["My"]) - P * (L - s["x"]))), 0.0, abs_tol=1e-6)
 
+# self-weight q = rho A g: consistent loads give the exact nodal deflection
+# of the Euler-Bernoulli cantilever, w = -q L^4 / (8 E Iy) (a load vector
+# that lost the inertia coupled to the clamped node would be 0.4 % low)
+r = tip("self_weight", [eb, "Model/Frame/Nodal loads=", "Loading/Gravity=0, 0, -9.81"])
+ctx.check("self-weight tip deflection -q L^4 / (8 E Iy) (m)", r["tipuz"],
+          -rho * A * 9.81 * L**4 / (8 * E * Iy), rel=1e-9)
+
+# explicit integration of a frame with a stiff support spring: the critical
+# step includes the spring (0.999 dt_crit stays bounded)
+import re
+spring = ["Analysis/Type=transient", "Time integration/Method=CD-Lagrange",
+          "Model/Frame/Supports=root: clamped; tip: free, free, 1e12, free, free, free",
+          "Output/Output interval=0", "Output/History interval=1e-4"]
+_, p = ctx.run(static, "spring_refused", spring + ["Time integration/Time step=1"],
+               expect_failure=True)
+m = re.search(r"dt_crit = [^=]*= ([0-9.eE+-]+) s", p.stderr)
+ctx.check_true("explicit frame: time step above critical refused", m is not None, p.stderr.strip())
+dt_crit = float(m.group(1))
+out, _ = ctx.run(static, "spring", spring + ["Time integration/Time step=%.10g" % (0.999 * dt_crit),
+                                             "Time integration/End time=%.10g" % (3000 * dt_crit)])
+h = read_csv(out + "/history.csv")
+# static tip deflection with the spring is ~P/k = 1e-9 m; an instability would grow without bound
+ctx.check("explicit frame with a stiff spring at 0.999 dt_crit: max |w_tip| (m)",
+          np.max(np.abs(h["tipuz"])), 0.0, abs_tol=1e-6)
+
 # natural frequencies, 10 Euler-Bernoulli elements, L = 4 m
 Lm = 4.0
 modal = ctx.prm("cantilever_modal.prm")

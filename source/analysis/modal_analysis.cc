@@ -210,9 +210,7 @@ ModalResult compute_modes(const DiscreteSystem &system, const unsigned int n_mod
   SparseMatrix<double> K(pattern), M(pattern);
   if (system.has_stiffness())
     K.copy_from(system.stiffness);
-  // (not has_consistent_mass(): m() of a never initialised matrix is a null
-  // dereference)
-  if (!system.consistent_mass.empty())
+  if (system.has_consistent_mass())
   {
     for (unsigned int i = 0; i < n; ++i)
       for (auto it = system.consistent_mass.begin(i); it != system.consistent_mass.end(i);
@@ -238,7 +236,17 @@ ModalResult compute_modes(const DiscreteSystem &system, const unsigned int n_mod
   ModalResult result;
   std::array<Vector<double>, 3> Mr;
   for (unsigned int d = 0; d < 3; ++d)
-    if (system.influence[d].size() == n)
+    if (system.mass_influence[d].size() == n)
+    {
+      // M r with the inertia coupled to the supports (DiscreteSystem)
+      Mr[d] = system.mass_influence[d];
+      for (unsigned int i = 0; i < n; ++i)
+        if (fixed[i])
+          Mr[d][i] = 0.;
+      result.total_mass[d] =
+          system.influence[d].size() == n ? system.influence[d] * Mr[d] : 0.;
+    }
+    else if (system.influence[d].size() == n)
     {
       Mr[d].reinit(n);
       M.vmult(Mr[d], system.influence[d]);

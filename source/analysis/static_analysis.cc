@@ -88,7 +88,8 @@ void check_rigid_translations(const DiscreteSystem &system)
 void solve_static(const DiscreteSystem &system,
                   const double time,
                   Vector<double> &U,
-                  const std::string &linear_solver)
+                  const std::string &linear_solver,
+                  const bool constant_loads_only)
 {
   AssertThrow(linear_solver == "direct" || linear_solver == "iterative",
               ExcMessage("static analysis: unknown linear solver <" + linear_solver +
@@ -106,7 +107,10 @@ void solve_static(const DiscreteSystem &system,
   check_rigid_translations(system);
 
   Vector<double> F(n);
-  system.external_force(time, F);
+  if (constant_loads_only)
+    F = system.constant_force;
+  else
+    system.external_force(time, F);
   for (unsigned int i = 0; i < n; ++i)
     if (fixed[i])
       F[i] = 0.;

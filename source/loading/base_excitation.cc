@@ -10,16 +10,9 @@ void add_base_excitation(DiscreteSystem &system,
     if (!acceleration[d] || system.influence[d].size() == 0)
       continue;
     TimeDependentLoad load;
-    load.shape.reinit(system.n_dofs());
-    if (system.has_consistent_mass())
-      system.consistent_mass.vmult(load.shape, system.influence[d]);
-    else
-      for (unsigned int i = 0; i < system.n_dofs(); ++i)
-        load.shape[i] = system.lumped_mass[i] * system.influence[d][i];
+    system.fill_default_mass_influence();
+    load.shape = system.mass_influence[d];
     load.shape *= -1.; // F = -M r a_g
-    for (unsigned int i = 0; i < system.n_dofs(); ++i)
-      if (system.fixed[i])
-        load.shape[i] = 0.;
     load.amplitude = acceleration[d];
     system.time_dependent_loads.push_back(load);
   }

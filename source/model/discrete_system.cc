@@ -18,6 +18,8 @@ void DiscreteSystem::reinit(const unsigned int n)
   time_dependent_loads.clear();
   for (auto &r : influence)
     r.reinit(0);
+  for (auto &r : mass_influence)
+    r.reinit(0);
   contacts.clear();
   monitors.clear();
 }
@@ -48,6 +50,24 @@ double DiscreteSystem::highest_frequency_bound() const
     bound = std::max(bound, row / lumped_mass[i]);
   }
   return std::sqrt(bound);
+}
+
+void DiscreteSystem::fill_default_mass_influence()
+{
+  for (unsigned int d = 0; d < 3; ++d)
+  {
+    if (mass_influence[d].size() == n_dofs() || influence[d].size() != n_dofs())
+      continue;
+    mass_influence[d].reinit(n_dofs());
+    if (has_consistent_mass())
+      consistent_mass.vmult(mass_influence[d], influence[d]);
+    else
+      for (unsigned int i = 0; i < n_dofs(); ++i)
+        mass_influence[d][i] = lumped_mass[i] * influence[d][i];
+    for (unsigned int i = 0; i < n_dofs(); ++i)
+      if (fixed[i])
+        mass_influence[d][i] = 0.;
+  }
 }
 
 void decouple_fixed_dofs(SparseMatrix<double> &matrix, const std::vector<bool> &fixed)

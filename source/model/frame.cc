@@ -112,7 +112,7 @@ void Frame::Parameters::declare_parameters(ParameterHandler &prm)
       "Optional Gmsh mesh (ASCII format 2.2 or 4.1, path relative to the "
       "current directory) of 2-node line elements: every named physical curve "
       "is a member (one element per line element), named physical points name "
-      "nodes (for supports, loads, monitors); other nodes are named '#<tag>'. "
+      "nodes (for supports, loads, monitors); other nodes are named '@<tag>'. "
       "Give each member's section and material in 'Member properties'. Members "
       "and nodes of the Members and Nodes entries are added to those of the "
       "file.");
@@ -543,7 +543,9 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
   system.consistent_mass.reinit(system.stiffness_pattern);
 
   FullMatrix<double> kg(12, 12), mg(12, 12);
-  Vector<double> lumped_cell(12);
+  Vector<double> lumped_cell(12), mass_influence_cell(12);
+  for (auto &mi : system.mass_influence)
+    mi.reinit(n);
   std::vector<types::global_dof_index> dofs(12);
   double omega2 = 0.;
   total_mass = 0.;
@@ -569,18 +571,30 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
     constraints.distribute_local_to_global(kg, dofs, system.stiffness);
     constraints.distribute_local_to_global(mg, dofs, system.consistent_mass);
     constraints.distribute_local_to_global(lumped_cell, dofs, system.lumped_mass);
+    // M r_d element by element, so that the inertia coupled to supported
+    // DoFs is kept (the condensed matrix has lost it)
+    for (unsigned int d = 0; d < 3; ++d)
+    {
+      for (unsigned int i = 0; i < 12; ++i)
+        mass_influence_cell[i] = mg(i, d) + mg(i, 6 + d);
+      constraints.distribute_local_to_global(
+          mass_influence_cell, dofs, system.mass_influence[d]);
+    }
     omega2 =
         std::max(omega2,
                  element_omega_squared(
                      kg, std::vector<double>(lumped_cell.begin(), lumped_cell.end())));
     total_mass += material.rho * section.A * info.length;
   }
-  system.omega_max_bound = std::sqrt(omega2);
 
+  std::vector<double> spring(n, 0.);
   for (const auto &s : P.supports)
     for (unsigned int c = 0; c < 6; ++c)
       if (s.stiffness[c] > 0.)
+      {
         system.stiffness.add(node_dofs[s.node][c], node_dofs[s.node][c], s.stiffness[c]);
+        spring[node_dofs[s.node][c]] += s.stiffness[c];
+      }
   for (const auto &p : P.point_masses)
     for (unsigned int c = 0; c < 6; ++c)
     {
@@ -590,6 +604,8 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
       const double m = c < 3 ? p.mass : p.rotary_inertia[c - 3];
       system.lumped_mass[i] += m;
       system.consistent_mass.add(i, i, m);
+      if (c < 3)
+        system.mass_influence[c][i] += m;
     }
   for (const auto &p : P.point_masses)
     total_mass += p.mass;
@@ -597,17 +613,24 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
   for (unsigned int i = 0; i < n; ++i)
     system.fixed[i] = constraints.is_constrained(i);
 
-  // rigid translations, gravity F = M r g with the consistent mass, nodal loads
-  Vector<double> rg(n);
+  // critical step bound: elements, plus the springs (Weyl's inequality:
+  // lambda_max(M^-1 (K_e + K_s)) <= element bound + max k_i / m_i)
+  double spring_bound = 0.;
+  for (unsigned int i = 0; i < n; ++i)
+    if (spring[i] > 0. && !system.fixed[i])
+      spring_bound = std::max(spring_bound, spring[i] / system.lumped_mass[i]);
+  system.omega_max_bound = std::sqrt(omega2 + spring_bound);
+
+  // rigid translations; gravity F = M r g (consistent mass, inertia coupled
+  // to the supports included); nodal loads
   for (unsigned int d = 0; d < 3; ++d)
   {
     system.influence[d].reinit(n);
     for (const auto &vd : vertex_dofs)
       if (!system.fixed[vd[d]])
         system.influence[d][vd[d]] = 1.;
-    rg.add(common.gravity[d], system.influence[d]);
+    system.constant_force.add(common.gravity[d], system.mass_influence[d]);
   }
-  system.consistent_mass.vmult(system.constant_force, rg);
   for (const auto &[node, f] : P.nodal_loads)
     for (unsigned int c = 0; c < 6; ++c)
       system.constant_force[node_dofs[node][c]] += f[c];

@@ -179,7 +179,7 @@ GmshFrame read_gmsh_frame(const std::string &filename)
           const unsigned int nn = type == 1 ? 2 : (type == 15 ? 1 : 0);
           AssertThrow(v.size() >= 3 + ntags + nn,
                       ExcMessage(r.where() + "truncated element"));
-          if (nn == 0 || ntags == 0)
+          if (nn == 0 || ntags == 0 || v[3] == 0) // no physical group
             continue;
           add(type, {int(v[3])}, &v[3 + ntags]);
         }
@@ -212,7 +212,7 @@ GmshFrame read_gmsh_frame(const std::string &filename)
     const auto it = named_node_tag.find(tag);
     if (it != named_node_tag.end() && point_names.count(it->second))
       return point_names[it->second];
-    return "#" + std::to_string(tag);
+    return "@" + std::to_string(tag);
   };
   auto coordinates = [&](const long tag)
   {

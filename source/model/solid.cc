@@ -149,6 +149,20 @@ void Solid::build(const CommonModelParameters &common, DiscreteSystem &system)
       system.fixed[i] = true;
   }
 
+  // M r_c with r_c = 1 on every DoF of component c, supported ones included,
+  // so that the inertia coupled to the lateral supports is kept
+  for (unsigned int c = 0; c < 3; ++c)
+  {
+    Vector<double> r(n);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        r[cell->vertex_dof_index(v, c)] = 1.;
+    system.mass_influence[c].reinit(n);
+    system.consistent_mass.vmult(system.mass_influence[c], r);
+    for (unsigned int i = 0; i < n; ++i)
+      if (system.fixed[i])
+        system.mass_influence[c][i] = 0.;
+  }
   for (unsigned int c = 0; c < 3; ++c)
     system.influence[c].reinit(n);
   for (const auto &cell : dof_handler.active_cell_iterators())

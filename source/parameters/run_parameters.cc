@@ -87,7 +87,8 @@ void AnalysisParameters::declare_parameters(ParameterHandler &prm)
       "given",
       Patterns::Selection("given|static"),
       "transient: start from the model's initial displacement and velocity "
-      "(given) or from the static equilibrium under F_ext(0) at rest (static).");
+      "(given) or at rest from the static equilibrium under the constant loads "
+      "(gravity, nodal loads), without the base excitation (static).");
   prm.leave_subsection();
 }
 

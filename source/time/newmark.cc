@@ -195,14 +195,16 @@ Newmark::Newmark(const DiscreteSystem &system,
     : system(system), dt(DT), beta(parameters.beta), gamma(parameters.gamma),
       a0(damping.a0), a1(damping.a1), direct(parameters.linear_solver == "direct"),
       tolerance(parameters.solver_tolerance),
-      use_consistent_mass(!system.consistent_mass.empty()),
+      use_consistent_mass(system.has_consistent_mass()),
       solver(std::make_unique<EffectiveSolver>())
 {
-  // use_consistent_mass: not system.has_consistent_mass(), since
-  // SparseMatrix::m() dereferences the pattern pointer, which is null when a
-  // model never initialised the consistent mass (a point mass)
   AssertThrow(dt > 0., ExcMessage("Newmark: the time step must be > 0 (s)."));
   AssertThrow(gamma >= 0.5, ExcMessage("Newmark: Gamma must be >= 0.5."));
+  AssertThrow(
+      2. * beta >= gamma - 1e-12,
+      ExcMessage("Newmark: Beta must be >= Gamma / 2 for unconditional stability "
+                 "(2 Beta >= Gamma >= 1/2; Beta = 1/4, Gamma = 1/2 is the average "
+                 "acceleration scheme)."));
   AssertThrow(parameters.linear_solver == "direct" ||
                   parameters.linear_solver == "iterative",
               ExcMessage("Newmark: unknown linear solver <" + parameters.linear_solver +

@@ -21,6 +21,9 @@ using namespace dealii;
  * @param linear_solver "direct" (Amesos_Klu, followed by up to two steps of
  *        iterative refinement) or "iterative" (CG + ML AMG, relative
  *        residual 1e-12).
+ * @param constant_loads_only solve under the constant loads only (gravity,
+ *        nodal loads), without the time-dependent ones (base excitation):
+ *        the equilibrium a transient run starts from.
  *
  * Throws ExcMessage with "the stiffness matrix is singular: the model can
  * move as a rigid body (check the supports)" if a rigid translation of the
@@ -31,7 +34,8 @@ using namespace dealii;
 void solve_static(const DiscreteSystem &system,
                   const double time,
                   Vector<double> &U,
-                  const std::string &linear_solver = "direct");
+                  const std::string &linear_solver = "direct",
+                  const bool constant_loads_only = false);
 } // namespace hati
 
 #endif

@@ -12,9 +12,8 @@ namespace hati
 /**
  * Add the seismic loads of a uniform base acceleration in the relative
  * formulation (algorithms.md section 4): for each direction d with a
- * non-zero amplitude, a time-dependent load with shape `-M r_d` (consistent
- * mass if the system has one, lumped otherwise; zero on fixed DoFs) and
- * amplitude `a_d(t)`.
+ * non-zero amplitude, a time-dependent load with shape `-M r_d`
+ * (DiscreteSystem::mass_influence) and amplitude `a_d(t)`.
  */
 void add_base_excitation(
     DiscreteSystem &system,

@@ -131,6 +131,19 @@ public:
    */
   std::array<Vector<double>, 3> influence;
 
+  /**
+   * `M r_d` per direction (N per m/s^2) for a rigid translation of the whole
+   * model *including its supports*: the loads of gravity and of a base
+   * acceleration and the modal participation use it. It keeps the inertia
+   * coupled to the supports that `M influence[d]` loses when the matrices are
+   * condensed; zero on fixed DoFs. Models fill it; when they do not,
+   * fill_default_mass_influence() uses `M influence[d]`.
+   */
+  std::array<Vector<double>, 3> mass_influence;
+
+  /** Fill the empty mass_influence vectors with `M influence[d]`. */
+  void fill_default_mass_influence();
+
   /** Constant external force (N), e.g. gravity `M g`. */
   Vector<double> constant_force;
   std::vector<TimeDependentLoad> time_dependent_loads;

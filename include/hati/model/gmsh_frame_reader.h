@@ -16,7 +16,7 @@ using namespace dealii;
  * physical groups.
  *
  * - `nodes`: every node used by a line element or a named physical point,
- *   named by its physical point name if it has one, `#<node tag>` otherwise;
+ *   named by its physical point name if it has one, `@<node tag>` otherwise;
  * - `members`: for every named physical curve (dimension 1), the ordered
  *   chain of node names from one end of the member to the other.
  */
