@@ -4,6 +4,7 @@
 
 #include <hati/analysis/modal_analysis.h>
 #include <hati/analysis/static_analysis.h>
+#include <hati/loading/accelerogram.h>
 #include <hati/loading/base_excitation.h>
 #include <hati/output/output_writer.h>
 #include <hati/simulation.h>
@@ -151,9 +152,26 @@ void Simulation::run()
             << "\n  DoFs: " << system.n_dofs() << ", contacts: " << system.contacts.size()
             << "\n  output: " << output_directory << "/" << std::endl;
   system.fill_default_mass_influence();
-  add_base_excitation(system,
-                      base_acceleration_step(common_parameters.base_acceleration,
-                                             common_parameters.base_acceleration_start));
+  auto acceleration = base_acceleration_step(common_parameters.base_acceleration,
+                                             common_parameters.base_acceleration_start);
+  for (unsigned int d = 0; d < 3; ++d)
+    if (!common_parameters.accelerogram_files[d].empty())
+    {
+      const auto record = std::make_shared<Accelerogram>(
+          Accelerogram::read(common_parameters.accelerogram_files[d],
+                             common_parameters.accelerogram_units,
+                             common_parameters.accelerogram_scale));
+      const auto [peak, at] = record->peak();
+      std::cout << "  accelerogram along "
+                << "xyz"[d] << ": " << common_parameters.accelerogram_files[d] << ", "
+                << record->values().size() << " samples to t = " << record->times().back()
+                << " s, peak " << peak << " m/s^2 (" << peak / standard_gravity
+                << " g) at t = " << at << " s" << std::endl;
+      const auto step = acceleration[d];
+      acceleration[d] = [record, step](const double t)
+      { return (*record)(t) + (step ? step(t) : 0.); };
+    }
+  add_base_excitation(system, acceleration);
   if (analysis_parameters.type == "static")
     return run_static();
   if (analysis_parameters.type == "modal")

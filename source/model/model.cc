@@ -28,6 +28,29 @@ void CommonModelParameters::declare_parameters(ParameterHandler &prm)
                     "0",
                     Patterns::Double(0.),
                     "Time at which the base acceleration step is applied (s).");
+  for (const char *d : {"X", "Y", "Z"})
+    prm.declare_entry(
+        std::string("Accelerogram ") + d,
+        "",
+        Patterns::Anything(),
+        std::string("Recorded base acceleration along global ") + d +
+            ": a PEER NGA .AT2 file (units of g) or a two-column 'time value' "
+            "text file (units below), path relative to the current directory; "
+            "empty: none. Applied in the relative formulation F = -M r a_g(t), "
+            "linearly interpolated, zero outside the record, added to the Base "
+            "acceleration step.");
+  prm.declare_entry(
+      "Accelerogram units",
+      "g",
+      Patterns::Selection("g|m/s^2|cm/s^2"),
+      "Units of the values of two-column accelerogram files (.AT2 files are "
+      "always in g; g = 9.80665 m/s^2).");
+  prm.declare_entry(
+      "Accelerogram scale factor",
+      "1",
+      Patterns::Double(),
+      "Factor applied to every accelerogram value (-), e.g. to scale a record "
+      "to a design peak ground acceleration.");
   prm.leave_subsection();
 
   prm.enter_subsection("Contact");
@@ -61,6 +84,11 @@ void CommonModelParameters::parse_parameters(ParameterHandler &prm)
   for (unsigned int d = 0; d < 3; ++d)
     base_acceleration[d] = a[d];
   base_acceleration_start = prm.get_double("Base acceleration start");
+  accelerogram_files = {{Utilities::trim(prm.get("Accelerogram X")),
+                         Utilities::trim(prm.get("Accelerogram Y")),
+                         Utilities::trim(prm.get("Accelerogram Z"))}};
+  accelerogram_units = prm.get("Accelerogram units");
+  accelerogram_scale = prm.get_double("Accelerogram scale factor");
   prm.leave_subsection();
 
   prm.enter_subsection("Contact");

@@ -6,6 +6,7 @@
 
 #include <hati/model/discrete_system.h>
 
+#include <array>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -29,6 +30,12 @@ struct CommonModelParameters
   Tensor<1, 3> base_acceleration;
   /** Time at which the base acceleration step starts (s). */
   double base_acceleration_start = 0.;
+  /** Accelerogram files per global direction x, y, z (empty: none). */
+  std::array<std::string, 3> accelerogram_files;
+  /** Units of two-column accelerogram files: g, m/s^2 or cm/s^2. */
+  std::string accelerogram_units = "g";
+  /** Factor on every accelerogram value (-). */
+  double accelerogram_scale = 1.;
   /** Name of the contact in contacts.csv. */
   std::string contact_name;
   /** Newton's restitution coefficient e in [0, 1]. */
