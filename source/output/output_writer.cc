@@ -55,6 +55,7 @@ OutputWriter::OutputWriter(const std::string &directory,
       contact_names.push_back(c.name);
   }
   group_was_pushing.assign(contact_names.size(), false);
+  group_pushing.assign(contact_names.size(), false);
 
   energy = open(dir + "/energy.csv");
   energy << "time,kinetic,internal,external_work,contact_work,dissipated,total,balance_"
@@ -107,18 +108,19 @@ void OutputWriter::write_history(const OutputState &s)
 void OutputWriter::track_contacts(const std::vector<double> &gaps,
                                   const std::vector<double> &impulses)
 {
-  std::vector<bool> pushing(contact_names.size(), false);
+  // called after every step: no allocation here
+  std::fill(group_pushing.begin(), group_pushing.end(), false);
   for (unsigned int k = 0; k < gaps.size(); ++k)
   {
     penetration = std::max(penetration, -gaps[k]);
     if (impulses[k] > 0.)
-      pushing[contact_group[k]] = true;
+      group_pushing[contact_group[k]] = true;
   }
-  for (unsigned int g = 0; g < pushing.size(); ++g)
+  for (unsigned int g = 0; g < group_pushing.size(); ++g)
   {
-    if (pushing[g] && !group_was_pushing[g])
+    if (group_pushing[g] && !group_was_pushing[g])
       ++impacts;
-    group_was_pushing[g] = pushing[g];
+    group_was_pushing[g] = group_pushing[g];
   }
 }
 

@@ -81,7 +81,7 @@ private:
   std::ofstream history, contacts, energy, section_forces;
   std::vector<std::string> contact_names;
   std::vector<unsigned int> contact_group;
-  std::vector<bool> group_was_pushing;
+  std::vector<bool> group_was_pushing, group_pushing;
   unsigned int impacts = 0;
   double penetration = 0.;
   bool have_energy = false;
