@@ -65,6 +65,16 @@ r = tip("self_weight", [eb, "Model/Frame/Nodal loads=", "Loading/Gravity=0, 0, -
 ctx.check("self-weight tip deflection -q L^4 / (8 E Iy) (m)", r["tipuz"],
           -rho * A * 9.81 * L**4 / (8 * E * Iy), rel=1e-9)
 
+# section forces under self-weight (a span load): |Vz| = q (L - x),
+# |My| = q (L - x)^2 / 2, zero at the free tip
+out, _ = ctx.run(static, "self_weight_forces", ["Model/Frame/Nodal loads=", "Loading/Gravity=0, 0, -9.81"])
+s = read_csv(out + "/section_forces.csv")
+q = rho * A * 9.81
+ctx.check("self-weight: max | |Vz| - q (L - x) | (N)", np.max(np.abs(np.abs(s["Vz"]) - q * (L - s["x"]))),
+          0.0, abs_tol=1e-8 * q * L)
+ctx.check("self-weight: max | |My| - q (L - x)^2 / 2 | (N m)",
+          np.max(np.abs(np.abs(s["My"]) - q * (L - s["x"]) ** 2 / 2)), 0.0, abs_tol=1e-8 * q * L**2)
+
 # explicit integration of a frame with a stiff support spring: the critical
 # step includes the spring (0.999 dt_crit stays bounded)
 import re

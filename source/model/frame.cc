@@ -429,6 +429,7 @@ types::global_dof_index Frame::node_dof(const std::string &node,
 void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
 {
   const auto &P = parameters;
+  gravity = common.gravity;
 
   // every member its own vertices; remember the end vertices at each node
   std::vector<Point<3>> vertices;
@@ -654,14 +655,21 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
 std::array<double, 12> Frame::cell_section_forces(const CellInfo &cell,
                                                   const Vector<double> &U) const
 {
-  Vector<double> ug(12);
+  const auto &member = parameters.members[cell.member];
+  const FrameSection &section = parameters.sections.at(member.section);
+  const FrameMaterial &material = parameters.materials.at(member.material);
+  Vector<double> ug(12), f(12), span(12), r(12);
   for (unsigned int i = 0; i < 12; ++i)
     ug[i] = U[cell.dofs[i]];
-  const auto &member = parameters.members[cell.member];
-  return section_forces(cell.length,
-                        parameters.sections.at(member.section),
-                        parameters.materials.at(member.material),
-                        to_local(ug, cell.rotation));
+  local_stiffness(cell.length, section, material).vmult(f, to_local(ug, cell.rotation));
+  // end forces f = k u - F_gravity, F_gravity = m r g in local axes: the
+  // element's own weight is a span load (fixed-end forces)
+  const Tensor<1, 3> g = cell.rotation * gravity;
+  for (unsigned int d = 0; d < 3; ++d)
+    r[d] = r[6 + d] = g[d];
+  local_consistent_mass(cell.length, section, material).vmult(span, r);
+  f -= span;
+  return section_forces(f);
 }
 
 void Frame::write_vtu(std::ostream &out,
@@ -731,7 +739,7 @@ void Frame::write_section_forces(std::ostream &out,
           out << time << ',' << name << ',' << cell.element << ','
               << cell.position + end * cell.length;
           for (unsigned int k = 0; k < 6; ++k)
-            out << ',' << s[6 * end + k];
+            out << ',' << s[6 * end + k] + 0.; // + 0.: no "-0" in the file
           out << '\n';
         }
       }

@@ -315,6 +315,19 @@ Vector<double> to_local(const Vector<double> &global12, const Tensor<2, 3> &R)
   return local;
 }
 
+std::array<double, 12> section_forces(const Vector<double> &local_end_forces)
+{
+  AssertThrow(local_end_forces.size() == 12,
+              ExcMessage("section_forces: need 12 local end forces."));
+  std::array<double, 12> s;
+  for (unsigned int i = 0; i < 6; ++i)
+  {
+    s[i] = -local_end_forces[i];
+    s[6 + i] = local_end_forces[6 + i];
+  }
+  return s;
+}
+
 std::array<double, 12> section_forces(const FullMatrix<double> &local_stiffness,
                                       const Vector<double> &local_displacement)
 {
@@ -324,13 +337,7 @@ std::array<double, 12> section_forces(const FullMatrix<double> &local_stiffness,
                          "displacements."));
   Vector<double> f(12);
   local_stiffness.vmult(f, local_displacement);
-  std::array<double, 12> s;
-  for (unsigned int i = 0; i < 6; ++i)
-  {
-    s[i] = -f[i];
-    s[6 + i] = f[6 + i];
-  }
-  return s;
+  return section_forces(f);
 }
 
 std::array<double, 12> section_forces(const double L,

@@ -106,7 +106,12 @@ private:
     std::array<types::global_dof_index, 12> dofs;
   };
 
-  /** Section forces (N, Vy, Vz, T, My, Mz at both ends) of one cell. */
+  /**
+   * Section forces (N, Vy, Vz, T, My, Mz at both ends) of one cell from its
+   * end forces k u minus its own weight (a span load). Inertia forces are
+   * taken as nodal: between nodes the distributed inertia of a dynamic run
+   * is not in the section forces.
+   */
   std::array<double, 12> cell_section_forces(const CellInfo &cell,
                                              const Vector<double> &U) const;
 
@@ -118,6 +123,8 @@ private:
   std::vector<CellInfo> cells;
   std::map<std::string, std::array<types::global_dof_index, 6>> node_dofs;
   double total_mass = 0.;
+  /** Gravity (m/s^2): the members' weight is a span load for section forces. */
+  Tensor<1, 3> gravity;
 };
 } // namespace hati
 

@@ -207,6 +207,14 @@ Vector<double> to_local(const Vector<double> &global12, const Tensor<2, 3> &R);
 std::array<double, 12> section_forces(const FullMatrix<double> &local_stiffness,
                                       const Vector<double> &local_displacement);
 
+/**
+ * section_forces() from the local end forces f (12) that the rest of the
+ * structure applies to the element: (N, Vy, Vz, T, My, Mz) = -f[0..5] at
+ * end 1 and +f[6..11] at end 2. With span loads F_span (e.g. gravity),
+ * f = k u - F_span.
+ */
+std::array<double, 12> section_forces(const Vector<double> &local_end_forces);
+
 /** section_forces() with the local stiffness built from L, section, material. */
 std::array<double, 12> section_forces(const double L,
                                       const FrameSection &section,
