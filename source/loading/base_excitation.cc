@@ -14,6 +14,7 @@ void add_base_excitation(DiscreteSystem &system,
     load.shape = system.mass_influence[d];
     load.shape *= -1.; // F = -M r a_g
     load.amplitude = acceleration[d];
+    load.acceleration_direction = d;
     system.time_dependent_loads.push_back(load);
   }
 }

@@ -20,6 +20,7 @@ void DiscreteSystem::reinit(const unsigned int n)
     r.reinit(0);
   for (auto &r : mass_influence)
     r.reinit(0);
+  gravity = Tensor<1, 3>();
   contacts.clear();
   monitors.clear();
 }

@@ -144,6 +144,15 @@ void Frame::Parameters::declare_parameters(ParameterHandler &prm)
       "member at the node keeps the node's rotations, the others share only "
       "the translations. Joints are rigid by default.");
   prm.declare_entry(
+      "Contacts",
+      "",
+      Patterns::Anything(),
+      "Unilateral contacts of nodes on rigid planes (CD-Lagrange only), 'name: node, "
+      "nx, ny, nz, gap[, e]; ...': the plane's normal n (global axes, pointing from "
+      "the obstacle to the node; normalised), the initial gap (m) and the "
+      "restitution coefficient e (-, default Contact/Restitution coefficient). The "
+      "gap is g = gap + n . u; contacts sharing a name are summed in contacts.csv.");
+  prm.declare_entry(
       "Nodal loads",
       "",
       Patterns::Anything(),
@@ -358,6 +367,29 @@ void Frame::Parameters::parse_parameters(ParameterHandler &prm)
     nodal_loads[it.name] = f;
   }
 
+  for (const Item &it : parse_items(prm.get("Contacts"), "Contacts"))
+  {
+    expect_values(it, "Contacts", {5, 6}, "5 or 6 (node, nx, ny, nz, gap[, e])");
+    NodeContact c;
+    c.name = it.name;
+    c.node = it.values[0];
+    for (unsigned int d = 0; d < 3; ++d)
+      c.normal[d] = to_number(it.values[1 + d], "Contacts", it);
+    AssertThrow(
+        c.normal.norm() > 0.,
+        ExcMessage("Model/Frame/Contacts: contact '" + it.name + "' has a zero normal"));
+    c.normal /= c.normal.norm();
+    c.gap = to_number(it.values[4], "Contacts", it);
+    if (it.values.size() == 6)
+    {
+      c.restitution = to_number(it.values[5], "Contacts", it);
+      AssertThrow(c.restitution >= 0. && c.restitution <= 1.,
+                  ExcMessage("Model/Frame/Contacts: contact '" + it.name +
+                             "': the restitution coefficient must be in [0, 1]"));
+    }
+    contacts.push_back(c);
+  }
+
   // cross-checks, with the entry that is wrong
   AssertThrow(!members.empty(), ExcMessage("Model/Frame/Members: no member is defined"));
   std::set<std::string> member_names, used_nodes;
@@ -408,6 +440,8 @@ void Frame::Parameters::parse_parameters(ParameterHandler &prm)
     check_node(n, "Monitor nodes");
   for (const auto &l : nodal_loads)
     check_node(l.first, "Nodal loads");
+  for (const auto &c : contacts)
+    check_node(c.node, "Contacts");
   for (const auto &m : section_force_members)
     AssertThrow(
         member_names.count(m),
@@ -632,12 +666,29 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
         system.influence[d][vd[d]] = 1.;
     system.constant_force.add(common.gravity[d], system.mass_influence[d]);
   }
+  system.gravity = common.gravity;
   for (const auto &[node, f] : P.nodal_loads)
     for (unsigned int c = 0; c < 6; ++c)
       system.constant_force[node_dofs[node][c]] += f[c];
   for (unsigned int i = 0; i < n; ++i)
     if (system.fixed[i])
       system.constant_force[i] = 0.;
+
+  // node-to-rigid-plane contacts: L = n^T on the node's translations
+  for (const auto &c : P.contacts)
+  {
+    ContactRow row;
+    row.name = c.name;
+    for (unsigned int d = 0; d < 3; ++d)
+      if (c.normal[d] != 0.)
+      {
+        row.dofs.push_back(node_dofs[c.node][d]);
+        row.coefficients.push_back(c.normal[d]);
+      }
+    row.initial_gap = c.gap;
+    row.restitution = c.restitution >= 0. ? c.restitution : common.restitution;
+    system.contacts.push_back(row);
+  }
 
   for (const auto &node : P.monitor_nodes)
   {

@@ -150,14 +150,29 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
     }
   }
 
+  // External forces with the lumped mass for the acceleration loads (gravity,
+  // base excitation): -M_lumped r a instead of the consistent M r a of the
+  // system, so that a rigid motion (free flight) is exact with CD.
+  force = system.constant_force;
+  for (unsigned int d = 0; d < 3; ++d)
+    if (system.gravity[d] != 0. && system.mass_influence[d].size() == n &&
+        system.influence[d].size() == n)
+      for (unsigned int i = 0; i < n; ++i)
+        force[i] += system.gravity[d] * (system.lumped_mass[i] * system.influence[d][i] -
+                                         system.mass_influence[d][i]);
   dt_minv_force.reinit(n);
   for (unsigned int i = 0; i < n; ++i)
-    dt_minv_force[i] = dt_minv[i] * system.constant_force[i];
+    dt_minv_force[i] = dt_minv[i] * force[i];
   for (const auto &load : system.time_dependent_loads)
   {
-    Vector<double> s(load.shape);
-    s.scale(dt_minv);
-    dt_minv_load_shapes.push_back(s);
+    Vector<double> shape(load.shape);
+    const int d = load.acceleration_direction;
+    if (d >= 0 && system.influence[d].size() == n)
+      for (unsigned int i = 0; i < n; ++i)
+        shape[i] = -system.lumped_mass[i] * system.influence[d][i];
+    load_shapes.push_back(shape);
+    shape.scale(dt_minv);
+    dt_minv_load_shapes.push_back(shape);
   }
 
   // initial state
@@ -169,8 +184,9 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
   V_prev = &velocity_b;
 
   // V_{1/2} = V_0 + dt/2 M^-1 (F_ext(0) - K U_0)
-  Vector<double> f(n), ku(n);
-  system.external_force(0., f);
+  Vector<double> f(force), ku(n);
+  for (unsigned int l = 0; l < load_shapes.size(); ++l)
+    f.add(system.time_dependent_loads[l].amplitude(0.), load_shapes[l]);
   if (system.has_stiffness())
     system.stiffness.vmult(ku, U);
   for (unsigned int i = 0; i < n; ++i)
@@ -239,7 +255,7 @@ void CDLagrange::step()
     {
       const auto &load = system.time_dependent_loads[l];
       const double s1 = load.amplitude(t), s0 = load.amplitude(t - dt);
-      time_dependent_work += 0.5 * (s0 + s1) * dt * (load.shape * (*V));
+      time_dependent_work += 0.5 * (s0 + s1) * dt * (load_shapes[l] * (*V));
       V_prev->add(s1, dt_minv_load_shapes[l]);
     }
   }
@@ -345,7 +361,7 @@ Energies CDLagrange::energies() const
     e.internal = 0.5 * system.stiffness.matrix_norm_square(U);
   Vector<double> du(U);
   du -= U0;
-  e.external_work = system.constant_force * du + time_dependent_work;
+  e.external_work = force * du + time_dependent_work;
   e.contact_work = contact_work;
   return e;
 }

@@ -1,6 +1,7 @@
 #ifndef hati_model_discrete_system_h
 #define hati_model_discrete_system_h
 
+#include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -60,6 +61,13 @@ struct TimeDependentLoad
 {
   Vector<double> shape;
   std::function<double(double)> amplitude;
+  /**
+   * For the load of a base acceleration along global direction d
+   * (0, 1, 2), shape = -mass_influence[d]: an integrator with a lumped mass
+   * uses -M_lumped influence[d] instead, so that a rigid motion stays
+   * exact. -1 for other loads.
+   */
+  int acceleration_direction = -1;
 };
 
 /**
@@ -143,6 +151,14 @@ public:
 
   /** Fill the empty mass_influence vectors with `M influence[d]`. */
   void fill_default_mass_influence();
+
+  /**
+   * Gravity (m/s^2) included in constant_force as `sum_d g_d
+   * mass_influence[d]`; an integrator with a lumped mass swaps that part for
+   * `M_lumped influence[d] g_d` (free fall exact). Zero if the model puts no
+   * gravity there that way.
+   */
+  Tensor<1, 3> gravity;
 
   /** Constant external force (N), e.g. gravity `M g`. */
   Vector<double> constant_force;

@@ -74,6 +74,15 @@ public:
     std::vector<Support> supports;
     std::vector<std::string> hinged_joints;
     std::map<std::string, std::array<double, 6>> nodal_loads;
+    struct NodeContact
+    {
+      std::string name, node;
+      Tensor<1, 3> normal;
+      double gap = 0.;
+      /** Negative: Contact/Restitution coefficient. */
+      double restitution = -1.;
+    };
+    std::vector<NodeContact> contacts;
     std::vector<std::string> monitor_nodes;
     std::vector<std::string> section_force_members;
   };

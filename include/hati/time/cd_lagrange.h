@@ -98,6 +98,10 @@ private:
   std::vector<unsigned int> column;
   std::vector<double> value;
   // dt M^-1 F_constant and dt M^-1 for the time-dependent loads
+  /** External constant force with lumped-mass acceleration loads (N). */
+  Vector<double> force;
+  /** Time-dependent load shapes as this integrator applies them (N). */
+  std::vector<Vector<double>> load_shapes;
   Vector<double> dt_minv_force;
   Vector<double> dt_minv;
   std::vector<Vector<double>> dt_minv_load_shapes;
