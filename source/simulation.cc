@@ -199,8 +199,9 @@ void Simulation::run()
 
 namespace
 {
-/** State of an integrator for the output writer (contacts only for CD-Lagrange). */
-OutputState output_state(const CDLagrange &integrator)
+/** State of an integrator with contacts for the output writer. */
+template <class Integrator>
+OutputState contact_state(const Integrator &integrator, const double impulse_duration)
 {
   OutputState s;
   s.time = integrator.time();
@@ -210,22 +211,18 @@ OutputState output_state(const CDLagrange &integrator)
   s.normal_velocities = integrator.normal_velocities();
   s.impulses = integrator.impulses();
   s.active = integrator.active();
-  s.impulse_duration = integrator.time_step();
+  s.impulse_duration = impulse_duration;
   return s;
+}
+
+OutputState output_state(const CDLagrange &integrator)
+{
+  return contact_state(integrator, integrator.time_step());
 }
 
 OutputState output_state(const EventDriven &integrator)
 {
-  OutputState s;
-  s.time = integrator.time();
-  s.displacement = &integrator.displacement();
-  s.velocity = &integrator.velocity();
-  s.gaps = integrator.gaps();
-  s.normal_velocities = integrator.normal_velocities();
-  s.impulses = integrator.impulses();
-  s.active = integrator.active();
-  s.impulse_duration = 0.; // impulses act at an instant
-  return s;
+  return contact_state(integrator, 0.); // impulses act at an instant
 }
 
 OutputState output_state(const Newmark &integrator)
