@@ -452,14 +452,6 @@ Frame::Frame(const Parameters &parameters) : parameters(parameters), fe(FE_Q<1, 
 {
 }
 
-types::global_dof_index Frame::node_dof(const std::string &node,
-                                        const unsigned int c) const
-{
-  const auto it = node_dofs.find(node);
-  AssertThrow(it != node_dofs.end(), ExcMessage("frame: unknown node '" + node + "'"));
-  return it->second[c];
-}
-
 void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
 {
   const auto &P = parameters;

@@ -458,7 +458,6 @@ Energies Newmark::energies() const
 void Newmark::solve_with_effective_matrix(Vector<double> &x,
                                           const Vector<double> &b) const
 {
-  const auto start = Clock::now();
   if (direct)
   {
     std::copy(b.begin(), b.end(), solver->b.begin());
@@ -498,7 +497,6 @@ void Newmark::solve_with_effective_matrix(Vector<double> &x,
       }
     }
   }
-  last_solve_seconds = seconds_since(start);
   check_finite(x, "Newmark");
 }
 } // namespace hati

@@ -99,9 +99,6 @@ public:
                             const double time,
                             const Vector<double> &U) const override;
 
-  /** Master DoF of component @p c (0..5) at node @p node. */
-  types::global_dof_index node_dof(const std::string &node, const unsigned int c) const;
-
 private:
   /** Per active cell: its member, its index along the member, its rotation. */
   struct CellInfo

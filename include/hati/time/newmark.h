@@ -155,8 +155,6 @@ public:
 
   /** Wall time of the factorisation (or AMG set-up) of M_eff (s). */
   double factorization_time() const { return factorization_seconds; }
-  /** Wall time of the last solve with M_eff (s). */
-  double last_solve_time() const { return last_solve_seconds; }
 
   /**
    * Solve `M_eff x = b` (the matrix of N2) with the existing factorisation
@@ -197,7 +195,6 @@ private:
   std::unique_ptr<EffectiveSolver> solver;
 
   double factorization_seconds = 0.;
-  mutable double last_solve_seconds = 0.;
 
   Vector<double> U, V, A;
   Vector<double> F;  // F_ext(t_n)
