@@ -20,6 +20,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <hati/analysis/modal_analysis.h>
+#include <hati/linear_algebra/direct_solver.h>
 
 #include <algorithm>
 #include <cmath>
@@ -41,37 +42,21 @@ class ShiftedInverse
 {
 public:
   explicit ShiftedInverse(const SparseMatrix<double> &shifted_matrix)
-      : solver(control,
-               TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu")),
-        x(shifted_matrix.m()), b(shifted_matrix.m())
   {
-    matrix.reinit(shifted_matrix, 0.);
-    try
-    {
-      solver.initialize(matrix);
-    }
-    catch (const std::exception &)
-    {
-      AssertThrow(false,
-                  ExcMessage("modal analysis: Amesos_Klu found a zero pivot in the "
-                             "shifted stiffness K - sigma M (a free DoF without "
-                             "stiffness and without mass?)."));
-    }
+    solver.factorize(shifted_matrix,
+                     "modal analysis: Amesos_Klu found a zero pivot in the shifted "
+                     "stiffness K - sigma M (a free DoF without stiffness and without "
+                     "mass?).");
   }
 
   /** dst = (K - sigma M)^-1 src. */
   void vmult(Vector<double> &dst, const Vector<double> &src) const
   {
-    std::copy(src.begin(), src.end(), b.begin());
-    solver.solve(x, b);
-    std::copy(x.begin(), x.end(), dst.begin());
+    solver.solve(dst, src);
   }
 
 private:
-  TrilinosWrappers::SparseMatrix matrix;
-  mutable SolverControl control;
-  mutable TrilinosWrappers::SolverDirect solver;
-  mutable LinearAlgebra::distributed::Vector<double> x, b;
+  DirectSolver solver;
 };
 
 /** One eigenpair before sorting. */

@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <hati/analysis/static_analysis.h>
+#include <hati/linear_algebra/direct_solver.h>
 
 #include <algorithm>
 #include <cmath>
@@ -120,40 +121,23 @@ void solve_static(const DiscreteSystem &system,
   SparseMatrix<double> K(system.stiffness_pattern);
   K.copy_from(system.stiffness);
   decouple_fixed_dofs(K, fixed);
-  TrilinosWrappers::SparseMatrix trilinos_K;
-  trilinos_K.reinit(K, 0.);
 
   Vector<double> r(n);
   if (linear_solver == "direct")
   {
-    SolverControl control;
-    TrilinosWrappers::SolverDirect solver(
-        control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
-    try
+    // one factorisation (Amesos_Klu stops at an exactly zero pivot), then the
+    // solve and up to two steps of iterative refinement with it
+    DirectSolver solver;
+    solver.factorize(K, singular_message + " (Amesos_Klu found a zero pivot in K).");
+    solver.solve(U, F);
+    for (unsigned int refinement = 0; refinement < 2; ++refinement)
     {
-      // one factorisation, then the solve and up to two steps of iterative
-      // refinement with it
-      solver.initialize(trilinos_K);
-      LinearAlgebra::distributed::Vector<double> x(n), b(n);
-      std::copy(F.begin(), F.end(), b.begin());
-      solver.solve(x, b);
-      std::copy(x.begin(), x.end(), U.begin());
-      for (unsigned int refinement = 0; refinement < 2; ++refinement)
-      {
-        residual(K, U, F, fixed, r);
-        if (!std::isfinite(r.l2_norm()) || free_norm(r, fixed) <= 1e-14 * norm_F)
-          break;
-        std::copy(r.begin(), r.end(), b.begin());
-        solver.solve(x, b);
-        for (unsigned int i = 0; i < n; ++i)
-          U[i] += x[i];
-      }
-    }
-    catch (const std::exception &)
-    {
-      // Amesos_Klu stops at an exactly zero pivot (Trilinos error -22)
-      AssertThrow(
-          false, ExcMessage(singular_message + " (Amesos_Klu found a zero pivot in K)."));
+      residual(K, U, F, fixed, r);
+      if (!std::isfinite(r.l2_norm()) || free_norm(r, fixed) <= 1e-14 * norm_F)
+        break;
+      Vector<double> x(n);
+      solver.solve(x, r);
+      U += x;
     }
   }
   else if (norm_F > 0.)
@@ -169,6 +153,8 @@ void solve_static(const DiscreteSystem &system,
           mode[i] = (rd[i] != 0.);
         data.constant_modes.push_back(mode);
       }
+    TrilinosWrappers::SparseMatrix trilinos_K;
+    trilinos_K.reinit(K, 0.);
     amg.initialize(trilinos_K, data);
     SolverControl control(std::max(1000u, n), 1e-12 * norm_F);
     TrilinosWrappers::SolverCG cg(control);

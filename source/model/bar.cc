@@ -28,6 +28,20 @@ void Bar::Parameters::declare_parameters(ParameterHandler &prm)
       "1",
       Patterns::Double(),
       "Uniform velocity v0 at t = 0 (m/s), positive towards the wall (+x).");
+  prm.declare_entry("Left end",
+                    "free",
+                    Patterns::Selection("free|fixed"),
+                    "The end x = 0: free, or fixed (clamped: u = 0).");
+  prm.declare_entry("End force",
+                    "0",
+                    Patterns::Double(),
+                    "Constant force at the end x = L along +x, applied from t = 0 (N); "
+                    "0: none.");
+  prm.declare_entry("Wall",
+                    "true",
+                    Patterns::Bool(),
+                    "Whether the rigid wall at x = L + Contact/Initial gap exists (the "
+                    "contact of the bar-impact benchmark); false: no contact.");
 }
 
 void Bar::Parameters::parse_parameters(ParameterHandler &prm)
@@ -38,6 +52,9 @@ void Bar::Parameters::parse_parameters(ParameterHandler &prm)
   density = prm.get_double("Density");
   n_elements = prm.get_integer("Number of elements");
   initial_velocity = prm.get_double("Initial velocity");
+  left_end = prm.get("Left end");
+  end_force = prm.get_double("End force");
+  wall = prm.get_bool("Wall");
   AssertThrow(length > 0. && area > 0. && young_modulus > 0. && density > 0.,
               ExcMessage("Model/Bar: Length, Cross-section area, Young's modulus and "
                          "Density must all be > 0."));
@@ -47,10 +64,13 @@ Bar::Bar(const Parameters &parameters) : parameters(parameters), fe(1) {}
 
 void Bar::build(const CommonModelParameters &common, DiscreteSystem &system)
 {
-  GridGenerator::subdivided_hyper_cube(
-      triangulation, parameters.n_elements, 0., parameters.length);
-  dof_handler.reinit(triangulation);
-  dof_handler.distribute_dofs(fe);
+  if (triangulation.n_active_cells() == 0)
+  {
+    GridGenerator::subdivided_hyper_cube(
+        triangulation, parameters.n_elements, 0., parameters.length);
+    dof_handler.reinit(triangulation);
+    dof_handler.distribute_dofs(fe);
+  }
   const unsigned int n = dof_handler.n_dofs();
   system.reinit(n);
 
@@ -72,6 +92,8 @@ void Bar::build(const CommonModelParameters &common, DiscreteSystem &system)
   double omega2 = 0.;
   for (const auto &cell : dof_handler.active_cell_iterators())
   {
+    if (!cell_selected(cell->active_cell_index()))
+      continue;
     fe_values.reinit(cell);
     ke = 0.;
     mc = 0.;
@@ -100,15 +122,21 @@ void Bar::build(const CommonModelParameters &common, DiscreteSystem &system)
   }
   system.omega_max_bound = std::sqrt(omega2);
 
-  // end nodes
+  // end nodes and the cells that touch them
   types::global_dof_index left = 0, right = 0;
+  std::vector<unsigned int> right_cells;
   for (const auto &cell : dof_handler.active_cell_iterators())
     for (unsigned int v = 0; v < 2; ++v)
     {
       if (std::abs(cell->vertex(v)[0]) < 1e-12 * parameters.length)
+      {
         left = cell->vertex_dof_index(v, 0);
+      }
       if (std::abs(cell->vertex(v)[0] - parameters.length) < 1e-12 * parameters.length)
+      {
         right = cell->vertex_dof_index(v, 0);
+        right_cells.push_back(cell->active_cell_index());
+      }
     }
 
   system.influence[0].reinit(n);
@@ -117,14 +145,28 @@ void Bar::build(const CommonModelParameters &common, DiscreteSystem &system)
     system.initial_velocity[i] = parameters.initial_velocity;
     system.influence[0][i] = 1.;
   }
+  if (parameters.left_end == "fixed")
+  {
+    system.fixed[left] = true;
+    system.influence[0][left] = 0.;
+    system.initial_velocity[left] = 0.;
+    system.constant_force[left] = 0.;
+  }
 
-  ContactRow wall;
-  wall.name = common.contact_name;
-  wall.dofs = {right};
-  wall.coefficients = {-1.}; // g = g0 - u(L)
-  wall.initial_gap = common.initial_gap;
-  wall.restitution = common.restitution;
-  system.contacts.push_back(wall);
+  if (owns_node(right_cells))
+  {
+    system.constant_force[right] += parameters.end_force;
+    if (parameters.wall)
+    {
+      ContactRow wall;
+      wall.name = common.contact_name;
+      wall.dofs = {right};
+      wall.coefficients = {-1.}; // g = g0 - u(L)
+      wall.initial_gap = common.initial_gap;
+      wall.restitution = common.restitution;
+      system.contacts.push_back(wall);
+    }
+  }
 
   system.monitors.push_back({"impact_end", {"x"}, {right}});
   system.monitors.push_back({"free_end", {"x"}, {left}});
@@ -139,9 +181,20 @@ void Bar::write_vtu(std::ostream &out,
   data_out.attach_dof_handler(dof_handler);
   for (const auto &f : fields)
     data_out.add_data_vector(*f.second, f.first);
+  const Vector<float> subdomain = subdomain_field();
+  if (subdomain.size() > 0)
+    data_out.add_data_vector(subdomain, "subdomain", DataOut<1>::type_cell_data);
   data_out.build_patches();
   data_out.set_flags(DataOutBase::VtkFlags(time, cycle));
   data_out.write_vtu(out);
+}
+
+std::vector<Point<3>> Bar::cell_centres() const
+{
+  std::vector<Point<3>> centres(triangulation.n_active_cells());
+  for (const auto &cell : triangulation.active_cell_iterators())
+    centres[cell->active_cell_index()] = Point<3>(cell->center()[0], 0., 0.);
+  return centres;
 }
 
 std::string Bar::description() const

@@ -452,11 +452,9 @@ Frame::Frame(const Parameters &parameters) : parameters(parameters), fe(FE_Q<1, 
 {
 }
 
-void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
+void Frame::create_mesh()
 {
   const auto &P = parameters;
-  gravity = common.gravity;
-
   // every member its own vertices; remember the end vertices at each node
   std::vector<Point<3>> vertices;
   std::vector<CellData<1>> cell_data;
@@ -498,11 +496,10 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
   triangulation.create_triangulation(vertices, cell_data, SubCellData());
   dof_handler.reinit(triangulation);
   dof_handler.distribute_dofs(fe);
-  const unsigned int n = dof_handler.n_dofs();
-  system.reinit(n);
 
   // DoFs of every vertex, and the cells in creation order
-  std::vector<std::array<types::global_dof_index, 6>> vertex_dofs(vertices.size());
+  vertex_dofs.assign(vertices.size(), {});
+  std::vector<std::vector<unsigned int>> vertex_cells(vertices.size());
   cells.clear();
   for (const auto &cell : dof_handler.active_cell_iterators())
   {
@@ -513,6 +510,8 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
     const unsigned int first =
         cell->vertex_index(0) == cell_start[cell->active_cell_index()] ? 0 : 1;
     info.position = cell_position[cell->active_cell_index()];
+    for (unsigned int v = 0; v < 2; ++v)
+      vertex_cells[cell->vertex_index(v)].push_back(cell->active_cell_index());
     for (unsigned int v = 0; v < 2; ++v)
       for (unsigned int c = 0; c < 6; ++c)
       {
@@ -545,6 +544,11 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
   // joints and supports as constraints
   constraints.clear();
   node_dofs.clear();
+  node_cells.clear();
+  for (const auto &[node, list] : node_vertices)
+    for (const unsigned int v : list)
+      node_cells[node].insert(
+          node_cells[node].end(), vertex_cells[v].begin(), vertex_cells[v].end());
   const std::set<std::string> hinged(P.hinged_joints.begin(), P.hinged_joints.end());
   for (const auto &[node, list] : node_vertices)
   {
@@ -562,6 +566,17 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
       if (s.stiffness[c] == 0. && !constraints.is_constrained(node_dofs[s.node][c]))
         constraints.add_line(node_dofs[s.node][c]);
   constraints.close();
+}
+
+void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
+{
+  const auto &P = parameters;
+  gravity = common.gravity;
+
+  if (triangulation.n_active_cells() == 0)
+    create_mesh();
+  const unsigned int n = dof_handler.n_dofs();
+  system.reinit(n);
 
   DynamicSparsityPattern dsp(n, n);
   DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
@@ -575,9 +590,12 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
     mi.reinit(n);
   std::vector<types::global_dof_index> dofs(12);
   double omega2 = 0.;
-  total_mass = 0.;
-  for (const auto &info : cells)
+  double mass = 0.; // of the part built
+  for (unsigned int c = 0; c < cells.size(); ++c)
   {
+    if (!cell_selected(c))
+      continue;
+    const auto &info = cells[c];
     const auto &member = P.members[info.member];
     const FrameSection &section = P.sections.at(member.section);
     const FrameMaterial &material = P.materials.at(member.material);
@@ -611,13 +629,13 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
         std::max(omega2,
                  element_omega_squared(
                      kg, std::vector<double>(lumped_cell.begin(), lumped_cell.end())));
-    total_mass += material.rho * section.A * info.length;
+    mass += material.rho * section.A * info.length;
   }
 
   std::vector<double> spring(n, 0.);
   for (const auto &s : P.supports)
     for (unsigned int c = 0; c < 6; ++c)
-      if (s.stiffness[c] > 0.)
+      if (s.stiffness[c] > 0. && owns_node(node_cells[s.node]))
       {
         system.stiffness.add(node_dofs[s.node][c], node_dofs[s.node][c], s.stiffness[c]);
         spring[node_dofs[s.node][c]] += s.stiffness[c];
@@ -625,6 +643,8 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
   for (const auto &p : P.point_masses)
     for (unsigned int c = 0; c < 6; ++c)
     {
+      if (!owns_node(node_cells[p.node]))
+        break;
       const auto i = node_dofs[p.node][c];
       if (constraints.is_constrained(i))
         continue;
@@ -635,7 +655,10 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
         system.mass_influence[c][i] += m;
     }
   for (const auto &p : P.point_masses)
-    total_mass += p.mass;
+    if (owns_node(node_cells[p.node]))
+      mass += p.mass;
+  if (selected_part < 0)
+    total_mass = mass;
 
   for (unsigned int i = 0; i < n; ++i)
     system.fixed[i] = constraints.is_constrained(i);
@@ -660,8 +683,9 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
   }
   system.gravity = common.gravity;
   for (const auto &[node, f] : P.nodal_loads)
-    for (unsigned int c = 0; c < 6; ++c)
-      system.constant_force[node_dofs[node][c]] += f[c];
+    if (owns_node(node_cells[node]))
+      for (unsigned int c = 0; c < 6; ++c)
+        system.constant_force[node_dofs[node][c]] += f[c];
   for (unsigned int i = 0; i < n; ++i)
     if (system.fixed[i])
       system.constant_force[i] = 0.;
@@ -669,6 +693,8 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
   // node-to-rigid-plane contacts: L = n^T on the node's translations
   for (const auto &c : P.contacts)
   {
+    if (!owns_node(node_cells[c.node]))
+      continue;
     ContactRow row;
     row.name = c.name;
     for (unsigned int d = 0; d < 3; ++d)
@@ -749,12 +775,31 @@ void Frame::write_vtu(std::ostream &out,
   for (unsigned int c = 0; c < cells.size(); ++c)
     member_id[c] = cells[c].member;
   data_out.add_data_vector(member_id, "member", DataOut<1, 3>::type_cell_data);
+  const Vector<float> subdomain = subdomain_field();
+  if (subdomain.size() > 0)
+    data_out.add_data_vector(subdomain, "subdomain", DataOut<1, 3>::type_cell_data);
   const char *force_names[6] = {"N", "Vy", "Vz", "T", "My", "Mz"};
   for (unsigned int k = 0; k < 6; ++k)
     data_out.add_data_vector(forces[k], force_names[k], DataOut<1, 3>::type_cell_data);
   data_out.build_patches();
   data_out.set_flags(DataOutBase::VtkFlags(time, cycle));
   data_out.write_vtu(out);
+}
+
+std::vector<Point<3>> Frame::cell_centres() const
+{
+  std::vector<Point<3>> centres(triangulation.n_active_cells());
+  for (const auto &cell : triangulation.active_cell_iterators())
+    centres[cell->active_cell_index()] = cell->center();
+  return centres;
+}
+
+std::vector<std::string> Frame::cell_members() const
+{
+  std::vector<std::string> names(cells.size());
+  for (unsigned int c = 0; c < cells.size(); ++c)
+    names[c] = parameters.members[cells[c].member].name;
+  return names;
 }
 
 std::string Frame::section_forces_header() const

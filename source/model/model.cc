@@ -6,6 +6,10 @@
 #include <hati/model/point_mass.h>
 #include <hati/model/solid.h>
 
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
 namespace hati
 {
 void CommonModelParameters::declare_parameters(ParameterHandler &prm)
@@ -98,6 +102,134 @@ void CommonModelParameters::parse_parameters(ParameterHandler &prm)
   prm.leave_subsection();
 }
 
+void DecompositionParameters::declare_parameters(ParameterHandler &prm)
+{
+  prm.declare_entry(
+      "Explicit region",
+      "",
+      Patterns::Anything(),
+      "Boxes of the explicit subdomain of Method = HATI, 'x_min, x_max[, y_min, "
+      "y_max, z_min, z_max]; ...' (m, global axes; with two values a box bounds x "
+      "only, as for the bar). A cell whose centre lies in a box is explicit "
+      "(CD-Lagrange, step dt); the other cells are implicit (Newmark, step m dt). "
+      "Ignored by single-domain methods.");
+  prm.declare_entry(
+      "Explicit members",
+      "",
+      Patterns::Anything(),
+      "Frames: names of the members of the explicit subdomain, 'member, member, "
+      "...' (members of a mesh file by their physical name); added to the cells of "
+      "the Explicit region. Ignored by single-domain methods.");
+}
+
+void DecompositionParameters::parse_parameters(ParameterHandler &prm)
+{
+  boxes.clear();
+  members.clear();
+  for (const std::string &raw :
+       Utilities::split_string_list(prm.get("Explicit region"), ';'))
+  {
+    const std::string item = Utilities::trim(raw);
+    if (item.empty())
+      continue;
+    std::vector<double> v;
+    for (const std::string &x : Utilities::split_string_list(item, ','))
+    {
+      char *end = nullptr;
+      const std::string t = Utilities::trim(x);
+      const double d = std::strtod(t.c_str(), &end);
+      AssertThrow(!t.empty() && *end == '\0' && std::isfinite(d),
+                  ExcMessage("Model/Decomposition/Explicit region: '" + t +
+                             "' in the box '" + item + "' is not a number"));
+      v.push_back(d);
+    }
+    AssertThrow(v.size() == 2 || v.size() == 6,
+                ExcMessage("Model/Decomposition/Explicit region: the box '" + item +
+                           "' has " + std::to_string(v.size()) +
+                           " values, expected 2 (x_min, x_max) or 6 (x_min, x_max, "
+                           "y_min, y_max, z_min, z_max)"));
+    std::array<double, 6> box{{v[0],
+                               v[1],
+                               -std::numeric_limits<double>::infinity(),
+                               std::numeric_limits<double>::infinity(),
+                               -std::numeric_limits<double>::infinity(),
+                               std::numeric_limits<double>::infinity()}};
+    if (v.size() == 6)
+      std::copy(v.begin(), v.end(), box.begin());
+    for (unsigned int d = 0; d < 3; ++d)
+      AssertThrow(box[2 * d] <= box[2 * d + 1],
+                  ExcMessage("Model/Decomposition/Explicit region: the box '" + item +
+                             "' has a minimum above its maximum"));
+    boxes.push_back(box);
+  }
+  for (const std::string &m :
+       Utilities::split_string_list(prm.get("Explicit members"), ','))
+    if (!Utilities::trim(m).empty())
+      members.push_back(Utilities::trim(m));
+}
+
+std::vector<unsigned char>
+Model::cell_parts(const DecompositionParameters &parameters) const
+{
+  const std::vector<Point<3>> centres = cell_centres();
+  std::vector<unsigned char> result(centres.size(), 1);
+  for (unsigned int c = 0; c < centres.size(); ++c)
+    for (const auto &box : parameters.boxes)
+    {
+      bool inside = true;
+      for (unsigned int d = 0; d < 3; ++d)
+        inside = inside && centres[c][d] >= box[2 * d] && centres[c][d] <= box[2 * d + 1];
+      if (inside)
+        result[c] = 0;
+    }
+  if (!parameters.members.empty())
+  {
+    const std::vector<std::string> names = cell_members();
+    AssertThrow(!names.empty(),
+                ExcMessage("Model/Decomposition/Explicit members: this model has no "
+                           "members (only frames do); use the Explicit region."));
+    for (const auto &m : parameters.members)
+    {
+      bool found = false;
+      for (unsigned int c = 0; c < names.size(); ++c)
+        if (names[c] == m)
+        {
+          result[c] = 0;
+          found = true;
+        }
+      AssertThrow(found,
+                  ExcMessage("Model/Decomposition/Explicit members: no member named '" +
+                             m + "'"));
+    }
+  }
+  return result;
+}
+
+void Model::select_part(const std::vector<unsigned char> &cell_parts, const int part)
+{
+  parts = cell_parts;
+  selected_part = parts.empty() ? -1 : part;
+  Assert(part >= -1 && part <= 1, ExcInternalError());
+}
+
+bool Model::owns_node(const std::vector<unsigned int> &cells) const
+{
+  if (selected_part < 0)
+    return true;
+  bool touches_explicit = false;
+  for (const unsigned int c : cells)
+    touches_explicit = touches_explicit || parts[c] == 0;
+  return touches_explicit == (selected_part == 0);
+}
+
+Vector<float> Model::subdomain_field() const
+{
+  Vector<float> f(parts.size());
+  for (unsigned int c = 0; c < parts.size(); ++c)
+    f[c] = parts[c];
+  return f;
+}
+
 void declare_model_parameters(ParameterHandler &prm)
 {
   prm.enter_subsection("Model");
@@ -119,6 +251,9 @@ void declare_model_parameters(ParameterHandler &prm)
   prm.leave_subsection();
   prm.enter_subsection("Frame");
   Frame::Parameters::declare_parameters(prm);
+  prm.leave_subsection();
+  prm.enter_subsection("Decomposition");
+  DecompositionParameters::declare_parameters(prm);
   prm.leave_subsection();
   prm.leave_subsection();
   CommonModelParameters::declare_parameters(prm);

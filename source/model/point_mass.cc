@@ -96,3 +96,11 @@ std::string PointMass::description() const
   return s.str();
 }
 } // namespace hati
+
+namespace hati
+{
+std::vector<Point<3>> PointMass::cell_centres() const
+{
+  return {}; // a rigid body has no cells: it cannot be decomposed
+}
+} // namespace hati

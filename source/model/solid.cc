@@ -68,13 +68,16 @@ void Solid::build(const CommonModelParameters &common, DiscreteSystem &system)
   const double L = parameters.length, b = parameters.width, h = parameters.height;
   const unsigned int na = parameters.n_elements_across;
   // colorized boundary ids: 0 x = 0, 1 x = L, 2/3 y = -+b/2, 4/5 z = -+h/2
-  GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                            {parameters.n_elements, na, na},
-                                            Point<3>(0., -b / 2, -h / 2),
-                                            Point<3>(L, b / 2, h / 2),
-                                            true);
-  dof_handler.reinit(triangulation);
-  dof_handler.distribute_dofs(fe);
+  if (triangulation.n_active_cells() == 0)
+  {
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              {parameters.n_elements, na, na},
+                                              Point<3>(0., -b / 2, -h / 2),
+                                              Point<3>(L, b / 2, h / 2),
+                                              true);
+    dof_handler.reinit(triangulation);
+    dof_handler.distribute_dofs(fe);
+  }
   const unsigned int n = dof_handler.n_dofs();
   system.reinit(n);
 
@@ -98,6 +101,8 @@ void Solid::build(const CommonModelParameters &common, DiscreteSystem &system)
   double omega2 = 0.;
   for (const auto &cell : dof_handler.active_cell_iterators())
   {
+    if (!cell_selected(cell->active_cell_index()))
+      continue;
     fe_values.reinit(cell);
     ke = 0.;
     mc = 0.;
@@ -173,8 +178,9 @@ void Solid::build(const CommonModelParameters &common, DiscreteSystem &system)
         system.influence[c][i] = system.fixed[i] ? 0. : 1.;
       }
 
-  // initial velocity along x on every node
-  std::vector<bool> seen(n, false);
+  // initial velocity along x on every node; the cells touching each node of
+  // the face x = L (the owner of its contact row)
+  std::vector<std::vector<unsigned int>> face_cells(n);
   Point<3> best_left(1e300, 1e300, 1e300), best_right(1e300, 1e300, 1e300);
   std::array<types::global_dof_index, 3> left{{0, 0, 0}}, right{{0, 0, 0}};
   for (const auto &cell : dof_handler.active_cell_iterators())
@@ -195,18 +201,20 @@ void Solid::build(const CommonModelParameters &common, DiscreteSystem &system)
         for (unsigned int c = 0; c < 3; ++c)
           right[c] = cell->vertex_dof_index(v, c);
       }
-      // one contact row per node of the face x = L: g = g0 - u_x
-      if (std::abs(x[0] - L) < 1e-12 * L && !seen[ix])
-      {
-        seen[ix] = true;
-        ContactRow wall;
-        wall.name = common.contact_name;
-        wall.dofs = {ix};
-        wall.coefficients = {-1.};
-        wall.initial_gap = common.initial_gap;
-        wall.restitution = common.restitution;
-        system.contacts.push_back(wall);
-      }
+      if (std::abs(x[0] - L) < 1e-12 * L)
+        face_cells[ix].push_back(cell->active_cell_index());
+    }
+  // one contact row per node of the face x = L: g = g0 - u_x
+  for (unsigned int ix = 0; ix < n; ++ix)
+    if (!face_cells[ix].empty() && owns_node(face_cells[ix]))
+    {
+      ContactRow wall;
+      wall.name = common.contact_name;
+      wall.dofs = {static_cast<types::global_dof_index>(ix)};
+      wall.coefficients = {-1.};
+      wall.initial_gap = common.initial_gap;
+      wall.restitution = common.restitution;
+      system.contacts.push_back(wall);
     }
   system.monitors.push_back(
       {"impact_end", {"x", "y", "z"}, {right[0], right[1], right[2]}});
@@ -227,9 +235,20 @@ void Solid::write_vtu(std::ostream &out,
                              std::vector<std::string>(3, f.first),
                              DataOut<3>::type_dof_data,
                              vector);
+  const Vector<float> subdomain = subdomain_field();
+  if (subdomain.size() > 0)
+    data_out.add_data_vector(subdomain, "subdomain", DataOut<3>::type_cell_data);
   data_out.build_patches();
   data_out.set_flags(DataOutBase::VtkFlags(time, cycle));
   data_out.write_vtu(out);
+}
+
+std::vector<Point<3>> Solid::cell_centres() const
+{
+  std::vector<Point<3>> centres(triangulation.n_active_cells());
+  for (const auto &cell : triangulation.active_cell_iterators())
+    centres[cell->active_cell_index()] = cell->center();
+  return centres;
 }
 
 std::string Solid::description() const

@@ -33,13 +33,13 @@ unsigned int padded_width(const unsigned int w)
  * the row loop is unrolled.
  */
 template <unsigned int W>
-void free_velocity_kernel(const unsigned int n,
-                          const unsigned int *__restrict col,
-                          const double *__restrict val,
-                          const double *__restrict u,
-                          const double *__restrict v,
-                          const double *__restrict a,
-                          double *__restrict v_new)
+void free_velocity_rows(const unsigned int n,
+                        const unsigned int *__restrict col,
+                        const double *__restrict val,
+                        const double *__restrict u,
+                        const double *__restrict v,
+                        const double *__restrict a,
+                        double *__restrict v_new)
 {
   for (unsigned int i = 0; i < n; ++i)
   {
@@ -50,20 +50,20 @@ void free_velocity_kernel(const unsigned int n,
   }
 }
 
-void free_velocity(const unsigned int width,
-                   const unsigned int n,
-                   const unsigned int *col,
-                   const double *val,
-                   const double *u,
-                   const double *v,
-                   const double *a,
-                   double *v_new)
+void free_velocity_kernel(const unsigned int width,
+                          const unsigned int n,
+                          const unsigned int *col,
+                          const double *val,
+                          const double *u,
+                          const double *v,
+                          const double *a,
+                          double *v_new)
 {
   switch (width)
   {
 #define HATI_KERNEL(W)                                                                   \
   case W:                                                                                \
-    return free_velocity_kernel<W>(n, col, val, u, v, a, v_new);
+    return free_velocity_rows<W>(n, col, val, u, v, a, v_new);
     HATI_KERNEL(0)
     HATI_KERNEL(2)
     HATI_KERNEL(3)
@@ -120,8 +120,13 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
         ExcMessage("CD-Lagrange needs a positive lumped mass on every free DoF."));
 
   dt_minv.reinit(n);
+  minv.reinit(n);
+  zero_force.reinit(n);
   for (unsigned int i = 0; i < n; ++i)
-    dt_minv[i] = system.fixed[i] ? 0. : dt / system.lumped_mass[i];
+  {
+    minv[i] = system.fixed[i] ? 0. : 1. / system.lumped_mass[i];
+    dt_minv[i] = dt * minv[i];
+  }
 
   // dt M^-1 K in padded rows of a fixed width (ELLPACK): rows of fixed DoFs
   // are empty, padding entries are zeros pointing at the row itself
@@ -231,24 +236,38 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
 
 void CDLagrange::step()
 {
+  predict();
+  free_velocity();
+  finish_step();
+}
+
+void CDLagrange::predict()
+{
   const unsigned int n = U.size();
   double *const u = U.data();
   const double *const v = V->data();
-  double *const v_new = V_prev->data(); // receives V_{n+3/2}, V_prev becomes V
-
   // (A1) U_{n+1} = U_n + dt V_{n+1/2}
   for (unsigned int i = 0; i < n; ++i)
     u[i] += dt * v[i];
-
-  t = (n_steps + 1) * dt;
   ++n_steps;
+  t = n_steps * dt;
+}
 
+void CDLagrange::free_velocity(const bool with_loads)
+{
   // (A2)-(A3) V_free = V_{n+1/2} + dt M^-1 (F_ext(t_{n+1}) - K U_{n+1}),
-  // with dt M^-1 folded into the stored operator and force
-  const double *const a = dt_minv_force.data();
-  free_velocity(row_width, n, column.data(), value.data(), u, v, a, v_new);
-  if (!dt_minv_load_shapes.empty())
-  {
+  // with dt M^-1 folded into the stored operator and force; V_prev receives
+  // V_free (it becomes V_{n+3/2} in finish_step())
+  const double *const a = with_loads ? dt_minv_force.data() : zero_force.data();
+  free_velocity_kernel(row_width,
+                       U.size(),
+                       column.data(),
+                       value.data(),
+                       U.data(),
+                       V->data(),
+                       a,
+                       V_prev->data());
+  if (with_loads)
     // work of the time-dependent loads, trapezoidal on the increment
     // (the constant part is F . (U - U_0), computed at output times)
     for (unsigned int l = 0; l < dt_minv_load_shapes.size(); ++l)
@@ -258,12 +277,46 @@ void CDLagrange::step()
       time_dependent_work += 0.5 * (s0 + s1) * dt * (load_shapes[l] * (*V));
       V_prev->add(s1, dt_minv_load_shapes[l]);
     }
-  }
+}
 
+void CDLagrange::add_force(const SparseRow &row, const double force)
+{
+  row.add_transpose(force, dt_minv, *V_prev);
+}
+
+void CDLagrange::finish_step(const bool with_contacts)
+{
   std::swap(V, V_prev); // V = V_free, V_prev = V_{n+1/2}
-
-  if (!system.contacts.empty())
+  if (with_contacts && !system.contacts.empty())
     apply_contacts();
+}
+
+void CDLagrange::save(Snapshot &s) const
+{
+  s.U = U;
+  s.V = *V;
+  s.V_prev = *V_prev;
+  s.t = t;
+  s.n_steps = n_steps;
+  s.gap = gap;
+  s.lambda = lambda;
+  s.is_active = is_active;
+  s.contact_work = contact_work;
+  s.time_dependent_work = time_dependent_work;
+}
+
+void CDLagrange::restore(const Snapshot &s)
+{
+  U = s.U;
+  *V = s.V;
+  *V_prev = s.V_prev;
+  t = s.t;
+  n_steps = s.n_steps;
+  gap = s.gap;
+  lambda = s.lambda;
+  is_active = s.is_active;
+  contact_work = s.contact_work;
+  time_dependent_work = s.time_dependent_work;
 }
 
 void CDLagrange::apply_contacts()
@@ -307,24 +360,15 @@ void CDLagrange::apply_contacts()
         }
 
     const unsigned int m = cluster.size();
-    FullMatrix<double> W(m, m);
+    std::vector<const ContactRow *> rows(m);
     Vector<double> q(m);
     for (unsigned int a = 0; a < m; ++a)
     {
-      const auto &ca = system.contacts[cluster[a]];
+      rows[a] = &system.contacts[cluster[a]];
       // q = L V_free + e L V_{n+1/2}
-      q[a] = ca.apply(v) + ca.restitution * ca.apply(*V_prev);
-      for (unsigned int b = 0; b < m; ++b)
-      {
-        const auto &cb = system.contacts[cluster[b]];
-        double w = 0.;
-        for (unsigned int i = 0; i < ca.dofs.size(); ++i)
-          for (unsigned int j = 0; j < cb.dofs.size(); ++j)
-            if (ca.dofs[i] == cb.dofs[j])
-              w += ca.coefficients[i] * cb.coefficients[j] * dt_minv[ca.dofs[i]] / dt;
-        W(a, b) = w;
-      }
+      q[a] = rows[a]->apply(v) + rows[a]->restitution * rows[a]->apply(*V_prev);
     }
+    const FullMatrix<double> W = delassus(rows, minv);
     const Vector<double> l = solve_lcp(W, q);
 
     // V_{n+3/2} = V_free + M^-1 L^T lambda  (A5); lambda is an impulse (A6)
@@ -332,8 +376,7 @@ void CDLagrange::apply_contacts()
     {
       const auto &c = system.contacts[cluster[a]];
       lambda[cluster[a]] = l[a];
-      for (unsigned int i = 0; i < c.dofs.size(); ++i)
-        v[c.dofs[i]] += dt_minv[c.dofs[i]] / dt * c.coefficients[i] * l[a];
+      c.add_transpose(l[a], minv, v);
     }
   }
 
@@ -363,6 +406,8 @@ Energies CDLagrange::energies() const
   du -= U0;
   e.external_work = force * du + time_dependent_work;
   e.contact_work = contact_work;
+  e.kinetic_explicit = e.kinetic;
+  e.internal_explicit = e.internal;
   return e;
 }
 } // namespace hati

@@ -212,22 +212,17 @@ void EventDriven::apply_impact(const std::vector<int> &roots)
     if (roots[k] != 0 || g[k] <= 0.)
       set.push_back(k);
   const unsigned int m = set.size();
-  FullMatrix<double> W(m, m);
+  std::vector<const ContactRow *> rows(m);
   Vector<double> q(m);
   for (unsigned int a = 0; a < m; ++a)
   {
-    const auto &ca = system.contacts[set[a]];
-    q[a] = (1. + ca.restitution) * ca.apply(V); // w = W lambda + (1 + e) L V-
-    for (unsigned int b = 0; b < m; ++b)
-    {
-      const auto &cb = system.contacts[set[b]];
-      for (unsigned int i = 0; i < ca.dofs.size(); ++i)
-        for (unsigned int j = 0; j < cb.dofs.size(); ++j)
-          if (ca.dofs[i] == cb.dofs[j] && !system.fixed[ca.dofs[i]])
-            W(a, b) +=
-                ca.coefficients[i] * cb.coefficients[j] / system.lumped_mass[ca.dofs[i]];
-    }
+    rows[a] = &system.contacts[set[a]];
+    q[a] = (1. + rows[a]->restitution) * rows[a]->apply(V); // w = W lambda + (1 + e) L V-
   }
+  Vector<double> inverse_mass(system.n_dofs());
+  for (unsigned int i = 0; i < inverse_mass.size(); ++i)
+    inverse_mass[i] = system.fixed[i] ? 0. : 1. / system.lumped_mass[i];
+  const FullMatrix<double> W = delassus(rows, inverse_mass);
   const Vector<double> l = solve_lcp(W, q);
   const Vector<double> v_before(V);
   for (unsigned int a = 0; a < m; ++a)
@@ -235,9 +230,7 @@ void EventDriven::apply_impact(const std::vector<int> &roots)
     const auto &c = system.contacts[set[a]];
     lambda[set[a]] = l[a];
     is_active[set[a]] = true;
-    for (unsigned int i = 0; i < c.dofs.size(); ++i)
-      if (!system.fixed[c.dofs[i]])
-        V[c.dofs[i]] += c.coefficients[i] * l[a] / system.lumped_mass[c.dofs[i]];
+    c.add_transpose(l[a], inverse_mass, V);
   }
   // work of the impulses: lambda . L (V- + V+) / 2
   for (unsigned int a = 0; a < m; ++a)

@@ -110,6 +110,12 @@ void NewmarkParameters::declare_parameters(ParameterHandler &prm)
                     Patterns::Double(0.),
                     "iterative: relative residual ||b - M_eff A|| <= tol ||b|| of "
                     "each step (-).");
+  prm.declare_entry("Mass",
+                    "consistent",
+                    Patterns::Selection("consistent|lumped"),
+                    "Mass matrix of the implicit scheme: the model's consistent mass "
+                    "(the lumped one for models without it) or the lumped (diagonal) "
+                    "mass of the explicit scheme.");
 }
 
 void NewmarkParameters::parse_parameters(ParameterHandler &prm)
@@ -118,6 +124,7 @@ void NewmarkParameters::parse_parameters(ParameterHandler &prm)
   gamma = prm.get_double("Gamma");
   linear_solver = prm.get("Linear solver");
   solver_tolerance = prm.get_double("Solver tolerance");
+  mass = prm.get("Mass");
   AssertThrow(gamma >= 0.5,
               ExcMessage("Newmark: Gamma must be >= 0.5 (got " + std::to_string(gamma) +
                          "): with Gamma < 1/2 the scheme has negative numerical "
@@ -180,12 +187,10 @@ void RayleighDamping::parse_parameters(ParameterHandler &prm)
 /** The Trilinos effective matrix with its Amesos_Klu factorisation or AMG. */
 struct Newmark::EffectiveSolver
 {
+  DirectSolver direct;
+  // iterative solver: the Trilinos matrix and its AMG preconditioner
   TrilinosWrappers::SparseMatrix matrix;
-  SolverControl direct_control;
-  std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
   TrilinosWrappers::PreconditionAMG amg;
-  // Epetra views for the direct solver
-  LinearAlgebra::distributed::Vector<double> x, b;
 };
 
 Newmark::Newmark(const DiscreteSystem &system,
@@ -195,7 +200,7 @@ Newmark::Newmark(const DiscreteSystem &system,
     : system(system), dt(DT), beta(parameters.beta), gamma(parameters.gamma),
       a0(damping.a0), a1(damping.a1), direct(parameters.linear_solver == "direct"),
       tolerance(parameters.solver_tolerance),
-      use_consistent_mass(system.has_consistent_mass()),
+      use_consistent_mass(system.has_consistent_mass() && parameters.mass != "lumped"),
       solver(std::make_unique<EffectiveSolver>())
 {
   AssertThrow(dt > 0., ExcMessage("Newmark: the time step must be > 0 (s)."));
@@ -242,29 +247,15 @@ Newmark::Newmark(const DiscreteSystem &system,
                            "is singular."));
 
   const auto start = Clock::now();
-  solver->matrix.reinit(m_eff, 0.);
   if (direct)
-  {
-    solver->direct = std::make_unique<TrilinosWrappers::SolverDirect>(
-        solver->direct_control,
-        TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
-    try
-    {
-      solver->direct->initialize(solver->matrix);
-    }
-    catch (const std::exception &)
-    {
-      AssertThrow(false,
-                  ExcMessage("Newmark: the factorisation (Amesos_Klu) of the "
-                             "effective matrix M + gamma DT C + beta DT^2 K found a "
-                             "zero pivot: the model is singular (check the masses and "
-                             "the supports)."));
-    }
-    solver->x.reinit(n);
-    solver->b.reinit(n);
-  }
+    solver->direct.factorize(
+        m_eff,
+        "Newmark: the factorisation (Amesos_Klu) of the effective matrix M + gamma DT "
+        "C + beta DT^2 K found a zero pivot: the model is singular (check the masses "
+        "and the supports).");
   else
   {
+    solver->matrix.reinit(m_eff, 0.);
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic = true;
     data.smoother_sweeps = 2;
@@ -291,6 +282,7 @@ Newmark::Newmark(const DiscreteSystem &system,
                   &rhs,
                   &tmp,
                   &F_new,
+                  &A_new,
                   &CV_new,
                   &damping_work})
     v->reinit(n);
@@ -360,29 +352,7 @@ void Newmark::set_initial_state(const Vector<double> &U0, const Vector<double> &
   if (rhs.linfty_norm() == 0.)
     A = 0.;
   else if (use_consistent_mass)
-  {
-    SparseMatrix<double> mass(system.consistent_mass.get_sparsity_pattern());
-    mass.copy_from(system.consistent_mass);
-    decouple_fixed_dofs(mass, system.fixed);
-    TrilinosWrappers::SparseMatrix trilinos_mass;
-    trilinos_mass.reinit(mass, 0.);
-    SolverControl control;
-    TrilinosWrappers::SolverDirect mass_solver(
-        control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
-    try
-    {
-      mass_solver.solve(trilinos_mass, A, rhs);
-    }
-    catch (const std::exception &)
-    {
-      AssertThrow(false,
-                  ExcMessage("Newmark: the consistent mass matrix is singular "
-                             "(Amesos_Klu found a zero pivot): the initial "
-                             "acceleration M A_0 = F_0 - C V_0 - K U_0 cannot be "
-                             "computed (a free DoF without mass?)."));
-    }
-    check_finite(A, "Newmark: initial acceleration");
-  }
+    solve_with_mass(A, rhs);
   else
     // a free DoF without lumped mass has no inertia: its equation is static
     // and it gets A_0 = 0
@@ -394,7 +364,41 @@ void Newmark::set_initial_state(const Vector<double> &U0, const Vector<double> &
   dissipated = 0.;
 }
 
+void Newmark::solve_with_mass(Vector<double> &x, const Vector<double> &b) const
+{
+  if (!use_consistent_mass)
+  {
+    for (unsigned int i = 0; i < x.size(); ++i)
+      x[i] = (system.fixed[i] || !(system.lumped_mass[i] > 0.))
+                 ? 0.
+                 : b[i] / system.lumped_mass[i];
+    return;
+  }
+  if (!mass_solver)
+  {
+    SparseMatrix<double> mass(system.consistent_mass.get_sparsity_pattern());
+    mass.copy_from(system.consistent_mass);
+    decouple_fixed_dofs(mass, system.fixed);
+    mass_solver = std::make_unique<DirectSolver>();
+    mass_solver->factorize(
+        mass,
+        "Newmark: the consistent mass matrix is singular (Amesos_Klu "
+        "found a zero pivot): the initial acceleration M A_0 = F_0 - "
+        "C V_0 - K U_0 cannot be computed (a free DoF without mass?).");
+  }
+  Vector<double> rhs_free(b);
+  zero_fixed(rhs_free);
+  mass_solver->solve(x, rhs_free);
+  check_finite(x, "Newmark: initial acceleration");
+}
+
 void Newmark::step()
+{
+  free_step();
+  finish_step();
+}
+
+void Newmark::free_step()
 {
   // (N1) predictors
   U_star = U;
@@ -408,27 +412,43 @@ void Newmark::step()
   rhs = F_new;
   stiffness_vmult(CV_new, U_star);
   rhs -= CV_new;
-  const bool damped = (a0 != 0. || a1 != 0.);
-  if (damped)
+  if (a0 != 0. || a1 != 0.)
   {
     damping_vmult(CV_new, V_star);
     rhs -= CV_new;
   }
   zero_fixed(rhs);
-  // A_n is the initial guess of CG; A becomes A_{n+1}
-  solve_with_effective_matrix(A, rhs);
-  zero_fixed(A);
+  // A_n is the initial guess of CG; A_new becomes A_{n+1}
+  A_new = A;
+  solve_with_effective_matrix(A_new, rhs);
+  zero_fixed(A_new);
 
   // (N3) correctors: U_star becomes U_{n+1}, V_star V_{n+1}
-  U_star.add(beta * dt * dt, A);
-  V_star.add(gamma * dt, A);
+  U_star.add(beta * dt * dt, A_new);
+  V_star.add(gamma * dt, A_new);
+}
 
+void Newmark::add_link(const Vector<double> &force)
+{
+  // (G4) A_link = M_eff^-1 force
+  rhs = force;
+  zero_fixed(rhs);
+  tmp = 0.;
+  solve_with_effective_matrix(tmp, rhs);
+  zero_fixed(tmp);
+  A_new += tmp;
+  U_star.add(beta * dt * dt, tmp);
+  V_star.add(gamma * dt, tmp);
+}
+
+void Newmark::finish_step()
+{
   // energies: dU = U_{n+1} - U_n
   tmp = U_star;
   tmp -= U;
   F += F_new;
   external_work += 0.5 * (tmp * F);
-  if (damped)
+  if (a0 != 0. || a1 != 0.)
   {
     damping_vmult(CV_new, V_star);
     CV += CV_new;
@@ -438,9 +458,10 @@ void Newmark::step()
 
   U.swap(U_star);
   V.swap(V_star);
+  A.swap(A_new);
   F.swap(F_new);
   ++n_steps;
-  t = t_new;
+  t = n_steps * dt;
 }
 
 Energies Newmark::energies() const
@@ -452,6 +473,8 @@ Energies Newmark::energies() const
   e.internal = 0.5 * (U * tmp);
   e.external_work = external_work;
   e.dissipated = dissipated;
+  e.kinetic_implicit = e.kinetic;
+  e.internal_implicit = e.internal;
   return e;
 }
 
@@ -459,11 +482,7 @@ void Newmark::solve_with_effective_matrix(Vector<double> &x,
                                           const Vector<double> &b) const
 {
   if (direct)
-  {
-    std::copy(b.begin(), b.end(), solver->b.begin());
-    solver->direct->solve(solver->x, solver->b);
-    std::copy(solver->x.begin(), solver->x.end(), x.begin());
-  }
+    solver->direct.solve(x, b);
   else
   {
     const double norm_b = b.l2_norm();

@@ -15,6 +15,8 @@ namespace hati
  * (algorithms.md 6.2). Contact row `L = [-1]` on the end node x = L, gap
  * `g = g0 - u(L)`. Monitor points `impact_end` (x = L) and `free_end`
  * (x = 0). Gravity acts along x with the x component of the gravity vector.
+ * The end x = 0 may be fixed and the end x = L loaded by a constant force
+ * (the coupling's reference bar); the wall may be left out.
  */
 class Bar : public Model
 {
@@ -29,6 +31,12 @@ public:
     double density = 7800.;      ///< kg/m^3
     unsigned int n_elements = 100;
     double initial_velocity = 1.; ///< m/s, towards the wall (+x)
+    /** "free" or "fixed": the end x = 0. */
+    std::string left_end = "free";
+    /** Constant force at x = L along +x from t = 0 (N). */
+    double end_force = 0.;
+    /** Whether the rigid wall at x = L + g0 (the contact) exists. */
+    bool wall = true;
   };
 
   explicit Bar(const Parameters &parameters);
@@ -38,6 +46,7 @@ public:
                  const double time,
                  const unsigned int cycle) const override;
   std::string description() const override;
+  std::vector<Point<3>> cell_centres() const override;
 
 private:
   const Parameters parameters;

@@ -7,6 +7,8 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <hati/contact/sparse_rows.h>
+
 #include <array>
 #include <functional>
 #include <string>
@@ -23,22 +25,11 @@ using namespace dealii;
  * `g(U) = initial_gap + sum_i coefficients[i] * U[dofs[i]]`; the impulse
  * `lambda >= 0` acts on the structure as `L^T lambda`.
  */
-struct ContactRow
+struct ContactRow : SparseRow
 {
   std::string name;
-  std::vector<types::global_dof_index> dofs;
-  std::vector<double> coefficients;
   double initial_gap = 0.;
   double restitution = 0.;
-
-  /** L_k . x for a global vector x. */
-  double apply(const Vector<double> &x) const
-  {
-    double s = 0.;
-    for (unsigned int i = 0; i < dofs.size(); ++i)
-      s += coefficients[i] * x[dofs[i]];
-    return s;
-  }
 };
 
 /**

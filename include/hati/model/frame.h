@@ -94,6 +94,8 @@ public:
                  const double time,
                  const unsigned int cycle) const override;
   std::string description() const override;
+  std::vector<Point<3>> cell_centres() const override;
+  std::vector<std::string> cell_members() const override;
   std::string section_forces_header() const override;
   void write_section_forces(std::ostream &out,
                             const double time,
@@ -121,6 +123,12 @@ private:
   std::array<double, 12> cell_section_forces(const CellInfo &cell,
                                              const Vector<double> &U) const;
 
+  /**
+   * The mesh (every member its own vertices), the DoFs, the cells' data and
+   * the joint and support constraints: once, at the first build().
+   */
+  void create_mesh();
+
   const Parameters parameters;
   Triangulation<1, 3> triangulation;
   FESystem<1, 3> fe;
@@ -128,6 +136,10 @@ private:
   AffineConstraints<double> constraints;
   std::vector<CellInfo> cells;
   std::map<std::string, std::array<types::global_dof_index, 6>> node_dofs;
+  /** Active cells touching each named node (owner of the node's data). */
+  std::map<std::string, std::vector<unsigned int>> node_cells;
+  /** The six DoFs of every vertex. */
+  std::vector<std::array<types::global_dof_index, 6>> vertex_dofs;
   double total_mass = 0.;
   /** Gravity (m/s^2): the members' weight is a span load for section forces. */
   Tensor<1, 3> gravity;

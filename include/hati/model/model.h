@@ -44,6 +44,26 @@ struct CommonModelParameters
   double initial_gap = 0.;
 };
 
+/**
+ * The `Model/Decomposition` subsection: which cells form the explicit
+ * subdomain of the coupled method (HATI); the rest is implicit. Ignored by
+ * single-domain methods.
+ */
+struct DecompositionParameters
+{
+  /** Declare the entries in the current subsection (the caller enters it). */
+  static void declare_parameters(ParameterHandler &prm);
+  void parse_parameters(ParameterHandler &prm);
+
+  /**
+   * Boxes `x_min, x_max, y_min, y_max, z_min, z_max` (m); a box given with
+   * two values bounds x only. A cell whose centre lies in a box is explicit.
+   */
+  std::vector<std::array<double, 6>> boxes;
+  /** Frame members (by name) that are explicit. */
+  std::vector<std::string> members;
+};
+
 /** A DoF vector to write, with its name. */
 using NamedVector = std::pair<std::string, const Vector<double> *>;
 
@@ -69,6 +89,33 @@ public:
                          const double time,
                          const unsigned int cycle) const = 0;
 
+  /**
+   * Centre of every active cell (m, padded with zeros below three
+   * dimensions), in the order of the active cell index; call after build().
+   */
+  virtual std::vector<Point<3>> cell_centres() const = 0;
+
+  /** Name of the member of every active cell (frames); empty otherwise. */
+  virtual std::vector<std::string> cell_members() const { return {}; }
+
+  /**
+   * The subdomain of every active cell, 0 explicit or 1 implicit, from the
+   * boxes and member names of @p parameters (call after build()). Throws if
+   * a member name is unknown.
+   */
+  std::vector<unsigned char> cell_parts(const DecompositionParameters &parameters) const;
+
+  /**
+   * Restrict the next calls of build() to the cells whose entry in
+   * @p parts equals @p part (0 explicit, 1 implicit), with the data of the
+   * nodes (point masses, nodal loads and forces, spring supports, contacts)
+   * on the explicit side when the node touches an explicit cell and on the
+   * implicit side otherwise; @p parts is also written as the cell field
+   * `subdomain` of the VTU files. @p part = -1 (or an empty @p parts) builds
+   * the whole model.
+   */
+  void select_part(const std::vector<unsigned char> &parts, const int part);
+
   /** One line describing the model for the terminal and summary.json. */
   virtual std::string description() const = 0;
 
@@ -84,6 +131,27 @@ public:
                                     const Vector<double> & /*U*/) const
   {
   }
+
+protected:
+  /** Whether build() assembles the active cell @p index (select_part()). */
+  bool cell_selected(const unsigned int index) const
+  {
+    return selected_part < 0 || parts[index] == selected_part;
+  }
+
+  /**
+   * Whether build() adds the data of a node whose cells are @p cells (active
+   * cell indices): explicit side if one of them is explicit.
+   */
+  bool owns_node(const std::vector<unsigned int> &cells) const;
+
+  /** The `subdomain` cell field for VTU (empty: not decomposed). */
+  Vector<float> subdomain_field() const;
+
+  /** 0/1 per active cell, as given to select_part() (may be empty). */
+  std::vector<unsigned char> parts;
+  /** -1: the whole model; 0 explicit, 1 implicit. */
+  int selected_part = -1;
 };
 
 /** Declare the `Model` subsection with the parameters of every model type. */

@@ -29,6 +29,7 @@ public:
                  const double time,
                  const unsigned int cycle) const override;
   std::string description() const override;
+  std::vector<Point<3>> cell_centres() const override;
 
 private:
   const Parameters parameters;

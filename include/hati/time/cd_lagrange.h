@@ -4,32 +4,15 @@
 #include <deal.II/lac/vector.h>
 
 #include <hati/model/discrete_system.h>
+#include <hati/time/energies.h>
+
+#include <array>
 
 #include <vector>
 
 namespace hati
 {
 using namespace dealii;
-
-/**
- * Discrete energies of the CD-Lagrange scheme at time t_n (J). The kinetic
- * energy is the staggered one, `1/2 V_{n-1/2} . M V_{n+1/2}`, so that
- * `kinetic + internal - external_work - contact_work` is constant to
- * round-off (doc/theory.md, eq. E1).
- */
-struct Energies
-{
-  double kinetic = 0.;
-  double internal = 0.;
-  double external_work = 0.;
-  double contact_work = 0.;
-  /** Energy dissipated by damping (J), >= 0. */
-  double dissipated = 0.;
-  double total() const
-  {
-    return kinetic + internal + dissipated - external_work - contact_work;
-  }
-};
 
 /**
  * The CD-Lagrange explicit event-capturing contact/impact integrator
@@ -58,8 +41,70 @@ public:
    */
   CDLagrange(const DiscreteSystem &system, const double dt, const double safety_factor);
 
-  /** One step t_n -> t_{n+1}: (A1)-(A6). */
+  /**
+   * One step t_n -> t_{n+1}: (A1)-(A6), i.e. predict(), free_velocity(),
+   * finish_step().
+   */
   void step();
+
+  /**
+   * @name Phases of a step, for the coupling (G2): predict(), then
+   * free_velocity(), then any add_force(), then finish_step().
+   */
+  /** @{ */
+  /** (A1) `U_{n+1} = U_n + dt V_{n+1/2}`; the time advances to t_{n+1}. */
+  void predict();
+
+  /**
+   * (A2)-(A3) the free velocity `V_free = V_{n+1/2} + dt M^-1 (F_ext(t_{n+1})
+   * - K U_{n+1})`; without the external loads if @p with_loads is false
+   * (the homogeneous response of the coupling's unit ramp, G3').
+   */
+  void free_velocity(const bool with_loads = true);
+
+  /**
+   * Add a force @p force (N) along the row @p row acting over the whole step:
+   * `V_free += dt M^-1 row^T force` (the interface force `C_E^T Lambda_j`
+   * of G2).
+   */
+  void add_force(const SparseRow &row, const double force);
+
+  /**
+   * The velocity at the integer time t_{n+1} of DoF @p i,
+   * `(V_{n+1/2} + V_free) / 2 = V_{n+1/2} + dt/2 M^-1 F_{n+1}` (G2), valid
+   * between free_velocity() and finish_step().
+   */
+  double integer_velocity(const unsigned int i) const
+  {
+    return 0.5 * ((*V)[i] + (*V_prev)[i]);
+  }
+
+  /** V_free becomes V_{n+3/2}; then the contacts (A4)-(A6) if @p with_contacts. */
+  void finish_step(const bool with_contacts = true);
+  /** @} */
+
+  /**
+   * The vectors of the linear state between two steps, {U_n, V_{n+1/2},
+   * V_{n-1/2}}, for the coupling: it adds the response to the interface
+   * multiplier by superposition (G3') and reads and sets the state.
+   */
+  std::array<Vector<double> *, 3> linear_state() { return {{&U, V, V_prev}}; }
+
+  /** Everything a step changes, to redo steps (coupling with contacts). */
+  struct Snapshot
+  {
+    Vector<double> U, V, V_prev;
+    double t = 0.;
+    unsigned long n_steps = 0;
+    std::vector<double> gap, lambda;
+    std::vector<bool> is_active;
+    double contact_work = 0., time_dependent_work = 0.;
+  };
+  void save(Snapshot &snapshot) const;
+  void restore(const Snapshot &snapshot);
+
+  /** Diagonal of M^-1 (1/kg), zero on fixed DoFs. */
+  const Vector<double> &inverse_mass() const { return minv; }
 
   /** Critical time step 2 / omega_max (s); +infinity without stiffness. */
   double critical_time_step() const { return dt_crit; }
@@ -104,6 +149,9 @@ private:
   std::vector<Vector<double>> load_shapes;
   Vector<double> dt_minv_force;
   Vector<double> dt_minv;
+  Vector<double> minv;
+  /** Zero vector: the load term of a homogeneous step. */
+  Vector<double> zero_force;
   std::vector<Vector<double>> dt_minv_load_shapes;
 
   Vector<double> U;

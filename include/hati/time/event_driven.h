@@ -5,7 +5,7 @@
 
 #include <hati/model/discrete_system.h>
 #include <hati/parameters/run_parameters.h>
-#include <hati/time/cd_lagrange.h>
+#include <hati/time/energies.h>
 
 #include <functional>
 #include <memory>

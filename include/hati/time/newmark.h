@@ -4,9 +4,11 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/vector.h>
 
+#include <hati/linear_algebra/direct_solver.h>
 #include <hati/model/discrete_system.h>
-#include <hati/time/cd_lagrange.h>
+#include <hati/time/energies.h>
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -46,6 +48,8 @@ struct NewmarkParameters
   std::string linear_solver = "direct";
   /** Relative residual of the iterative solver, ||r|| <= tol ||b|| (-). */
   double solver_tolerance = 1e-10;
+  /** "consistent" (the model's consistent mass, if it has one) or "lumped". */
+  std::string mass = "consistent";
 };
 
 /**
@@ -127,8 +131,50 @@ public:
    */
   void set_initial_state(const Vector<double> &U0, const Vector<double> &V0);
 
-  /** One step t_n -> t_{n+1}: predictors (N1), solve (N2), correctors (N3). */
+  /**
+   * One step t_n -> t_{n+1}: predictors (N1), solve (N2), correctors (N3);
+   * free_step() then finish_step().
+   */
   void step();
+
+  /**
+   * @name Phases of a step, for the coupling (G1, G4): free_step(), then
+   * any add_link(), then finish_step().
+   */
+  /** @{ */
+  /**
+   * (N1)-(N3) without interface force: the free state at t_{n+1}
+   * (new_displacement(), new_velocity(), new_acceleration()).
+   */
+  void free_step();
+
+  /**
+   * (G4) the link correction of a force @p force (N) acting at t_{n+1}:
+   * `A_link = M_eff^-1 force`, `A += A_link`, `V += gamma DT A_link`,
+   * `U += beta DT^2 A_link` on the new state. The work of that force is
+   * the coupling's (interface_work), not external_work.
+   */
+  void add_link(const Vector<double> &force);
+
+  /** The new state becomes U_{n+1}, V_{n+1}, A_{n+1}; energies are booked. */
+  void finish_step();
+
+  /** The state at t_{n+1} being built between free_step() and finish_step(). */
+  const Vector<double> &new_displacement() const { return U_star; }
+  const Vector<double> &new_velocity() const { return V_star; }
+  /** @} */
+
+  /**
+   * The state vectors {U_n, V_n, A_n} between two steps, for the coupling
+   * (it reads and sets the state of the macro-step map).
+   */
+  std::array<Vector<double> *, 3> linear_state() { return {{&U, &V, &A}}; }
+
+  /**
+   * Solve `M x = b` with the mass of the integrator (consistent or lumped;
+   * rows of fixed DoFs give x = 0): initial accelerations.
+   */
+  void solve_with_mass(Vector<double> &x, const Vector<double> &b) const;
 
   /** Current time t_n (s). */
   double time() const { return t; }
@@ -190,9 +236,11 @@ private:
   double t = 0.;
   unsigned long n_steps = 0;
 
-  /** Trilinos M_eff and its factorisation or preconditioner (newmark.cc). */
+  /** M_eff and its factorisation or preconditioner (newmark.cc). */
   struct EffectiveSolver;
   std::unique_ptr<EffectiveSolver> solver;
+  /** The consistent mass with fixed DoFs decoupled, factorised on first use. */
+  mutable std::unique_ptr<DirectSolver> mass_solver;
 
   double factorization_seconds = 0.;
 
@@ -200,7 +248,7 @@ private:
   Vector<double> F;  // F_ext(t_n)
   Vector<double> CV; // C V_n (kept for the dissipated energy)
   // work vectors
-  mutable Vector<double> U_star, V_star, rhs, tmp, F_new, CV_new, damping_work;
+  mutable Vector<double> U_star, V_star, A_new, rhs, tmp, F_new, CV_new, damping_work;
 
   double external_work = 0.;
   double dissipated = 0.;

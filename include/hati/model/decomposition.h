@@ -1,0 +1,67 @@
+#ifndef hati_model_decomposition_h
+#define hati_model_decomposition_h
+
+#include <hati/model/discrete_system.h>
+#include <hati/model/model.h>
+
+#include <array>
+#include <vector>
+
+namespace hati
+{
+/**
+ * One subdomain of a decomposed model: its own DiscreteSystem, numbered
+ * from 0, holding the free DoFs of the model that its cells touch, and the
+ * model's (global) index of each of them.
+ */
+struct Subdomain
+{
+  DiscreteSystem system;
+  std::vector<types::global_dof_index> global_dofs;
+};
+
+/**
+ * A model split into an explicit (0) and an implicit (1) subdomain for the
+ * coupling (doc/architecture.md, "Subdomains"). The subdomains are DoF
+ * subsets of the model's one DoFHandler, each assembled from its own cells
+ * only (Model::select_part()), so an interface DoF, a free DoF touched by
+ * cells of both sides, has a copy on each side holding that side's share of
+ * mass and stiffness. Interface pair k is the DoF interface[0][k] of the
+ * explicit subdomain and interface[1][k] of the implicit one: the signed
+ * Boolean operators are `C_E = +1` and `C_I = -1` on these DoFs.
+ */
+struct Decomposition
+{
+  std::array<Subdomain, 2> parts;
+  std::array<std::vector<unsigned int>, 2> interface;
+  /** Subdomain (0, 1) of every active cell of the model. */
+  std::vector<unsigned char> cell_parts;
+
+  /** Number of interface DoF pairs. */
+  unsigned int n_interface_dofs() const { return interface[0].size(); }
+};
+
+/**
+ * Decompose @p model (already built) along @p parameters: assemble each
+ * subdomain (the model rebuilds its matrices from the selected cells), keep
+ * the free DoFs it touches, find the interface DoFs. Throws one-line errors
+ * for an empty subdomain, no interface, or a contact in the implicit
+ * subdomain. The model keeps the cell parts for its VTU `subdomain` field.
+ */
+void decompose(Model &model,
+               const CommonModelParameters &common,
+               const DecompositionParameters &parameters,
+               Decomposition &decomposition);
+
+/**
+ * The restriction of @p full to the DoFs @p dofs (sorted, free in @p full):
+ * matrices, masses, loads, influence vectors, initial state, contacts (all of
+ * whose DoFs must be kept: throws naming the contact otherwise). Monitors are
+ * not copied (outputs use the model's numbering).
+ */
+void extract_subsystem(const DiscreteSystem &full,
+                       const std::vector<types::global_dof_index> &dofs,
+                       DiscreteSystem &sub);
+} // namespace hati
+
+#endif

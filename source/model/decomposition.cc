@@ -1,0 +1,167 @@
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <hati/model/decomposition.h>
+
+#include <algorithm>
+
+namespace hati
+{
+void extract_subsystem(const DiscreteSystem &full,
+                       const std::vector<types::global_dof_index> &dofs,
+                       DiscreteSystem &sub)
+{
+  const unsigned int N = full.n_dofs(), n = dofs.size();
+  std::vector<int> local(N, -1);
+  for (unsigned int i = 0; i < n; ++i)
+    local[dofs[i]] = i;
+  sub.reinit(n);
+  auto restrict = [&](const Vector<double> &x, Vector<double> &y)
+  {
+    if (x.size() != N)
+      return;
+    y.reinit(n);
+    for (unsigned int i = 0; i < n; ++i)
+      y[i] = x[dofs[i]];
+  };
+  restrict(full.lumped_mass, sub.lumped_mass);
+  restrict(full.constant_force, sub.constant_force);
+  restrict(full.initial_displacement, sub.initial_displacement);
+  restrict(full.initial_velocity, sub.initial_velocity);
+  for (unsigned int d = 0; d < 3; ++d)
+  {
+    restrict(full.influence[d], sub.influence[d]);
+    restrict(full.mass_influence[d], sub.mass_influence[d]);
+  }
+  sub.gravity = full.gravity;
+  sub.omega_max_bound = full.omega_max_bound;
+  for (const auto &load : full.time_dependent_loads)
+  {
+    TimeDependentLoad l = load;
+    restrict(load.shape, l.shape);
+    sub.time_dependent_loads.push_back(l);
+  }
+
+  if (full.has_stiffness())
+  {
+    DynamicSparsityPattern dsp(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      dsp.add(i, i);
+      for (auto it = full.stiffness_pattern.begin(dofs[i]);
+           it != full.stiffness_pattern.end(dofs[i]);
+           ++it)
+        if (local[it->column()] >= 0)
+          dsp.add(i, local[it->column()]);
+    }
+    sub.stiffness_pattern.copy_from(dsp);
+    sub.stiffness.reinit(sub.stiffness_pattern);
+    if (full.has_consistent_mass())
+      sub.consistent_mass.reinit(sub.stiffness_pattern);
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      for (auto it = full.stiffness.begin(dofs[i]); it != full.stiffness.end(dofs[i]);
+           ++it)
+        if (local[it->column()] >= 0 && it->value() != 0.)
+          sub.stiffness.set(i, local[it->column()], it->value());
+      if (full.has_consistent_mass())
+        for (auto it = full.consistent_mass.begin(dofs[i]);
+             it != full.consistent_mass.end(dofs[i]);
+             ++it)
+          if (local[it->column()] >= 0 && it->value() != 0.)
+            sub.consistent_mass.set(i, local[it->column()], it->value());
+    }
+  }
+
+  // contacts: every DoF of a row must be kept, or be a fixed one (zero
+  // displacement: its coefficient is dropped)
+  for (const auto &c : full.contacts)
+  {
+    ContactRow row = c;
+    row.dofs.clear();
+    row.coefficients.clear();
+    for (unsigned int i = 0; i < c.dofs.size(); ++i)
+    {
+      AssertThrow(local[c.dofs[i]] >= 0 || full.fixed[c.dofs[i]],
+                  ExcMessage("Model/Decomposition: the contact '" + c.name +
+                             "' lies in the implicit subdomain; contacts need the "
+                             "explicit CD-Lagrange integrator: put its node in the "
+                             "Explicit region or the Explicit members"));
+      if (local[c.dofs[i]] >= 0)
+      {
+        row.dofs.push_back(local[c.dofs[i]]);
+        row.coefficients.push_back(c.coefficients[i]);
+      }
+    }
+    sub.contacts.push_back(row);
+  }
+}
+
+void decompose(Model &model,
+               const CommonModelParameters &common,
+               const DecompositionParameters &parameters,
+               Decomposition &decomposition)
+{
+  decomposition.cell_parts = model.cell_parts(parameters);
+  const auto &cell_parts = decomposition.cell_parts;
+  const auto n_explicit = std::count(cell_parts.begin(), cell_parts.end(), 0);
+  AssertThrow(n_explicit > 0,
+              ExcMessage("Model/Decomposition: the explicit subdomain is empty: no "
+                         "cell centre lies in the Explicit region and no Explicit "
+                         "members are given"));
+  AssertThrow(n_explicit < static_cast<long>(cell_parts.size()),
+              ExcMessage("Model/Decomposition: the implicit subdomain is empty: every "
+                         "cell is in the Explicit region or the Explicit members (use "
+                         "Method = CD-Lagrange for a fully explicit run)"));
+
+  for (unsigned int p = 0; p < 2; ++p)
+  {
+    model.select_part(cell_parts, p);
+    DiscreteSystem full;
+    model.build(common, full);
+    full.fill_default_mass_influence();
+    // the free DoFs the part's cells touch: a mass or a stiffness entry
+    auto &part = decomposition.parts[p];
+    part.global_dofs.clear();
+    for (unsigned int i = 0; i < full.n_dofs(); ++i)
+    {
+      if (full.fixed[i])
+        continue;
+      bool touched = full.lumped_mass[i] > 0.;
+      if (!touched && full.has_stiffness())
+        for (auto it = full.stiffness.begin(i); it != full.stiffness.end(i) && !touched;
+             ++it)
+          touched = it->value() != 0.;
+      if (touched)
+        part.global_dofs.push_back(i);
+    }
+    extract_subsystem(full, part.global_dofs, part.system);
+    AssertThrow(p == 0 || part.system.contacts.empty(),
+                ExcMessage("Model/Decomposition: the contact '" +
+                           part.system.contacts[0].name +
+                           "' lies in the implicit subdomain; contacts need the explicit "
+                           "CD-Lagrange integrator: put its node in the Explicit region "
+                           "or the Explicit members"));
+  }
+  model.select_part(cell_parts, -1);
+
+  auto &interface = decomposition.interface;
+  interface[0].clear();
+  interface[1].clear();
+  const auto &e = decomposition.parts[0].global_dofs,
+             &i = decomposition.parts[1].global_dofs;
+  for (unsigned int a = 0, b = 0; a < e.size() && b < i.size();)
+    if (e[a] < i[b])
+      ++a;
+    else if (i[b] < e[a])
+      ++b;
+    else
+    {
+      interface[0].push_back(a++);
+      interface[1].push_back(b++);
+    }
+  AssertThrow(!interface[0].empty(),
+              ExcMessage("Model/Decomposition: the explicit and implicit subdomains "
+                         "share no node (no interface): the coupling needs them to "
+                         "touch"));
+}
+} // namespace hati
