@@ -1,6 +1,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
 
 #include <hati/analysis/modal_analysis.h>
 #include <hati/analysis/static_analysis.h>
@@ -100,6 +101,9 @@ void Simulation::declare_parameters(ParameterHandler &prm)
   prm.enter_subsection("Damping");
   RayleighDamping::declare_parameters(prm);
   prm.leave_subsection();
+  prm.enter_subsection("HATI");
+  HATIParameters::declare_parameters(prm);
+  prm.leave_subsection();
   prm.leave_subsection();
   OutputParameters::declare_parameters(prm);
 }
@@ -115,6 +119,14 @@ Simulation::Simulation(ParameterHandler &prm, const std::string &parameter_file)
   prm.leave_subsection();
   prm.enter_subsection("Damping");
   damping.parse_parameters(prm);
+  prm.leave_subsection();
+  prm.enter_subsection("HATI");
+  hati_parameters.parse_parameters(prm);
+  prm.leave_subsection();
+  prm.leave_subsection();
+  prm.enter_subsection("Model");
+  prm.enter_subsection("Decomposition");
+  decomposition_parameters.parse_parameters(prm);
   prm.leave_subsection();
   prm.leave_subsection();
   output_parameters.parse_parameters(prm);
@@ -172,6 +184,13 @@ void Simulation::run()
       { return (*record)(t) + (step ? step(t) : 0.); };
     }
   add_base_excitation(system, acceleration);
+  if (time_parameters.method == "HATI" && analysis_parameters.type == "transient")
+  {
+    decomposition = std::make_unique<Decomposition>();
+    decompose(*model, common_parameters, decomposition_parameters, *decomposition);
+    for (auto &part : decomposition->parts)
+      add_base_excitation(part.system, acceleration);
+  }
   if (analysis_parameters.type == "static")
     return run_static();
   if (analysis_parameters.type == "modal")
@@ -185,7 +204,8 @@ void Simulation::run()
     system.initial_velocity = 0.;
   }
   AssertThrow(
-      time_parameters.method == "Newmark" || (damping.a0 == 0. && damping.a1 == 0.),
+      time_parameters.method == "Newmark" || time_parameters.method == "HATI" ||
+          (damping.a0 == 0. && damping.a1 == 0.),
       ExcMessage("Time integration/Damping: Rayleigh damping is applied by the Newmark "
                  "integrator only; remove it for Method = " +
                  time_parameters.method + "."));
@@ -193,6 +213,8 @@ void Simulation::run()
     run_event_driven();
   else if (time_parameters.method == "Newmark")
     run_newmark();
+  else if (time_parameters.method == "HATI")
+    run_hati();
   else
     run_cd_lagrange();
 }
@@ -223,6 +245,11 @@ OutputState output_state(const CDLagrange &integrator)
 OutputState output_state(const EventDriven &integrator)
 {
   return contact_state(integrator, 0.); // impulses act at an instant
+}
+
+OutputState output_state(const HATICoupling &integrator)
+{
+  return contact_state(integrator, integrator.micro_time_step());
 }
 
 OutputState output_state(const Newmark &integrator)
@@ -266,6 +293,12 @@ void Simulation::run_transient(Integrator &integrator,
     if (every_vtu > 0 && (step % every_vtu == 0 || step == n_steps))
       writer.write_vtu(s);
   };
+
+  if constexpr (std::is_same_v<Integrator, HATICoupling>)
+    if (!integrator.gaps().empty())
+      integrator.after_micro_step =
+          [&writer](const std::vector<double> &gaps, const std::vector<double> &impulses)
+      { writer.track_contacts(gaps, impulses); };
 
   Progress progress(output_parameters.progress_interval, T);
   write(0);
@@ -311,6 +344,28 @@ void Simulation::run_transient(Integrator &integrator,
        {"max_penetration", json_number(writer.max_penetration())},
        {"energy_balance_error", json_number(drift)},
        {"energy_balance_relative", json_number(scale > 0. ? drift / scale : 0.)}});
+  if constexpr (std::is_same_v<Integrator, HATICoupling>)
+  {
+    summary.insert(
+        summary.end(),
+        {{"time_step_ratio", std::to_string(integrator.time_step_ratio())},
+         {"micro_dt", json_number(integrator.micro_time_step())},
+         {"n_dofs_explicit", std::to_string(decomposition->parts[0].system.n_dofs())},
+         {"n_dofs_implicit", std::to_string(decomposition->parts[1].system.n_dofs())},
+         {"n_interface_dofs", std::to_string(integrator.n_interface_dofs())},
+         {"wall_time_explicit", json_number(integrator.explicit_seconds())},
+         {"wall_time_implicit", json_number(integrator.implicit_seconds())},
+         {"wall_time_interface", json_number(integrator.interface_seconds())},
+         {"wall_time_setup", json_number(integrator.setup_seconds())},
+         {"interface_velocity_jump", json_number(integrator.interface_velocity_jump())},
+         {"redone_macro_steps", std::to_string(integrator.redone_macro_steps())},
+         {"interface_iterations", std::to_string(integrator.interface_iterations())}});
+    std::cout << "  HATI wall time: explicit " << integrator.explicit_seconds()
+              << " s, implicit " << integrator.implicit_seconds() << " s, interface "
+              << integrator.interface_seconds() << " s, set-up "
+              << integrator.setup_seconds() << " s; interface velocity jump "
+              << integrator.interface_velocity_jump() << " m/s" << std::endl;
+  }
   write_summary(output_directory + "/summary.json", summary);
   std::cout << "  done: " << n_steps << " steps in " << wall << " s; ";
   if (!system.contacts.empty())
@@ -357,6 +412,47 @@ void Simulation::run_newmark()
                 timer,
                 {{"method", json_string("Newmark")},
                  {"factorization_time", json_number(integrator.factorization_time())}});
+}
+
+void Simulation::run_hati()
+{
+  TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
+  timer.enter_subsection("setup (factorisation, ramp response)");
+  std::unique_ptr<HATICoupling> coupling;
+  try
+  {
+    coupling = std::make_unique<HATICoupling>(*decomposition,
+                                              system.n_dofs(),
+                                              time_parameters.time_step,
+                                              time_parameters.safety_factor,
+                                              hati_parameters,
+                                              newmark_parameters,
+                                              damping);
+  }
+  catch (const ExceptionBase &e)
+  {
+    // name the subdomain in the message (e.g. the critical step refusal)
+    std::ostringstream info;
+    e.print_info(info);
+    std::string text = info.str();
+    const std::string prefix = "Additional information:";
+    if (text.find(prefix) != std::string::npos)
+      text = text.substr(text.find(prefix) + prefix.size());
+    AssertThrow(false, ExcMessage("HATI (explicit subdomain): " + Utilities::trim(text)));
+  }
+  timer.leave_subsection();
+  std::cout << "  HATI (G3'): explicit subdomain "
+            << decomposition->parts[0].system.n_dofs()
+            << " DoFs (CD-Lagrange, dt = " << coupling->micro_time_step()
+            << " s, dt_crit = " << coupling->critical_time_step()
+            << " s), implicit subdomain " << decomposition->parts[1].system.n_dofs()
+            << " DoFs (Newmark, DT = " << coupling->time_step()
+            << " s, m = " << coupling->time_step_ratio() << "), "
+            << coupling->n_interface_dofs() << " interface DoFs" << std::endl;
+  run_transient(*coupling,
+                timer,
+                {{"method", json_string("HATI")},
+                 {"dt_crit", json_number(coupling->critical_time_step())}});
 }
 
 void Simulation::run_event_driven()

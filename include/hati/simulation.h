@@ -5,9 +5,11 @@
 
 #include <deal.II/base/timer.h>
 
+#include <hati/model/decomposition.h>
 #include <hati/model/discrete_system.h>
 #include <hati/model/model.h>
 #include <hati/parameters/run_parameters.h>
+#include <hati/time/hati_coupling.h>
 #include <hati/time/newmark.h>
 
 #include <memory>
@@ -44,6 +46,7 @@ private:
   void run_cd_lagrange();
   void run_event_driven();
   void run_newmark();
+  void run_hati();
   void run_static();
   void run_modal();
   /** The time loop with outputs, for CDLagrange and Newmark. */
@@ -56,10 +59,15 @@ private:
   TimeIntegrationParameters time_parameters;
   NewmarkParameters newmark_parameters;
   RayleighDamping damping;
+  HATIParameters hati_parameters;
+  DecompositionParameters decomposition_parameters;
   OutputParameters output_parameters;
   CommonModelParameters common_parameters;
   std::unique_ptr<Model> model;
+  /** The whole model's system: single-domain methods and every output. */
   DiscreteSystem system;
+  /** The explicit and implicit subdomains of Method = HATI. */
+  std::unique_ptr<Decomposition> decomposition;
   std::string output_directory;
   std::string parameter_file;
 };

@@ -58,8 +58,9 @@ OutputWriter::OutputWriter(const std::string &directory,
   group_pushing.assign(contact_names.size(), false);
 
   energy = open(dir + "/energy.csv");
-  energy << "time,kinetic,internal,external_work,contact_work,dissipated,total,balance_"
-            "drift\n";
+  energy << "time,kinetic,internal,external_work,contact_work,dissipated,interface_work,"
+            "total,balance_drift,kinetic_explicit,kinetic_implicit,internal_explicit,"
+            "internal_implicit\n";
 
   const std::string header = model.section_forces_header();
   if (!header.empty())
@@ -137,9 +138,12 @@ void OutputWriter::write_energy(const double time, const Energies &e)
                            std::abs(e.kinetic),
                            std::abs(e.internal),
                            std::abs(e.external_work),
-                           std::abs(e.contact_work)});
+                           std::abs(e.contact_work),
+                           std::abs(e.interface_work)});
   energy << time << ',' << e.kinetic << ',' << e.internal << ',' << e.external_work << ','
-         << e.contact_work << ',' << e.dissipated << ',' << total << ',' << last_drift
+         << e.contact_work << ',' << e.dissipated << ',' << e.interface_work << ','
+         << total << ',' << last_drift << ',' << e.kinetic_explicit << ','
+         << e.kinetic_implicit << ',' << e.internal_explicit << ',' << e.internal_implicit
          << '\n';
 }
 

@@ -8,13 +8,16 @@ void TimeIntegrationParameters::declare_parameters(ParameterHandler &prm)
   prm.declare_entry(
       "Method",
       "CD-Lagrange",
-      Patterns::Selection("CD-Lagrange|event-driven|Newmark"),
+      Patterns::Selection("CD-Lagrange|event-driven|Newmark|HATI"),
       "CD-Lagrange: explicit event-capturing central differences with "
       "velocity-level Lagrange multipliers (algorithms.md A1-A6). "
       "event-driven: CVODE between impacts, impacts located by root "
       "finding, Newton's restitution law at each event (reference for small "
       "rigid systems). Newmark: implicit average acceleration (algorithms.md N1-N3, "
-      "Trilinos), for models without contacts; Time step is then DT.");
+      "Trilinos), for models without contacts; Time step is then DT. HATI: "
+      "heterogeneous asynchronous coupling (algorithms.md G1-G4, G3'): CD-Lagrange "
+      "on the Model/Decomposition explicit subdomain with the Time step dt, Newmark "
+      "on the rest with DT = m dt (Time integration/HATI/Time step ratio).");
   prm.declare_entry(
       "Time step",
       "1e-3",

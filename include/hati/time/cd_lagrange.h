@@ -103,6 +103,15 @@ public:
   void save(Snapshot &snapshot) const;
   void restore(const Snapshot &snapshot);
 
+  /**
+   * The time-dependent load shapes as this integrator applies them (N per
+   * unit amplitude; acceleration loads with the lumped mass).
+   */
+  const std::vector<Vector<double>> &applied_load_shapes() const { return load_shapes; }
+
+  /** Add @p work (J) to the external work (the coupling's superposition). */
+  void add_external_work(const double work) { time_dependent_work += work; }
+
   /** Diagonal of M^-1 (1/kg), zero on fixed DoFs. */
   const Vector<double> &inverse_mass() const { return minv; }
 

@@ -1,0 +1,229 @@
+#ifndef hati_time_hati_coupling_h
+#define hati_time_hati_coupling_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <hati/contact/sparse_rows.h>
+#include <hati/model/decomposition.h>
+#include <hati/time/cd_lagrange.h>
+#include <hati/time/energies.h>
+#include <hati/time/newmark.h>
+
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hati
+{
+using namespace dealii;
+
+/** The `Time integration/HATI` subsection. */
+struct HATIParameters
+{
+  /** Declare "Time step ratio" and "Coupling method" (the caller enters the subsection).
+   */
+  static void declare_parameters(ParameterHandler &prm);
+  /** Read them; throws a one-line error for a ratio of 0. */
+  void parse_parameters(ParameterHandler &prm);
+
+  /** m = DT / dt (-), integer >= 1. */
+  unsigned int time_step_ratio = 1;
+  /**
+   * "macro-linear": (G3'), continuity at the macro-step ends with the
+   * multiplier linear in time over the macro step (the stable variant).
+   */
+  std::string coupling_method = "macro-linear";
+};
+
+/**
+ * Columns of a sparse matrix (the explicit response to a unit interface
+ * ramp, G3'): only the entries the response reaches are stored.
+ */
+class SparseColumns
+{
+public:
+  /** Append the column @p v (its nonzero entries). */
+  void add_column(const Vector<double> &v);
+  /** y += sum_k column_k x_k. */
+  void add_multiply(Vector<double> &y, const Vector<double> &x) const;
+  /** Number of stored entries. */
+  std::size_t n_entries() const { return row.size(); }
+  /** Rows with an entry in any column. */
+  std::vector<unsigned int> rows() const;
+
+private:
+  std::vector<std::size_t> start{0};
+  std::vector<unsigned int> row;
+  std::vector<double> value;
+};
+
+/**
+ * The heterogeneous asynchronous time integrator (paper (4)-(10),
+ * Gravouil-Combescure; doc/theory.md section 9): the explicit subdomain
+ * integrated by CD-Lagrange with the micro step dt, the implicit one by
+ * Newmark with the macro step DT = m dt, glued at the interface DoFs by
+ * Lagrange multipliers Lambda (interface forces, acting as `C_E^T Lambda`
+ * on the explicit side and `C_I^T Lambda` on the implicit side, with
+ * `C_E = +1`, `C_I = -1` on the interface DoF pairs).
+ *
+ * One macro step [t_n, t_{n+m}] (step()) with the interface problem (G3'),
+ * the multiplier linear in time over the macro step:
+ * - (G1) the free implicit step: Newmark over DT without interface force;
+ * - (G2) m explicit micro steps under the known part `(1 - j/m) Lambda_n`
+ *   of `Lambda_j = (1 - j/m) Lambda_n + (j/m) Lambda_{n+m}`, with the
+ *   contacts;
+ * - (G3') one interface solve
+ *   `(C_E V_ramp + gamma DT C_I M_eff^-1 C_I^T) Lambda_{n+m}
+ *    = -(C_E V^E_a + C_I V^I_free)`, velocity continuity at t_{n+m} with
+ *   the integer-time explicit velocity; the matrix is assembled and
+ *   factorised once; `V_ramp` is the explicit response to a unit ramp
+ *   `(j/m) e_k` from rest, computed once with the explicit integrator's own
+ *   code path, and the part `Lambda_{n+m}` is added to the explicit state
+ *   by superposition;
+ * - (G4) the implicit link `A_link = M_eff^-1 C_I^T Lambda_{n+m}`.
+ *
+ * The interface work (G5) is each side's own discrete work of the
+ * interface forces, so that Energies::total() is constant to round-off.
+ * Contacts within reach of the ramp response (its nonzero DoFs) that are
+ * active in a macro step make the coupling redo the micro steps with the
+ * now-known multipliers and correct Lambda_{n+m} until the macro-end
+ * continuity holds (interface_iterations()).
+ */
+class HATICoupling
+{
+public:
+  /**
+   * @param decomposition the two subdomains and the interface; it must
+   *        outlive the coupling.
+   * @param n_global_dofs number of DoFs of the whole model (outputs).
+   * @param dt micro step (s), checked against the explicit dt_crit.
+   */
+  HATICoupling(const Decomposition &decomposition,
+               const unsigned int n_global_dofs,
+               const double dt,
+               const double safety_factor,
+               const HATIParameters &parameters,
+               const NewmarkParameters &newmark_parameters,
+               const RayleighDamping &damping);
+
+  /** One macro step t_n -> t_{n+m}: (G1), (G2), (G3'), (G4). */
+  void step();
+
+  /** Time at the end of the last macro step (s). */
+  double time() const { return implicit.time(); }
+  /** Macro step DT = m dt (s). */
+  double time_step() const { return implicit.time_step(); }
+  /** Micro step dt (s). */
+  double micro_time_step() const { return explicit_integrator.time_step(); }
+  unsigned int time_step_ratio() const { return m; }
+  /** Critical step of the explicit subdomain (s). */
+  double critical_time_step() const { return explicit_integrator.critical_time_step(); }
+
+  /** Displacement of the whole model (global numbering; interface: explicit copy). */
+  const Vector<double> &displacement() const;
+  /** Velocity of the whole model (explicit part at the half step, as CD-Lagrange). */
+  const Vector<double> &velocity() const;
+
+  /** Contact gaps, normal velocities, impulses, active flags (explicit subdomain). */
+  const std::vector<double> &gaps() const { return explicit_integrator.gaps(); }
+  std::vector<double> normal_velocities() const
+  {
+    return explicit_integrator.normal_velocities();
+  }
+  const std::vector<double> &impulses() const { return explicit_integrator.impulses(); }
+  const std::vector<bool> &active() const { return explicit_integrator.active(); }
+
+  /** Energies of both subdomains and the interface work (G5). */
+  Energies energies() const;
+
+  /**
+   * @name The state of the macro-step map, for the stability test:
+   * [U_E, dt V_E, U_I, DT V_I, DT^2 A_I, Lambda_n] (scaled so that every
+   * block has the units of a displacement, the multipliers in N).
+   */
+  /** @{ */
+  unsigned int state_size() const;
+  void get_state(Vector<double> &x) const;
+  void set_state(const Vector<double> &x);
+  /** @} */
+
+  /** Largest |C_E V_E + C_I V_I| at a macro-step end so far (m/s). */
+  double interface_velocity_jump() const { return max_jump; }
+  /** Macro steps whose micro steps were redone because of contacts. */
+  unsigned long redone_macro_steps() const { return n_redone; }
+  /** Largest number of interface corrections in one macro step. */
+  unsigned int interface_iterations() const { return max_iterations; }
+
+  /** Wall time of the explicit micro steps, the implicit steps, the interface (s). */
+  double explicit_seconds() const { return seconds[0]; }
+  double implicit_seconds() const { return seconds[1]; }
+  double interface_seconds() const { return seconds[2]; }
+  /** Set-up: factorisation, ramp response, interface matrix (s). */
+  double setup_seconds() const { return setup; }
+
+  const CDLagrange &explicit_part() const { return explicit_integrator; }
+  const Newmark &implicit_part() const { return implicit; }
+  unsigned int n_interface_dofs() const { return rows_E.size(); }
+
+  /**
+   * Called after every micro step with the contact gaps and impulses of the
+   * explicit subdomain (contact statistics); for redone macro steps, with
+   * those of the final pass only.
+   */
+  std::function<void(const std::vector<double> &, const std::vector<double> &)>
+      after_micro_step;
+
+private:
+  /** The m micro steps from the current explicit state with Lambda_j given by
+   *  the known part and @p lambda_end (the full multiplier when redoing). */
+  void micro_steps(const Vector<double> &lambda_end, const bool full_multiplier);
+  /** The explicit response to unit ramps, the interface matrix (set-up). */
+  void precompute_ramp_response();
+  /** Lambda_0 from the acceleration continuity at t = 0. */
+  void initial_multiplier();
+
+  const Decomposition &decomposition;
+  const unsigned int m;
+  CDLagrange explicit_integrator;
+  Newmark implicit;
+  const double gamma;
+  std::vector<SparseRow> rows_E, rows_I;
+
+  Vector<double> lambda_n, lambda_m;
+
+  // (G3') interface matrix, factorised, and its two parts
+  LAPACKFullMatrix<double> H;
+  FullMatrix<double> H_E_matrix, H_I;
+  // ramp response: the explicit linear state at j = m per unit column
+  std::vector<SparseColumns> ramp_state;
+  // interface displacement increments of the ramp: sum_j and weighted sum
+  FullMatrix<double> ramp_increment_sum, ramp_increment_weighted;
+  // per time-dependent load and micro step j: shape . dU_ramp,j (columns)
+  std::vector<std::vector<Vector<double>>> ramp_load_work;
+  // contacts within reach of the ramp response (indices)
+  std::vector<unsigned int> reach_contacts;
+  bool contacts_in_reach = false;
+  // per macro step with contacts in reach: whether one was active, and the
+  // contact state of every micro step (replayed to after_micro_step)
+  bool record_contacts = false, contact_was_active = false;
+  std::vector<std::pair<std::vector<double>, std::vector<double>>> contact_record;
+
+  // per macro step: C_E V integer velocity at j = m, interface increments
+  Vector<double> v_end, increment_sum, increment_weighted;
+
+  double interface_work = 0.;
+  double max_jump = 0.;
+  unsigned long n_redone = 0;
+  unsigned int max_iterations = 0;
+  double seconds[3] = {0., 0., 0.};
+  double setup = 0.;
+  Vector<double> link_force;
+  mutable Vector<double> global_U, global_V;
+  CDLagrange::Snapshot snapshot;
+};
+} // namespace hati
+
+#endif

@@ -1,0 +1,522 @@
+#include <deal.II/base/exceptions.h>
+
+#include <hati/time/hati_coupling.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace hati
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(const Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/** The row applied to the integer-time velocity of CD-Lagrange (G2). */
+double integer_velocity(const SparseRow &row, const CDLagrange &integrator)
+{
+  double s = 0.;
+  for (unsigned int i = 0; i < row.dofs.size(); ++i)
+    s += row.coefficients[i] * integrator.integer_velocity(row.dofs[i]);
+  return s;
+}
+
+/** b = sum_k rows[k]^T x[k] (an interface force as a DoF vector). */
+void add_transpose(const std::vector<SparseRow> &rows,
+                   const Vector<double> &x,
+                   Vector<double> &b)
+{
+  for (unsigned int k = 0; k < rows.size(); ++k)
+    for (unsigned int i = 0; i < rows[k].dofs.size(); ++i)
+      b[rows[k].dofs[i]] += rows[k].coefficients[i] * x[k];
+}
+} // namespace
+
+void HATIParameters::declare_parameters(ParameterHandler &prm)
+{
+  prm.declare_entry("Time step ratio",
+                    "10",
+                    Patterns::Integer(0),
+                    "m = DT / dt (-), an integer >= 1: the implicit subdomain steps "
+                    "with DT = m dt, the explicit one with Time integration/Time step "
+                    "dt.");
+  prm.declare_entry(
+      "Coupling method",
+      "macro-linear",
+      Patterns::Selection("macro-linear"),
+      "Interface problem of the coupling. macro-linear (G3'): velocity continuity at "
+      "the macro-step ends, the interface force linear in time over the macro step; "
+      "stable (spectral radius of a macro step <= 1) and energy-consistent.");
+}
+
+void HATIParameters::parse_parameters(ParameterHandler &prm)
+{
+  const long ratio = prm.get_integer("Time step ratio");
+  AssertThrow(ratio >= 1,
+              ExcMessage("Time integration/HATI/Time step ratio must be an integer >= 1 "
+                         "(DT = m dt), got " +
+                         std::to_string(ratio)));
+  time_step_ratio = ratio;
+  coupling_method = prm.get("Coupling method");
+}
+
+void SparseColumns::add_column(const Vector<double> &v)
+{
+  for (unsigned int i = 0; i < v.size(); ++i)
+    if (v[i] != 0.)
+    {
+      row.push_back(i);
+      value.push_back(v[i]);
+    }
+  start.push_back(row.size());
+}
+
+void SparseColumns::add_multiply(Vector<double> &y, const Vector<double> &x) const
+{
+  for (unsigned int k = 0; k + 1 < start.size(); ++k)
+    if (x[k] != 0.)
+      for (std::size_t e = start[k]; e < start[k + 1]; ++e)
+        y[row[e]] += value[e] * x[k];
+}
+
+std::vector<unsigned int> SparseColumns::rows() const
+{
+  std::vector<unsigned int> r(row);
+  std::sort(r.begin(), r.end());
+  r.erase(std::unique(r.begin(), r.end()), r.end());
+  return r;
+}
+
+HATICoupling::HATICoupling(const Decomposition &decomposition,
+                           const unsigned int n_global_dofs,
+                           const double dt,
+                           const double safety_factor,
+                           const HATIParameters &parameters,
+                           const NewmarkParameters &newmark_parameters,
+                           const RayleighDamping &damping)
+    : decomposition(decomposition), m(parameters.time_step_ratio),
+      explicit_integrator(decomposition.parts[0].system, dt, safety_factor),
+      implicit(decomposition.parts[1].system, m * dt, newmark_parameters, damping),
+      gamma(newmark_parameters.gamma)
+{
+  const auto start = Clock::now();
+  AssertThrow(
+      m >= 1,
+      ExcMessage("Time integration/HATI/Time step ratio must be an integer >= 1"));
+  const unsigned int n_gamma = decomposition.n_interface_dofs();
+  for (unsigned int k = 0; k < n_gamma; ++k)
+  {
+    SparseRow e, i;
+    e.dofs = {decomposition.interface[0][k]};
+    e.coefficients = {1.};
+    i.dofs = {decomposition.interface[1][k]};
+    i.coefficients = {-1.};
+    rows_E.push_back(e);
+    rows_I.push_back(i);
+  }
+  for (auto *v : {&lambda_n, &lambda_m, &v_end, &increment_sum, &increment_weighted})
+    v->reinit(n_gamma);
+  link_force.reinit(decomposition.parts[1].system.n_dofs());
+  global_U.reinit(n_global_dofs);
+  global_V.reinit(n_global_dofs);
+
+  precompute_ramp_response();
+  initial_multiplier();
+  setup = seconds_since(start);
+}
+
+void HATICoupling::precompute_ramp_response()
+{
+  const DiscreteSystem &system = decomposition.parts[0].system;
+  const unsigned int n_gamma = rows_E.size();
+  const double dt = explicit_integrator.time_step(), DT = m * dt;
+
+  // the explicit integrator's own code path, from rest, without loads
+  CDLagrange ramp(system, dt, 1.);
+  const auto &shapes = ramp.applied_load_shapes();
+  ramp_state.assign(ramp.linear_state().size(), SparseColumns());
+  ramp_increment_sum.reinit(n_gamma, n_gamma);
+  ramp_increment_weighted.reinit(n_gamma, n_gamma);
+  ramp_load_work.assign(shapes.size(),
+                        std::vector<Vector<double>>(m, Vector<double>(n_gamma)));
+  FullMatrix<double> H_E(n_gamma, n_gamma);
+  for (unsigned int l = 0; l < n_gamma; ++l)
+  {
+    for (auto *v : ramp.linear_state())
+      *v = 0.;
+    for (unsigned int j = 1; j <= m; ++j)
+    {
+      const Vector<double> &V = *ramp.linear_state()[1]; // V_{j-1/2}
+      for (unsigned int s = 0; s < shapes.size(); ++s)
+        ramp_load_work[s][j - 1][l] = dt * (shapes[s] * V);
+      for (unsigned int k = 0; k < n_gamma; ++k)
+      {
+        const double du = dt * rows_E[k].apply(V);
+        ramp_increment_sum(k, l) += du;
+        ramp_increment_weighted(k, l) += (2. * j - 1.) / (2. * m) * du;
+      }
+      ramp.predict();
+      ramp.free_velocity(false);
+      ramp.add_force(rows_E[l], double(j) / m); // unit ramp (j/m) e_l
+      if (j == m)
+        for (unsigned int k = 0; k < n_gamma; ++k)
+          H_E(k, l) = integer_velocity(rows_E[k], ramp);
+      ramp.finish_step(false);
+    }
+    const auto state = ramp.linear_state();
+    for (unsigned int s = 0; s < state.size(); ++s)
+      ramp_state[s].add_column(*state[s]);
+  }
+
+  // contacts within reach of the ramp response
+  const auto reach_u = ramp_state[0].rows(), reach_v = ramp_state[1].rows();
+  std::vector<bool> reach(system.n_dofs(), false);
+  for (const auto i : reach_u)
+    reach[i] = true;
+  for (const auto i : reach_v)
+    reach[i] = true;
+  reach_contacts.clear();
+  for (unsigned int c = 0; c < system.contacts.size(); ++c)
+    for (const auto d : system.contacts[c].dofs)
+      if (reach[d])
+      {
+        reach_contacts.push_back(c);
+        break;
+      }
+  contacts_in_reach = !reach_contacts.empty();
+
+  // (G3') H = C_E V_ramp + gamma DT C_I M_eff^-1 C_I^T, factorised once
+  const unsigned int n_I = decomposition.parts[1].system.n_dofs();
+  Vector<double> b(n_I), x(n_I);
+  H_I.reinit(n_gamma, n_gamma);
+  for (unsigned int l = 0; l < n_gamma; ++l)
+  {
+    b = 0.;
+    x = 0.;
+    Vector<double> e(n_gamma);
+    e[l] = 1.;
+    add_transpose(rows_I, e, b);
+    implicit.solve_with_effective_matrix(x, b);
+    for (unsigned int k = 0; k < n_gamma; ++k)
+      H_I(k, l) = gamma * DT * rows_I[k].apply(x);
+  }
+  H.reinit(n_gamma, n_gamma);
+  for (unsigned int k = 0; k < n_gamma; ++k)
+    for (unsigned int l = 0; l < n_gamma; ++l)
+      H(k, l) = H_E(k, l) + H_I(k, l);
+  H_E_matrix = H_E;
+  H.compute_lu_factorization();
+}
+
+void HATICoupling::initial_multiplier()
+{
+  // acceleration continuity at t = 0:
+  // (C_E M_E^-1 C_E^T + C_I M_I^-1 C_I^T) Lambda_0 = -(C_E a_E + C_I a_I)
+  const unsigned int n_gamma = rows_E.size();
+  const double dt = explicit_integrator.time_step();
+  auto state_E = explicit_integrator.linear_state();
+  auto state_I = implicit.linear_state();
+  Vector<double> rhs(n_gamma);
+  for (unsigned int k = 0; k < n_gamma; ++k)
+    rhs[k] = -((rows_E[k].apply(*state_E[1]) - rows_E[k].apply(*state_E[2])) / dt +
+               rows_I[k].apply(*state_I[2]));
+  if (rhs.linfty_norm() == 0.)
+    return;
+  const unsigned int n_I = decomposition.parts[1].system.n_dofs();
+  const Vector<double> &minv = explicit_integrator.inverse_mass();
+  std::vector<Vector<double>> columns(n_gamma, Vector<double>(n_I));
+  LAPACKFullMatrix<double> B(n_gamma, n_gamma);
+  Vector<double> b(n_I), e(n_gamma);
+  for (unsigned int l = 0; l < n_gamma; ++l)
+  {
+    b = 0.;
+    e = 0.;
+    e[l] = 1.;
+    add_transpose(rows_I, e, b);
+    implicit.solve_with_mass(columns[l], b);
+    for (unsigned int k = 0; k < n_gamma; ++k)
+      B(k, l) = rows_I[k].apply(columns[l]) +
+                (k == l ? minv[rows_E[k].dofs[0]] * rows_E[k].coefficients[0] *
+                              rows_E[k].coefficients[0]
+                        : 0.);
+  }
+  B.compute_lu_factorization();
+  B.solve(rhs);
+  lambda_n = rhs;
+  for (unsigned int k = 0; k < n_gamma; ++k)
+  {
+    rows_E[k].add_transpose(0.5 * dt * lambda_n[k], minv, *state_E[1]);
+    rows_E[k].add_transpose(-0.5 * dt * lambda_n[k], minv, *state_E[2]);
+    state_I[2]->add(lambda_n[k], columns[k]);
+  }
+}
+
+void HATICoupling::micro_steps(const Vector<double> &lambda_end,
+                               const bool full_multiplier)
+{
+  const unsigned int n_gamma = rows_E.size();
+  const double dt = explicit_integrator.time_step();
+  increment_sum = 0.;
+  increment_weighted = 0.;
+  for (unsigned int j = 1; j <= m; ++j)
+  {
+    // interface displacement increment of this step, dt C_E V_{j-1/2}
+    const Vector<double> &V = *explicit_integrator.linear_state()[1];
+    for (unsigned int k = 0; k < n_gamma; ++k)
+    {
+      const double du = dt * rows_E[k].apply(V);
+      increment_sum[k] += du;
+      increment_weighted[k] += (2. * j - 1.) / (2. * m) * du;
+    }
+    // (G2) Lambda_j = (1 - j/m) Lambda_n [+ (j/m) Lambda_{n+m}] over the step
+    explicit_integrator.predict();
+    explicit_integrator.free_velocity();
+    const double w0 = 1. - double(j) / m, w1 = double(j) / m;
+    for (unsigned int k = 0; k < n_gamma; ++k)
+    {
+      const double lambda =
+          w0 * lambda_n[k] + (full_multiplier ? w1 * lambda_end[k] : 0.);
+      if (lambda != 0.)
+        explicit_integrator.add_force(rows_E[k], lambda);
+    }
+    if (j == m)
+      for (unsigned int k = 0; k < n_gamma; ++k)
+        v_end[k] = integer_velocity(rows_E[k], explicit_integrator);
+    explicit_integrator.finish_step();
+    if (record_contacts)
+    {
+      contact_record.emplace_back(explicit_integrator.gaps(),
+                                  explicit_integrator.impulses());
+      for (const unsigned int c : reach_contacts)
+        contact_was_active = contact_was_active || explicit_integrator.active()[c];
+    }
+    else if (after_micro_step)
+      after_micro_step(explicit_integrator.gaps(), explicit_integrator.impulses());
+  }
+}
+
+void HATICoupling::step()
+{
+  const unsigned int n_gamma = rows_E.size();
+  const double dt = explicit_integrator.time_step(), DT = m * dt;
+  const DiscreteSystem &system_E = decomposition.parts[0].system;
+
+  // (G1) the free implicit step
+  auto start = Clock::now();
+  implicit.free_step();
+  seconds[1] += seconds_since(start);
+
+  // (G2) the micro steps with the known part of the multiplier; with
+  // contacts within reach of the ramp response, keep the state to redo them
+  start = Clock::now();
+  record_contacts = contacts_in_reach;
+  contact_was_active = false;
+  contact_record.clear();
+  if (record_contacts)
+    explicit_integrator.save(snapshot);
+  micro_steps(lambda_m, false);
+  seconds[0] += seconds_since(start);
+
+  // (G3') Lambda_{n+m} from the velocity continuity at t_{n+m}
+  start = Clock::now();
+  Vector<double> free_jump(n_gamma);
+  for (unsigned int k = 0; k < n_gamma; ++k)
+    free_jump[k] = rows_I[k].apply(implicit.new_velocity());
+  for (unsigned int k = 0; k < n_gamma; ++k)
+    lambda_m[k] = -(v_end[k] + free_jump[k]);
+  H.solve(lambda_m);
+  seconds[2] += seconds_since(start);
+
+  start = Clock::now();
+  if (!contact_was_active)
+  {
+    // superposition of the ramp response: the state, the interface
+    // increments and the work of the time-dependent loads
+    const auto state = explicit_integrator.linear_state();
+    for (unsigned int s = 0; s < state.size(); ++s)
+      ramp_state[s].add_multiply(*state[s], lambda_m);
+    ramp_increment_sum.vmult_add(increment_sum, lambda_m);
+    ramp_increment_weighted.vmult_add(increment_weighted, lambda_m);
+    H_E_matrix.vmult_add(v_end, lambda_m);
+    const double t0 = explicit_integrator.time() - DT;
+    double work = 0.;
+    for (unsigned int s = 0; s < ramp_load_work.size(); ++s)
+      for (unsigned int j = 1; j <= m; ++j)
+      {
+        const auto &load = system_E.time_dependent_loads[s];
+        work += 0.5 * (load.amplitude(t0 + (j - 1) * dt) + load.amplitude(t0 + j * dt)) *
+                (ramp_load_work[s][j - 1] * lambda_m);
+      }
+    explicit_integrator.add_external_work(work);
+    if (after_micro_step)
+      for (const auto &[gaps, impulses] : contact_record)
+        after_micro_step(gaps, impulses);
+  }
+  else
+  {
+    // contacts within reach were active: redo the micro steps with the full
+    // multiplier and correct Lambda_{n+m} until the macro-end continuity holds
+    ++n_redone;
+    unsigned int iterations = 0;
+    Vector<double> residual(n_gamma);
+    for (;; ++iterations)
+    {
+      explicit_integrator.restore(snapshot);
+      record_contacts = true;
+      contact_record.clear();
+      micro_steps(lambda_m, true);
+      Vector<double> implicit_part(n_gamma);
+      H_I.vmult(implicit_part, lambda_m);
+      double norm = 0., scale = 0.;
+      for (unsigned int k = 0; k < n_gamma; ++k)
+      {
+        residual[k] = -(v_end[k] + free_jump[k] + implicit_part[k]);
+        norm = std::max(norm, std::abs(residual[k]));
+        scale = std::max({scale, std::abs(v_end[k]), std::abs(free_jump[k])});
+      }
+      if (norm <= 1e-12 * std::max(scale, 1e-300) || norm == 0.)
+        break;
+      AssertThrow(iterations < 50,
+                  ExcMessage("HATI: the interface velocity continuity with contacts "
+                             "within reach of the interface did not converge in 50 "
+                             "corrections (residual " +
+                             std::to_string(norm) +
+                             " m/s): move the interface further from the contacts or "
+                             "reduce the Time step ratio"));
+      H.solve(residual);
+      lambda_m += residual;
+    }
+    max_iterations = std::max(max_iterations, iterations + 1);
+    if (after_micro_step)
+      for (const auto &[gaps, impulses] : contact_record)
+        after_micro_step(gaps, impulses);
+  }
+  record_contacts = false;
+  seconds[0] += seconds_since(start);
+
+  // (G5) interface work of the explicit side: the trapezoid of each micro
+  // step, sum_j 1/2 dU_j . C_E^T (Lambda_{j-1} + Lambda_j)
+  start = Clock::now();
+  for (unsigned int k = 0; k < n_gamma; ++k)
+    interface_work += increment_sum[k] * lambda_n[k] +
+                      increment_weighted[k] * (lambda_m[k] - lambda_n[k]);
+  seconds[2] += seconds_since(start);
+
+  // (G4) the implicit link with Lambda_{n+m}, its interface work
+  // 1/2 dU_I . C_I^T (Lambda_n + Lambda_{n+m}) and the continuity check
+  start = Clock::now();
+  link_force = 0.;
+  add_transpose(rows_I, lambda_m, link_force);
+  Vector<double> u_old(n_gamma);
+  for (unsigned int k = 0; k < n_gamma; ++k)
+    u_old[k] = rows_I[k].apply(implicit.displacement());
+  implicit.add_link(link_force);
+  for (unsigned int k = 0; k < n_gamma; ++k)
+  {
+    interface_work += 0.5 * (rows_I[k].apply(implicit.new_displacement()) - u_old[k]) *
+                      (lambda_n[k] + lambda_m[k]);
+    max_jump =
+        std::max(max_jump, std::abs(v_end[k] + rows_I[k].apply(implicit.new_velocity())));
+  }
+  implicit.finish_step();
+  lambda_n = lambda_m;
+  seconds[1] += seconds_since(start);
+}
+
+const Vector<double> &HATICoupling::displacement() const
+{
+  const auto &E = decomposition.parts[0], &I = decomposition.parts[1];
+  global_U = 0.;
+  for (unsigned int i = 0; i < I.global_dofs.size(); ++i)
+    global_U[I.global_dofs[i]] = implicit.displacement()[i];
+  for (unsigned int i = 0; i < E.global_dofs.size(); ++i)
+    global_U[E.global_dofs[i]] = explicit_integrator.displacement()[i];
+  return global_U;
+}
+
+const Vector<double> &HATICoupling::velocity() const
+{
+  const auto &E = decomposition.parts[0], &I = decomposition.parts[1];
+  global_V = 0.;
+  for (unsigned int i = 0; i < I.global_dofs.size(); ++i)
+    global_V[I.global_dofs[i]] = implicit.velocity()[i];
+  for (unsigned int i = 0; i < E.global_dofs.size(); ++i)
+    global_V[E.global_dofs[i]] = explicit_integrator.velocity()[i];
+  return global_V;
+}
+
+Energies HATICoupling::energies() const
+{
+  const Energies e = explicit_integrator.energies(), i = implicit.energies();
+  Energies r;
+  r.kinetic = e.kinetic + i.kinetic;
+  r.internal = e.internal + i.internal;
+  r.external_work = e.external_work + i.external_work;
+  r.contact_work = e.contact_work;
+  r.dissipated = e.dissipated + i.dissipated;
+  r.interface_work = interface_work;
+  r.kinetic_explicit = e.kinetic;
+  r.kinetic_implicit = i.kinetic;
+  r.internal_explicit = e.internal;
+  r.internal_implicit = i.internal;
+  return r;
+}
+
+unsigned int HATICoupling::state_size() const
+{
+  return 2 * decomposition.parts[0].system.n_dofs() +
+         3 * decomposition.parts[1].system.n_dofs() + rows_E.size();
+}
+
+void HATICoupling::get_state(Vector<double> &x) const
+{
+  const unsigned int nE = decomposition.parts[0].system.n_dofs(),
+                     nI = decomposition.parts[1].system.n_dofs();
+  const double dt = explicit_integrator.time_step(), DT = m * dt;
+  x.reinit(state_size());
+  unsigned int o = 0;
+  for (unsigned int i = 0; i < nE; ++i)
+    x[o++] = explicit_integrator.displacement()[i];
+  for (unsigned int i = 0; i < nE; ++i)
+    x[o++] = dt * explicit_integrator.velocity()[i];
+  for (unsigned int i = 0; i < nI; ++i)
+    x[o++] = implicit.displacement()[i];
+  for (unsigned int i = 0; i < nI; ++i)
+    x[o++] = DT * implicit.velocity()[i];
+  for (unsigned int i = 0; i < nI; ++i)
+    x[o++] = DT * DT * implicit.acceleration()[i];
+  for (unsigned int k = 0; k < rows_E.size(); ++k)
+    x[o++] = lambda_n[k];
+}
+
+void HATICoupling::set_state(const Vector<double> &x)
+{
+  AssertThrow(x.size() == state_size(), ExcDimensionMismatch(x.size(), state_size()));
+  const unsigned int nE = decomposition.parts[0].system.n_dofs(),
+                     nI = decomposition.parts[1].system.n_dofs();
+  const double dt = explicit_integrator.time_step(), DT = m * dt;
+  auto E = explicit_integrator.linear_state();
+  auto I = implicit.linear_state();
+  for (auto *v : E)
+    *v = 0.;
+  unsigned int o = 0;
+  for (unsigned int i = 0; i < nE; ++i)
+    (*E[0])[i] = x[o++];
+  for (unsigned int i = 0; i < nE; ++i)
+    (*E[1])[i] = (*E[2])[i] = x[o++] / dt;
+  for (unsigned int i = 0; i < nI; ++i)
+    (*I[0])[i] = x[o++];
+  for (unsigned int i = 0; i < nI; ++i)
+    (*I[1])[i] = x[o++] / DT;
+  for (unsigned int i = 0; i < nI; ++i)
+    (*I[2])[i] = x[o++] / (DT * DT);
+  for (unsigned int k = 0; k < rows_E.size(); ++k)
+    lambda_n[k] = x[o++];
+}
+} // namespace hati
