@@ -1,0 +1,150 @@
+// Stability of the coupling (algorithms.md G3', doc/theory.md section 9):
+// the spectral radius of one macro step of the real code path,
+// HATICoupling::step(), applied to every unit state [U_E, dt V_E, U_I, DT V_I,
+// DT^2 A_I, Lambda_n] of a small split frame with zero load (the method of the
+// numpy prototype gc_frame.py, whose G3 interface problem gives 1.0006 to
+// 1.064 on such a frame). The coupled scheme is stable when the radius is
+// <= 1 + 1e-10 for every m; the frame is undamped, so the radius must also
+// be 1 to 1e-8 (no artificial damping of the coupled modes either).
+// The frame: the portal of parameter_files/portal_frame_split.prm (two
+// portals joined by cross beams, column colA and beam beamAB explicit), with
+// two elements a member, no gravity, no point masses on the interface nodes
+// in one case and with them (owned by the explicit side) in the other.
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <hati/model/decomposition.h>
+#include <hati/model/model.h>
+#include <hati/simulation.h>
+#include <hati/time/hati_coupling.h>
+
+#include <cmath>
+#include <complex>
+#include <iostream>
+
+using namespace hati;
+
+namespace
+{
+std::string frame_prm(const std::string &point_masses, const unsigned int n_elements)
+{
+  const std::string ne = std::to_string(n_elements);
+  return "subsection Model\n"
+         "  set Type = frame\n"
+         "  subsection Frame\n"
+         "    set Nodes = A0: 0, 0, 0; A1: 0, 0, 5; B0: 6, 0, 0; B1: 6, 0, 5; C0: 0, 4, "
+         "0; "
+         "C1: 0, 4, 5; D0: 6, 4, 0; D1: 6, 4, 5\n"
+         "    set Materials = steel: 2.1e11, 0.3, 7850\n"
+         "    set Sections = column: box, 0.3, 0.3, 0.01, 0.01; beam: box, 0.2, 0.4, "
+         "0.008, "
+         "0.012\n"
+         "    set Members = colA: A0, A1, column, steel, " +
+         ne + "; colB: B0, B1, column, steel, " + ne + "; colC: C0, C1, column, steel, " +
+         ne + "; colD: D0, D1, column, steel, " + ne + "; beamAB: A1, B1, beam, steel, " +
+         ne + "; beamCD: C1, D1, beam, steel, " + ne +
+         "; crossAC: A1, C1, beam, steel, " + ne + "; crossBD: B1, D1, beam, steel, " +
+         ne +
+         "\n"
+         "    set Supports = A0: clamped; B0: clamped; C0: clamped; D0: clamped\n"
+         "    set Point masses = " +
+         point_masses +
+         "\n"
+         "  end\n"
+         "  subsection Decomposition\n"
+         "    set Explicit members = colA, beamAB\n"
+         "  end\n"
+         "end\n"
+         "subsection Loading\n"
+         "  set Gravity = 0, 0, 0\n"
+         "end\n";
+}
+
+double spectral_radius(HATICoupling &coupling, double &smallest)
+{
+  const unsigned int N = coupling.state_size();
+  LAPACKFullMatrix<double> G(N, N);
+  Vector<double> x(N), y(N);
+  for (unsigned int k = 0; k < N; ++k)
+  {
+    x = 0.;
+    x[k] = 1.;
+    coupling.set_state(x);
+    coupling.step();
+    coupling.get_state(y);
+    for (unsigned int i = 0; i < N; ++i)
+      G(i, k) = y[i];
+  }
+  G.compute_eigenvalues();
+  double rho = 0.;
+  smallest = 1e300;
+  for (unsigned int i = 0; i < N; ++i)
+  {
+    rho = std::max(rho, std::abs(G.eigenvalue(i)));
+    smallest = std::min(smallest, std::abs(G.eigenvalue(i)));
+  }
+  return rho;
+}
+} // namespace
+
+int main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  unsigned int failures = 0;
+  for (const std::string masses : {"", "A1: 500; B1: 500; C1: 500; D1: 500"})
+  {
+    ParameterHandler prm;
+    Simulation::declare_parameters(prm);
+    prm.parse_input_from_string(frame_prm(masses, 2));
+    CommonModelParameters common;
+    common.parse_parameters(prm);
+    DecompositionParameters decomposition_parameters;
+    prm.enter_subsection("Model");
+    prm.enter_subsection("Decomposition");
+    decomposition_parameters.parse_parameters(prm);
+    prm.leave_subsection();
+    prm.leave_subsection();
+    std::unique_ptr<Model> model = create_model(prm);
+    DiscreteSystem system;
+    model->build(common, system);
+    Decomposition decomposition;
+    decompose(*model, common, decomposition_parameters, decomposition);
+    const double dt_crit = 2. / decomposition.parts[0].system.highest_frequency_bound();
+    std::cout << "frame (point masses: " << (masses.empty() ? "none" : masses)
+              << "): explicit " << decomposition.parts[0].system.n_dofs()
+              << " DoFs, implicit " << decomposition.parts[1].system.n_dofs()
+              << " DoFs, interface " << decomposition.n_interface_dofs()
+              << " DoFs, dt_crit " << dt_crit << " s" << std::endl;
+    if (decomposition.n_interface_dofs() != 12)
+    {
+      std::cout << "FAIL interface DoFs: expected 12 (all six DoFs of A1 and B1)\n";
+      ++failures;
+    }
+    for (const unsigned int m : {1u, 2u, 5u, 10u, 20u, 50u, 100u})
+    {
+      HATIParameters parameters;
+      parameters.time_step_ratio = m;
+      HATICoupling coupling(decomposition,
+                            system.n_dofs(),
+                            0.9 * dt_crit,
+                            1.,
+                            parameters,
+                            NewmarkParameters(),
+                            RayleighDamping());
+      double smallest = 0.;
+      const double rho = spectral_radius(coupling, smallest);
+      const bool ok = rho <= 1. + 1e-10 && rho >= 1. - 1e-8;
+      failures += ok ? 0 : 1;
+      std::cout << (ok ? "ok   " : "FAIL ") << "m = " << m << ": spectral radius "
+                << std::setprecision(15) << rho
+                << " (limit 1 + 1e-10, undamped: >= 1 - 1e-8)" << std::setprecision(6)
+                << std::endl;
+    }
+  }
+  if (failures)
+    std::cout << failures << " check(s) failed" << std::endl;
+  else
+    std::cout << "all checks passed" << std::endl;
+  return failures == 0 ? 0 : 1;
+}
