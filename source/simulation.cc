@@ -26,6 +26,15 @@ namespace hati
 {
 namespace
 {
+/** Micro steps per step: m for the coupling, 1 otherwise. */
+template <class Integrator> unsigned int time_step_ratio(const Integrator &integrator)
+{
+  if constexpr (std::is_same_v<Integrator, HATICoupling>)
+    return integrator.time_step_ratio();
+  else
+    return 1;
+}
+
 /** Steps between two outputs of interval @p interval (s); 0 means every step. */
 unsigned long steps_between(const double interval, const double dt)
 {
@@ -249,7 +258,10 @@ OutputState output_state(const EventDriven &integrator)
 
 OutputState output_state(const HATICoupling &integrator)
 {
-  return contact_state(integrator, integrator.micro_time_step());
+  // contacts.csv is written at the micro steps (run_transient)
+  OutputState s = contact_state(integrator, integrator.micro_time_step());
+  s.contact_rows = false;
+  return s;
 }
 
 OutputState output_state(const Newmark &integrator)
@@ -294,11 +306,30 @@ void Simulation::run_transient(Integrator &integrator,
       writer.write_vtu(s);
   };
 
+  // HATI: contact statistics and contacts.csv rows at the micro steps
+  unsigned long micro_step = 0;
+  const unsigned long every_contact_row =
+      std::is_same_v<Integrator, HATICoupling>
+          ? steps_between(output_parameters.history_interval,
+                          dt / time_step_ratio(integrator))
+          : 1;
+  OutputState contact_row;
   if constexpr (std::is_same_v<Integrator, HATICoupling>)
     if (!integrator.gaps().empty())
-      integrator.after_micro_step =
-          [&writer](const std::vector<double> &gaps, const std::vector<double> &impulses)
-      { writer.track_contacts(gaps, impulses); };
+      integrator.after_micro_step = [&](const HATICoupling::ContactSample &sample)
+      {
+        writer.track_contacts(sample.gaps, sample.impulses);
+        if (++micro_step % every_contact_row == 0)
+        {
+          contact_row.time = sample.time;
+          contact_row.gaps = sample.gaps;
+          contact_row.normal_velocities = sample.normal_velocities;
+          contact_row.impulses = sample.impulses;
+          contact_row.active = sample.active;
+          contact_row.impulse_duration = integrator.micro_time_step();
+          writer.write_contacts(contact_row);
+        }
+      };
 
   Progress progress(output_parameters.progress_interval, T);
   write(0);

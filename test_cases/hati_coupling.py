@@ -122,6 +122,33 @@ ctx.check("frame 1e4 macro steps: peak sway / explicit peak", np.max(np.abs(h["A
           np.max(np.abs(he["A1ux"])), 1.0, abs_tol=0.05)
 
 
+# --- the bar impact with the impacting half explicit ---------------------------
+# analytical (bar_impact_1d.prm): contact from g0 / v0 = 1 ms for 2 L / c,
+# plateau force rho c A v0; the prototype gives 0.60-0.80 % on the duration
+impact = ctx.prm("bar_split_impact.prm")
+c0 = np.sqrt(2e11 / 7800)
+for m, region in ((1, "0.5, 1"), (5, "0.5, 1"), (10, "0.5, 1"), (10, "0.95, 1"), (20, "0.9, 1")):
+    tag = "impact m = %d, explicit %s" % (m, region)
+    out, _ = ctx.run(impact, "impact_m%d_%s" % (m, region[:4]),
+                     ["Time integration/HATI/Time step ratio=%d" % m,
+                      "Model/Decomposition/Explicit region=" + region, no_vtu])
+    c = read_csv(out + "/contacts.csv")
+    on = np.where(c["impulse"] > 0)[0]
+    dt = 2e-7
+    ctx.check(tag + ": contact start (s)", c["time"][on[0]], 1e-3, abs_tol=1.5 * dt)
+    ctx.check(tag + ": contact duration (s)", c["time"][on[-1]] - c["time"][on[0]] + dt,
+              2 / c0, rel=0.01)
+    f = c["force"][on[0]:on[-1] + 1]
+    n = len(f)
+    ctx.check(tag + ": plateau force (N)", np.mean(f[n // 4:3 * n // 4]), 7800 * c0 * 1e-4,
+              rel=0.02)
+    s = check_balance(tag, out)
+    ctx.check_true(tag + ": one impact", s["n_impacts"] == 1, str(s["n_impacts"]))
+    # the contact is 50 nodes from the interface at x = 0.5, 5 at x = 0.95
+    within_reach = region != "0.5, 1"
+    ctx.check_true(tag + ": macro steps redone only with the contact within reach",
+                   (s["redone_macro_steps"] > 0) == within_reach, str(s["redone_macro_steps"]))
+
 # --- bad decompositions --------------------------------------------------------
 def expect_error(what, prm, sets, *fragments):
     cmd = [ctx.hati, prm, "--set", "Output/Output directory=" + ctx.work + "/err"]

@@ -83,8 +83,13 @@ void OutputWriter::write_history(const OutputState &s)
   history << '\n';
   if (section_forces.is_open())
     model.write_section_forces(section_forces, s.time, *s.displacement);
+  if (s.contact_rows)
+    write_contacts(s);
+}
 
-  if (s.gaps.size() != system.contacts.size())
+void OutputWriter::write_contacts(const OutputState &s)
+{
+  if (s.gaps.size() != system.contacts.size() || system.contacts.empty())
     return; // no contact state (implicit or static analyses)
   const unsigned int ng = contact_names.size();
   std::vector<double> gap(ng, std::numeric_limits<double>::max()), vn(ng, 0.),

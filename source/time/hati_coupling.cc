@@ -291,13 +291,16 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end,
     explicit_integrator.finish_step();
     if (record_contacts)
     {
-      contact_record.emplace_back(explicit_integrator.gaps(),
-                                  explicit_integrator.impulses());
+      take_sample();
+      contact_record.push_back(sample);
       for (const unsigned int c : reach_contacts)
         contact_was_active = contact_was_active || explicit_integrator.active()[c];
     }
     else if (after_micro_step)
-      after_micro_step(explicit_integrator.gaps(), explicit_integrator.impulses());
+    {
+      take_sample();
+      after_micro_step(sample);
+    }
   }
 }
 
@@ -355,8 +358,8 @@ void HATICoupling::step()
       }
     explicit_integrator.add_external_work(work);
     if (after_micro_step)
-      for (const auto &[gaps, impulses] : contact_record)
-        after_micro_step(gaps, impulses);
+      for (const auto &recorded : contact_record)
+        after_micro_step(recorded);
   }
   else
   {
@@ -394,8 +397,8 @@ void HATICoupling::step()
     }
     max_iterations = std::max(max_iterations, iterations + 1);
     if (after_micro_step)
-      for (const auto &[gaps, impulses] : contact_record)
-        after_micro_step(gaps, impulses);
+      for (const auto &recorded : contact_record)
+        after_micro_step(recorded);
   }
   record_contacts = false;
   seconds[0] += seconds_since(start);
@@ -427,6 +430,19 @@ void HATICoupling::step()
   implicit.finish_step();
   lambda_n = lambda_m;
   seconds[1] += seconds_since(start);
+}
+
+void HATICoupling::take_sample()
+{
+  sample.time = explicit_integrator.time();
+  sample.gaps = explicit_integrator.gaps();
+  sample.impulses = explicit_integrator.impulses();
+  sample.active = explicit_integrator.active();
+  const auto &contacts = decomposition.parts[0].system.contacts;
+  const Vector<double> &V = explicit_integrator.velocity();
+  sample.normal_velocities.resize(contacts.size());
+  for (unsigned int k = 0; k < contacts.size(); ++k)
+    sample.normal_velocities[k] = contacts[k].apply(V);
 }
 
 const Vector<double> &HATICoupling::displacement() const

@@ -33,6 +33,11 @@ struct OutputState
   std::vector<bool> active;
   /** Duration over which the impulses act (s): dt for CD-Lagrange. */
   double impulse_duration = 0.;
+  /**
+   * Whether write_history() also writes the contacts.csv rows (false when
+   * they are written at another resolution with write_contacts(), HATI).
+   */
+  bool contact_rows = true;
 };
 
 /**
@@ -55,6 +60,8 @@ public:
 
   /** Rows of history.csv and contacts.csv at @p state.time. */
   void write_history(const OutputState &state);
+  /** Rows of contacts.csv at @p state.time (one per contact name). */
+  void write_contacts(const OutputState &state);
   /** A row of energy.csv; the drift is relative to the first row. */
   void write_energy(const double time, const Energies &energies);
   /** A VTU snapshot and the updated PVD index. */

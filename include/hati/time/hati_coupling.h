@@ -168,13 +168,20 @@ public:
   const Newmark &implicit_part() const { return implicit; }
   unsigned int n_interface_dofs() const { return rows_E.size(); }
 
+  /** The contact state of the explicit subdomain after one micro step. */
+  struct ContactSample
+  {
+    double time = 0.;
+    std::vector<double> gaps, normal_velocities, impulses;
+    std::vector<bool> active;
+  };
+
   /**
-   * Called after every micro step with the contact gaps and impulses of the
-   * explicit subdomain (contact statistics); for redone macro steps, with
-   * those of the final pass only.
+   * Called after every micro step with the contact state of the explicit
+   * subdomain (contact statistics and contacts.csv at the micro-step
+   * resolution); for redone macro steps, with the final pass only.
    */
-  std::function<void(const std::vector<double> &, const std::vector<double> &)>
-      after_micro_step;
+  std::function<void(const ContactSample &)> after_micro_step;
 
 private:
   /** The m micro steps from the current explicit state with Lambda_j given by
@@ -209,7 +216,10 @@ private:
   // per macro step with contacts in reach: whether one was active, and the
   // contact state of every micro step (replayed to after_micro_step)
   bool record_contacts = false, contact_was_active = false;
-  std::vector<std::pair<std::vector<double>, std::vector<double>>> contact_record;
+  std::vector<ContactSample> contact_record;
+  ContactSample sample;
+  /** Fill `sample` from the explicit integrator. */
+  void take_sample();
 
   // per macro step: C_E V integer velocity at j = m, interface increments
   Vector<double> v_end, increment_sum, increment_weighted;
