@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """Bouncing ball with CD-Lagrange against the analytical solution
 (algorithms.md 6.1): impact times t_{k+1} = t_k + 2 e^k v1 / g, apex heights
-z0 e^{2k}, Zeno time t_inf = t1 (1 + e) / (1 - e), rest impulse m g dt, and
-first-order convergence of the impact times in dt."""
+z0 e^{2k}, Zeno time t_inf = t1 (1 + e) / (1 - e), rest impulse m g dt,
+first-order convergence of the impact times in dt, and the number of
+impacts in summary.json (n_impacts) against the analytical impacts."""
 import numpy as np
 
 from hati_test import Context, contact_phases, read_csv, read_summary
@@ -57,6 +58,33 @@ ctx.check("energy balance relative error", s["energy_balance_relative"], 0.0, ab
 ctx.check_true("max penetration bounded by dt v1", s["max_penetration"] <= dt * v1 * 1.01,
                "(%.3g m <= %.3g m)" % (s["max_penetration"], dt * v1))
 
+# n_impacts (OutputWriter::track_contacts: the contact going from no impulse
+# to an impulse) against the analytical impacts before the Zeno point. The
+# flight after impact k lasts 2 e^k v1 / g; when it lasts less than about
+# two steps the discrete impacts merge into persistent contact (at most one
+# impulse per step, and an active contact keeps pushing while its velocity
+# stays below g dt / (1 + e)).
+
+
+def analytical_impacts(min_flight):
+    """Number of analytical impacts t_k < t_inf whose previous flight lasts
+    more than min_flight (the first impact always counts)."""
+    n, k = 1, 1
+    while 2 * e**k * v1 / g > min_flight:
+        n, k = n + 1, k + 1
+    return n
+
+
+n_ref = analytical_impacts(2 * dt)
+# tolerance: the impacts that a change of the threshold by one step (1 dt or
+# 3 dt instead of 2 dt) adds or removes (3 here); measured 37 for 38
+n_tol = max(analytical_impacts(dt) - n_ref, n_ref - analytical_impacts(3 * dt))
+ctx.check("n_impacts vs analytical impacts with flights > 2 dt", s["n_impacts"], n_ref,
+          abs_tol=n_tol)
+# contacts.csv has every step here: one impulse run per impact, exactly
+ctx.check("n_impacts vs impulse runs in contacts.csv", s["n_impacts"], len(contact_phases(c)[0]),
+          abs_tol=0)
+
 # --- first-order convergence of the impact times over three time steps ----
 errors = []
 steps = [1e-3, 2.5e-4, 6.25e-5]
@@ -66,6 +94,9 @@ for dt in steps:
                       "Output/Output interval=0"])
     _, times = impact_times(out)
     errors.append(np.max(np.abs(times[:5] - np.array(t_impacts))))
+    # to t = 3 s: the six analytical impacts t_1 ... t_6 = 2.876 s (t_7 =
+    # 3.117 s), flights >= 0.29 s, none merges: exactly 6
+    ctx.check("[dt %g] n_impacts to t = 3 s" % dt, read_summary(out)["n_impacts"], 6, abs_tol=0)
     print("dt %-8g max error of the first five impact times %.4g s" % (dt, errors[-1]))
 orders = [np.log(errors[i] / errors[i + 1]) / np.log(steps[i] / steps[i + 1]) for i in range(2)]
 for i, p in enumerate(orders):

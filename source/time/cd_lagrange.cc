@@ -269,11 +269,14 @@ void CDLagrange::free_velocity(const bool with_loads)
                        V_prev->data());
   if (with_loads)
     // work of the time-dependent loads, trapezoidal on the increment
-    // (the constant part is F . (U - U_0), computed at output times)
+    // (the constant part is F . (U - U_0), computed at output times); the
+    // previous amplitude is taken at t_n computed as in predict(), n dt:
+    // t_{n+1} - dt can differ from it by round-off and miss a step load
+    // that starts at t_n
     for (unsigned int l = 0; l < dt_minv_load_shapes.size(); ++l)
     {
       const auto &load = system.time_dependent_loads[l];
-      const double s1 = load.amplitude(t), s0 = load.amplitude(t - dt);
+      const double s1 = load.amplitude(t), s0 = load.amplitude((n_steps - 1) * dt);
       time_dependent_work += 0.5 * (s0 + s1) * dt * (load_shapes[l] * (*V));
       V_prev->add(s1, dt_minv_load_shapes[l]);
     }

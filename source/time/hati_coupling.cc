@@ -307,7 +307,7 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end,
 void HATICoupling::step()
 {
   const unsigned int n_gamma = rows_E.size();
-  const double dt = explicit_integrator.time_step(), DT = m * dt;
+  const double dt = explicit_integrator.time_step();
   const DiscreteSystem &system_E = decomposition.parts[0].system;
 
   // (G1) the free implicit step
@@ -347,13 +347,15 @@ void HATICoupling::step()
     ramp_increment_sum.vmult_add(increment_sum, lambda_m);
     ramp_increment_weighted.vmult_add(increment_weighted, lambda_m);
     H_E_matrix.vmult_add(v_end, lambda_m);
-    const double t0 = explicit_integrator.time() - DT;
+    // amplitudes at the micro-step times n dt, as the integrator takes them
+    const unsigned long n0 = explicit_integrator.step_number() - m;
     double work = 0.;
     for (unsigned int s = 0; s < ramp_load_work.size(); ++s)
       for (unsigned int j = 1; j <= m; ++j)
       {
         const auto &load = system_E.time_dependent_loads[s];
-        work += 0.5 * (load.amplitude(t0 + (j - 1) * dt) + load.amplitude(t0 + j * dt)) *
+        work += 0.5 *
+                (load.amplitude((n0 + j - 1) * dt) + load.amplitude((n0 + j) * dt)) *
                 (ramp_load_work[s][j - 1] * lambda_m);
       }
     explicit_integrator.add_external_work(work);
