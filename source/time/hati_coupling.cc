@@ -195,6 +195,13 @@ void HATICoupling::precompute_ramp_response()
   const unsigned int n_I = decomposition.parts[1].system.n_dofs();
   Vector<double> b(n_I), x(n_I);
   H_I.reinit(n_gamma, n_gamma);
+  // dense link columns up to 2e7 entries (160 MB)
+  const bool keep_columns = double(n_I) * n_gamma <= 2e7;
+  if (keep_columns)
+  {
+    link_columns.reinit(n_I, n_gamma);
+    link_acceleration.reinit(n_I);
+  }
   for (unsigned int l = 0; l < n_gamma; ++l)
   {
     b = 0.;
@@ -205,6 +212,9 @@ void HATICoupling::precompute_ramp_response()
     implicit.solve_with_effective_matrix(x, b);
     for (unsigned int k = 0; k < n_gamma; ++k)
       H_I(k, l) = gamma * DT * rows_I[k].apply(x);
+    if (keep_columns)
+      for (unsigned int i = 0; i < n_I; ++i)
+        link_columns(i, l) = x[i];
   }
   H.reinit(n_gamma, n_gamma);
   for (unsigned int k = 0; k < n_gamma; ++k)
@@ -416,12 +426,20 @@ void HATICoupling::step()
   // (G4) the implicit link with Lambda_{n+m}, its interface work
   // 1/2 dU_I . C_I^T (Lambda_n + Lambda_{n+m}) and the continuity check
   start = Clock::now();
-  link_force = 0.;
-  add_transpose(rows_I, lambda_m, link_force);
   Vector<double> u_old(n_gamma);
   for (unsigned int k = 0; k < n_gamma; ++k)
     u_old[k] = rows_I[k].apply(implicit.displacement());
-  implicit.add_link(link_force);
+  if (!link_columns.empty())
+  {
+    link_columns.vmult(link_acceleration, lambda_m);
+    implicit.add_link_acceleration(link_acceleration);
+  }
+  else
+  {
+    link_force = 0.;
+    add_transpose(rows_I, lambda_m, link_force);
+    implicit.add_link(link_force);
+  }
   for (unsigned int k = 0; k < n_gamma; ++k)
   {
     interface_work += 0.5 * (rows_I[k].apply(implicit.new_displacement()) - u_old[k]) *

@@ -436,9 +436,14 @@ void Newmark::add_link(const Vector<double> &force)
   tmp = 0.;
   solve_with_effective_matrix(tmp, rhs);
   zero_fixed(tmp);
-  A_new += tmp;
-  U_star.add(beta * dt * dt, tmp);
-  V_star.add(gamma * dt, tmp);
+  add_link_acceleration(tmp);
+}
+
+void Newmark::add_link_acceleration(const Vector<double> &a_link)
+{
+  A_new += a_link;
+  U_star.add(beta * dt * dt, a_link);
+  V_star.add(gamma * dt, a_link);
 }
 
 void Newmark::finish_step()

@@ -231,6 +231,13 @@ private:
   double seconds[3] = {0., 0., 0.};
   double setup = 0.;
   Vector<double> link_force;
+  /**
+   * The columns M_eff^-1 C_I^T (n_I x n_G), kept when they fit in
+   * link_columns_limit entries: the link (G4) is then a product instead of
+   * a solve.
+   */
+  FullMatrix<double> link_columns;
+  Vector<double> link_acceleration;
   mutable Vector<double> global_U, global_V;
   CDLagrange::Snapshot snapshot;
 };

@@ -156,6 +156,13 @@ public:
    */
   void add_link(const Vector<double> &force);
 
+  /**
+   * (G4) the link correction of a known acceleration @p a_link (m/s^2),
+   * e.g. `M_eff^-1 C_I^T Lambda` from precomputed columns: `A += a_link`,
+   * `V += gamma DT a_link`, `U += beta DT^2 a_link`.
+   */
+  void add_link_acceleration(const Vector<double> &a_link);
+
   /** The new state becomes U_{n+1}, V_{n+1}, A_{n+1}; energies are booked. */
   void finish_step();
 
