@@ -212,12 +212,11 @@ void Simulation::run()
         system, 0., system.initial_displacement, newmark_parameters.linear_solver, true);
     system.initial_velocity = 0.;
   }
-  AssertThrow(
-      time_parameters.method == "Newmark" || time_parameters.method == "HATI" ||
-          (damping.a0 == 0. && damping.a1 == 0.),
-      ExcMessage("Time integration/Damping: Rayleigh damping is applied by the Newmark "
-                 "integrator only; remove it for Method = " +
-                 time_parameters.method + "."));
+  AssertThrow(time_parameters.method != "event-driven" ||
+                  (damping.a0 == 0. && damping.a1 == 0.),
+              ExcMessage("Time integration/Damping: Rayleigh damping is applied by the "
+                         "CD-Lagrange and Newmark integrators only; remove it for "
+                         "Method = event-driven."));
   if (time_parameters.method == "event-driven")
     run_event_driven();
   else if (time_parameters.method == "Newmark")
@@ -412,10 +411,14 @@ void Simulation::run_cd_lagrange()
 {
   TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
   timer.enter_subsection("setup");
-  CDLagrange integrator(system, time_parameters.time_step, time_parameters.safety_factor);
+  CDLagrange integrator(
+      system, time_parameters.time_step, time_parameters.safety_factor, damping);
   timer.leave_subsection();
-  std::cout << "  CD-Lagrange: dt_crit = " << integrator.critical_time_step() << " s"
-            << std::endl;
+  std::cout << "  CD-Lagrange: dt_crit = " << integrator.critical_time_step() << " s";
+  if (integrator.damped())
+    std::cout << ", Rayleigh a0 = " << integrator.mass_damping_coefficient()
+              << " 1/s, a1 = " << integrator.stiffness_damping_coefficient() << " s";
+  std::cout << std::endl;
   run_transient(integrator,
                 timer,
                 {{"method", json_string("CD-Lagrange")},

@@ -3,7 +3,8 @@
 a non-zero exit code, never a crash: a value failing its pattern (in a file
 and through --set), an unknown entry, a missing file, an unknown option, and
 a time step above the critical one (the message must print dt_crit, checked
-against the analytical h / c of the lumped linear bar)."""
+against the analytical h / c of the lumped linear bar, and its value with
+stiffness damping), damping with the event-driven method."""
 import os
 import re
 import subprocess
@@ -65,8 +66,9 @@ expect_error("malformed frame section", [frame, "--set", "Model/Frame/Sections=r
 expect_error("Newmark on a model with contacts",
              [bar, "--set", "Time integration/Method=Newmark"], "contacts")
 
-expect_error("Rayleigh damping with the explicit scheme",
-             [bar, "--set", "Time integration/Damping/Mass coefficient=0.1"], "Damping", "Newmark")
+expect_error("Rayleigh damping with the event-driven method",
+             [ctx.prm("bouncing_ball.prm"), "--set", "Time integration/Method=event-driven",
+              "--set", "Time integration/Damping/Mass coefficient=0.1"], "Damping", "event-driven")
 portal = ctx.prm("portal_frame_dynamic.prm")
 expect_error("Newmark Beta < Gamma / 2 (conditionally stable)",
              [portal, "--set", "Time integration/Newmark/Beta=0.1"], "Beta", "Gamma")
@@ -78,6 +80,21 @@ m = re.search(r"dt_crit = [^=]*= ([0-9.eE+-]+) s", err)
 ctx.check_true("time step above critical refused", rc != 0 and m is not None, err)
 if m:
     ctx.check("printed dt_crit (s)", float(m.group(1)), 0.01 / np.sqrt(2e11 / 7800), rel=1e-5)
+
+# with stiffness damping a1 the limit is (2/w_max)(sqrt(1 + xi^2) - xi),
+# xi = a1 w_max / 2, w_max = 2 c / h (algorithms.md A7); the message says so
+a1 = 1e-6
+rc, err = hati(bar, "--set", "Time integration/Time step=1.9e-6",
+               "--set", "Time integration/Damping/Stiffness coefficient=%g" % a1,
+               "--set", "Output/Output directory=" + os.path.join(ctx.work, "crit_damped"))
+m = re.search(r"dt_crit = [^=]*= ([0-9.eE+-]+) s", err)
+ctx.check_true("time step above the damped critical step refused, naming the damping",
+               rc != 0 and m is not None and "damping" in err, err)
+if m:
+    w_max = 2 * np.sqrt(2e11 / 7800) / 0.01
+    xi = a1 * w_max / 2
+    ctx.check("printed damped dt_crit (s)", float(m.group(1)),
+              2 / w_max * (np.sqrt(1 + xi * xi) - xi), rel=1e-5)
 
 # the documented entry names exist
 rc = subprocess.run([ctx.hati, "--print-parameters"], capture_output=True, text=True)

@@ -10,7 +10,8 @@ void TimeIntegrationParameters::declare_parameters(ParameterHandler &prm)
       "CD-Lagrange",
       Patterns::Selection("CD-Lagrange|event-driven|Newmark|HATI"),
       "CD-Lagrange: explicit event-capturing central differences with "
-      "velocity-level Lagrange multipliers (algorithms.md A1-A6). "
+      "velocity-level Lagrange multipliers (algorithms.md A1-A7, with Rayleigh "
+      "damping). "
       "event-driven: CVODE between impacts, impacts located by root "
       "finding, Newton's restitution law at each event (reference for small "
       "rigid systems). Newmark: implicit average acceleration (algorithms.md N1-N3, "
@@ -23,8 +24,10 @@ void TimeIntegrationParameters::declare_parameters(ParameterHandler &prm)
       "1e-3",
       Patterns::Double(0.),
       "Time step dt of CD-Lagrange (s), > 0. Refused above the critical "
-      "step 2/omega_max times the Safety factor. For event-driven: the "
-      "sampling interval of history.csv when Output/History interval is 0.");
+      "step 2/omega_max times the Safety factor; with stiffness damping a1 the "
+      "critical step is (2/omega_max) (sqrt(1 + xi^2) - xi), xi = a1 omega_max / 2. "
+      "For event-driven: the sampling interval of history.csv when Output/History "
+      "interval is 0.");
   prm.declare_entry("End time", "1", Patterns::Double(0.), "End of the simulation (s).");
   prm.declare_entry("Safety factor",
                     "1",

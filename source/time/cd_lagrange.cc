@@ -89,28 +89,135 @@ void free_velocity_kernel(const unsigned int width,
     }
   }
 }
+
+/**
+ * The damped free velocity (A7) for a row-padded operator S = dt M^-1 K of
+ * width W (the runtime @p width if Runtime): with a = dt M^-1 F_ext,
+ * `v_new = c1 v + c2 (a - S u - a1 S v)`, and the damping force of the
+ * update `d_new = dt M^-1 D = a - S u - (v_new - v)`, stored in place of
+ * the previous one in @p d. Returns the work of the damping force on the
+ * increment dt v, `1/2 sum_i m_i v_i (d_old,i + d_new,i)` (J).
+ */
+template <unsigned int W, bool Runtime = false>
+double damped_free_velocity_rows(const unsigned int width,
+                                 const unsigned int n,
+                                 const unsigned int *__restrict col,
+                                 const double *__restrict val,
+                                 const double *__restrict u,
+                                 const double *__restrict v,
+                                 const double *__restrict a,
+                                 const double *__restrict m,
+                                 const double c1,
+                                 const double c2,
+                                 const double a1,
+                                 double *__restrict d,
+                                 double *__restrict v_new)
+{
+  const unsigned int w = Runtime ? width : W;
+  double work = 0.;
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    double ku = 0., kv = 0.;
+    for (unsigned int k = 0; k < w; ++k)
+    {
+      const std::size_t ik = std::size_t(i) * w + k;
+      ku += val[ik] * u[col[ik]];
+      kv += val[ik] * v[col[ik]];
+    }
+    const double g = a[i] - ku;
+    const double vn = c1 * v[i] + c2 * (g - a1 * kv);
+    const double dn = g - (vn - v[i]);
+    work += m[i] * v[i] * (d[i] + dn);
+    d[i] = dn;
+    v_new[i] = vn;
+  }
+  return 0.5 * work;
+}
+
+double damped_free_velocity_kernel(const unsigned int width,
+                                   const unsigned int n,
+                                   const unsigned int *col,
+                                   const double *val,
+                                   const double *u,
+                                   const double *v,
+                                   const double *a,
+                                   const double *m,
+                                   const double c1,
+                                   const double c2,
+                                   const double a1,
+                                   double *d,
+                                   double *v_new)
+{
+  switch (width)
+  {
+#define HATI_KERNEL(W)                                                                   \
+  case W:                                                                                \
+    return damped_free_velocity_rows<W>(                                                 \
+        width, n, col, val, u, v, a, m, c1, c2, a1, d, v_new);
+    HATI_KERNEL(0)
+    HATI_KERNEL(2)
+    HATI_KERNEL(3)
+    HATI_KERNEL(4)
+    HATI_KERNEL(6)
+    HATI_KERNEL(8)
+    HATI_KERNEL(12)
+    HATI_KERNEL(16)
+    HATI_KERNEL(24)
+    HATI_KERNEL(32)
+    HATI_KERNEL(48)
+    HATI_KERNEL(64)
+    HATI_KERNEL(81)
+    HATI_KERNEL(96)
+#undef HATI_KERNEL
+  default:
+    return damped_free_velocity_rows<0, true>(
+        width, n, col, val, u, v, a, m, c1, c2, a1, d, v_new);
+  }
+}
 } // namespace
 
 CDLagrange::CDLagrange(const DiscreteSystem &system,
                        const double dt,
-                       const double safety_factor)
-    : system(system), dt(dt)
+                       const double safety_factor,
+                       const RayleighDamping &damping)
+    : system(system), dt(dt), a0(damping.a0), a1(damping.a1),
+      c1((1. - 0.5 * damping.a0 * dt) / (1. + 0.5 * damping.a0 * dt)),
+      c2(1. / (1. + 0.5 * damping.a0 * dt))
 {
   const unsigned int n = system.n_dofs();
   AssertThrow(dt > 0. && std::isfinite(dt),
               ExcMessage("Time integration/Time step must be positive and finite."));
+  AssertThrow(a0 >= 0. && a1 >= 0. && std::isfinite(a0) && std::isfinite(a1),
+              ExcMessage("Rayleigh damping: a0 and a1 must be >= 0 and finite."));
 
-  // Stability: dt <= safety * 2 / omega_max (algorithms.md section 1)
+  // Stability (algorithms.md section 1, A7): dt <= safety * dt_crit with
+  // dt_crit = (2/omega_max) (sqrt(1 + xi^2) - xi), xi = a1 omega_max / 2,
+  // written 2 / (omega_max (sqrt(1 + xi^2) + xi)) to avoid the cancellation.
+  // It is the exact limit of the scheme for every mode (doc/theory.md 1.6)
+  // and decreases with omega, so the bound omega_max gives a safe step.
   const double omega_max = system.highest_frequency_bound();
-  dt_crit = omega_max > 0. ? 2. / omega_max : std::numeric_limits<double>::infinity();
+  const double xi = 0.5 * a1 * omega_max;
+  dt_crit = omega_max > 0. ? 2. / (omega_max * (std::sqrt(1. + xi * xi) + xi))
+                           : std::numeric_limits<double>::infinity();
   if (dt > safety_factor * dt_crit)
   {
     std::ostringstream s;
     s.precision(6);
     s << "the time step dt = " << dt << " s is above the stability limit of the "
-      << "explicit scheme: dt_crit = 2/omega_max = " << dt_crit << " s (safety factor "
-      << safety_factor << ", so dt must be <= " << safety_factor * dt_crit
-      << " s). Reduce 'Time integration/Time step'.";
+      << "explicit scheme";
+    if (a1 > 0.)
+      s << " with Rayleigh stiffness damping a1 = " << a1
+        << " s: dt_crit = (2/omega_max) (sqrt(1 + xi^2) - xi) = " << dt_crit
+        << " s, xi = a1 omega_max / 2 = " << xi << ", omega_max = " << omega_max
+        << " rad/s";
+    else
+      s << ": dt_crit = 2/omega_max = " << dt_crit << " s";
+    s << " (safety factor " << safety_factor
+      << ", so dt must be <= " << safety_factor * dt_crit
+      << " s). Reduce 'Time integration/Time step'";
+    if (a1 > 0.)
+      s << " or the stiffness damping (Time integration/Damping)";
+    s << ".";
     AssertThrow(false, ExcMessage(s.str()));
   }
 
@@ -121,10 +228,12 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
 
   dt_minv.reinit(n);
   minv.reinit(n);
+  mass.reinit(n);
   zero_force.reinit(n);
   for (unsigned int i = 0; i < n; ++i)
   {
     minv[i] = system.fixed[i] ? 0. : 1. / system.lumped_mass[i];
+    mass[i] = system.fixed[i] ? 0. : system.lumped_mass[i];
     dt_minv[i] = dt * minv[i];
   }
 
@@ -188,17 +297,26 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
   V = &velocity_a;
   V_prev = &velocity_b;
 
-  // V_{1/2} = V_0 + dt/2 M^-1 (F_ext(0) - K U_0)
-  Vector<double> f(force), ku(n);
+  // V_{1/2} = V_0 + dt/2 M^-1 G_0, G_0 = F_ext(0) - K U_0 - C V_0, and
+  // V_{-1/2} = V_{1/2} - dt M^-1 G_0; d_0 = dt M^-1 C V_0 (A7, theory 1.1)
+  Vector<double> f(force), ku(n), v0(n), kv(n);
   for (unsigned int l = 0; l < load_shapes.size(); ++l)
     f.add(system.time_dependent_loads[l].amplitude(0.), load_shapes[l]);
+  for (unsigned int i = 0; i < n; ++i)
+    v0[i] = system.fixed[i] ? 0. : system.initial_velocity[i];
   if (system.has_stiffness())
+  {
     system.stiffness.vmult(ku, U);
+    if (a1 != 0.)
+      system.stiffness.vmult(kv, v0);
+  }
+  d_prev.reinit(n);
   for (unsigned int i = 0; i < n; ++i)
   {
-    const double v0 = system.fixed[i] ? 0. : system.initial_velocity[i];
-    (*V)[i] = v0 + 0.5 * dt_minv[i] * (f[i] - ku[i]);
-    (*V_prev)[i] = (*V)[i] - dt_minv[i] * (f[i] - ku[i]); // stands for V_{-1/2}
+    d_prev[i] = system.fixed[i] ? 0. : dt * a0 * v0[i] + a1 * dt_minv[i] * kv[i];
+    const double g = dt_minv[i] * (f[i] - ku[i]) - d_prev[i]; // dt M^-1 G_0
+    (*V)[i] = v0[i] + 0.5 * g;
+    (*V_prev)[i] = (*V)[i] - g; // stands for V_{-1/2}
   }
 
   // contacts: which contacts are coupled through a common free DoF
@@ -259,14 +377,34 @@ void CDLagrange::free_velocity(const bool with_loads)
   // with dt M^-1 folded into the stored operator and force; V_prev receives
   // V_free (it becomes V_{n+3/2} in finish_step())
   const double *const a = with_loads ? dt_minv_force.data() : zero_force.data();
-  free_velocity_kernel(row_width,
-                       U.size(),
-                       column.data(),
-                       value.data(),
-                       U.data(),
-                       V->data(),
-                       a,
-                       V_prev->data());
+  const bool damped = this->damped();
+  if (!damped)
+    free_velocity_kernel(row_width,
+                         U.size(),
+                         column.data(),
+                         value.data(),
+                         U.data(),
+                         V->data(),
+                         a,
+                         V_prev->data());
+  else
+    // (A7) (1 + a0 dt/2) V_free = (1 - a0 dt/2) V_{n+1/2}
+    //        + dt M^-1 (F_ext(t_{n+1}) - K U_{n+1} - a1 K V_{n+1/2}),
+    // damping force D_{n+1} = a0 M (V_{n+1/2} + V_free)/2 + a1 K V_{n+1/2};
+    // its work on dU = dt V_{n+1/2} is 1/2 dU . (D_n + D_{n+1})
+    dissipated += damped_free_velocity_kernel(row_width,
+                                              U.size(),
+                                              column.data(),
+                                              value.data(),
+                                              U.data(),
+                                              V->data(),
+                                              a,
+                                              mass.data(),
+                                              c1,
+                                              c2,
+                                              a1,
+                                              d_prev.data(),
+                                              V_prev->data());
   if (with_loads)
     // work of the time-dependent loads, trapezoidal on the increment
     // (the constant part is F . (U - U_0), computed at output times); the
@@ -277,8 +415,18 @@ void CDLagrange::free_velocity(const bool with_loads)
     {
       const auto &load = system.time_dependent_loads[l];
       const double s1 = load.amplitude(t), s0 = load.amplitude((n_steps - 1) * dt);
-      time_dependent_work += 0.5 * (s0 + s1) * dt * (load_shapes[l] * (*V));
-      V_prev->add(s1, dt_minv_load_shapes[l]);
+      const double load_velocity = load_shapes[l] * (*V);
+      time_dependent_work += 0.5 * (s0 + s1) * dt * load_velocity;
+      if (!damped)
+        V_prev->add(s1, dt_minv_load_shapes[l]);
+      else
+      {
+        // (A7) the load enters V_free scaled by c2; the rest, (1 - c2) of
+        // it, is in the damping force d_{n+1} and in its work
+        V_prev->add(c2 * s1, dt_minv_load_shapes[l]);
+        d_prev.add((1. - c2) * s1, dt_minv_load_shapes[l]);
+        dissipated += 0.5 * (1. - c2) * s1 * dt * load_velocity;
+      }
     }
 }
 
@@ -299,6 +447,7 @@ void CDLagrange::save(Snapshot &s) const
   s.U = U;
   s.V = *V;
   s.V_prev = *V_prev;
+  s.d_prev = d_prev;
   s.t = t;
   s.n_steps = n_steps;
   s.gap = gap;
@@ -306,6 +455,7 @@ void CDLagrange::save(Snapshot &s) const
   s.is_active = is_active;
   s.contact_work = contact_work;
   s.time_dependent_work = time_dependent_work;
+  s.dissipated = dissipated;
 }
 
 void CDLagrange::restore(const Snapshot &s)
@@ -313,6 +463,7 @@ void CDLagrange::restore(const Snapshot &s)
   U = s.U;
   *V = s.V;
   *V_prev = s.V_prev;
+  d_prev = s.d_prev;
   t = s.t;
   n_steps = s.n_steps;
   gap = s.gap;
@@ -320,6 +471,7 @@ void CDLagrange::restore(const Snapshot &s)
   is_active = s.is_active;
   contact_work = s.contact_work;
   time_dependent_work = s.time_dependent_work;
+  dissipated = s.dissipated;
 }
 
 void CDLagrange::apply_contacts()
@@ -409,6 +561,7 @@ Energies CDLagrange::energies() const
   du -= U0;
   e.external_work = force * du + time_dependent_work;
   e.contact_work = contact_work;
+  e.dissipated = dissipated;
   e.kinetic_explicit = e.kinetic;
   e.internal_explicit = e.internal;
   return e;

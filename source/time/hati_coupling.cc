@@ -100,8 +100,8 @@ HATICoupling::HATICoupling(const Decomposition &decomposition,
                            const HATIParameters &parameters,
                            const NewmarkParameters &newmark_parameters,
                            const RayleighDamping &damping)
-    : decomposition(decomposition), m(parameters.time_step_ratio),
-      explicit_integrator(decomposition.parts[0].system, dt, safety_factor),
+    : decomposition(decomposition), m(parameters.time_step_ratio), damping(damping),
+      explicit_integrator(decomposition.parts[0].system, dt, safety_factor, damping),
       implicit(decomposition.parts[1].system, m * dt, newmark_parameters, damping),
       gamma(newmark_parameters.gamma)
 {
@@ -138,7 +138,7 @@ void HATICoupling::precompute_ramp_response()
   const double dt = explicit_integrator.time_step(), DT = m * dt;
 
   // the explicit integrator's own code path, from rest, without loads
-  CDLagrange ramp(system, dt, 1.);
+  CDLagrange ramp(system, dt, 1., damping);
   const auto &shapes = ramp.applied_load_shapes();
   ramp_state.assign(ramp.linear_state().size(), SparseColumns());
   ramp_increment_sum.reinit(n_gamma, n_gamma);
@@ -190,6 +190,41 @@ void HATICoupling::precompute_ramp_response()
         break;
       }
   contacts_in_reach = !reach_contacts.empty();
+
+  // damped: the ramp's velocities and damping forces on the reach, per step
+  if (explicit_integrator.damped())
+  {
+    for (const auto &columns : ramp_state)
+      for (const auto i : columns.rows())
+        reach[i] = true;
+    reach_dofs.clear();
+    for (unsigned int i = 0; i < reach.size(); ++i)
+      if (reach[i])
+        reach_dofs.push_back(i);
+    const unsigned int nR = reach_dofs.size();
+    ramp_velocity_reach.assign(m + 1, FullMatrix<double>(nR, n_gamma));
+    ramp_damping_reach.assign(m + 1, FullMatrix<double>(nR, n_gamma));
+    pass_velocity_reach.assign(m + 1, Vector<double>(nR));
+    pass_damping_reach.assign(m + 1, Vector<double>(nR));
+    for (unsigned int l = 0; l < n_gamma; ++l)
+    {
+      for (auto *v : ramp.linear_state())
+        *v = 0.;
+      for (unsigned int j = 1; j <= m; ++j)
+      {
+        const Vector<double> &V = *ramp.linear_state()[1];
+        for (unsigned int r = 0; r < nR; ++r)
+          ramp_velocity_reach[j](r, l) = V[reach_dofs[r]];
+        ramp.predict();
+        ramp.free_velocity(false);
+        ramp.add_force(rows_E[l], double(j) / m);
+        ramp.finish_step(false);
+        const Vector<double> &d = *ramp.linear_state()[3];
+        for (unsigned int r = 0; r < nR; ++r)
+          ramp_damping_reach[j](r, l) = d[reach_dofs[r]];
+      }
+    }
+  }
 
   // (G3') H = C_E V_ramp + gamma DT C_I M_eff^-1 C_I^T, factorised once
   const unsigned int n_I = decomposition.parts[1].system.n_dofs();
@@ -274,8 +309,21 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end,
   const double dt = explicit_integrator.time_step();
   increment_sum = 0.;
   increment_weighted = 0.;
+  const bool record_damping = !reach_dofs.empty() && !full_multiplier;
+  if (record_damping)
+  {
+    const Vector<double> &d = *explicit_integrator.linear_state()[3];
+    for (unsigned int r = 0; r < reach_dofs.size(); ++r)
+      pass_damping_reach[0][r] = d[reach_dofs[r]];
+  }
   for (unsigned int j = 1; j <= m; ++j)
   {
+    if (record_damping)
+    {
+      const Vector<double> &V = *explicit_integrator.linear_state()[1];
+      for (unsigned int r = 0; r < reach_dofs.size(); ++r)
+        pass_velocity_reach[j][r] = V[reach_dofs[r]];
+    }
     // interface displacement increment of this step, dt C_E V_{j-1/2}
     const Vector<double> &V = *explicit_integrator.linear_state()[1];
     for (unsigned int k = 0; k < n_gamma; ++k)
@@ -299,6 +347,12 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end,
       for (unsigned int k = 0; k < n_gamma; ++k)
         v_end[k] = integer_velocity(rows_E[k], explicit_integrator);
     explicit_integrator.finish_step();
+    if (record_damping)
+    {
+      const Vector<double> &d = *explicit_integrator.linear_state()[3];
+      for (unsigned int r = 0; r < reach_dofs.size(); ++r)
+        pass_damping_reach[j][r] = d[reach_dofs[r]];
+    }
     if (record_contacts)
     {
       take_sample();
@@ -369,6 +423,8 @@ void HATICoupling::step()
                 (ramp_load_work[s][j - 1] * lambda_m);
       }
     explicit_integrator.add_external_work(work);
+    if (!reach_dofs.empty())
+      explicit_integrator.add_dissipated(ramp_dissipation(lambda_m));
     if (after_micro_step)
       for (const auto &recorded : contact_record)
         after_micro_step(recorded);
@@ -463,6 +519,31 @@ void HATICoupling::take_sample()
   sample.normal_velocities.resize(contacts.size());
   for (unsigned int k = 0; k < contacts.size(); ++k)
     sample.normal_velocities[k] = contacts[k].apply(V);
+}
+
+double HATICoupling::ramp_dissipation(const Vector<double> &lambda) const
+{
+  // the integrator booked 1/2 sum_j v_j . M (d_{j-1} + d_j) with the first
+  // pass; with v = v_a + v_r Lambda and d = d_a + d_r Lambda the rest is
+  // 1/2 sum_j [v_a . M D_r + (v_r Lambda) . M (D_a + D_r)], D = d_{j-1} + d_j,
+  // nonzero on the DoFs the ramp reaches only
+  const Vector<double> &mass = decomposition.parts[0].system.lumped_mass;
+  const unsigned int nR = reach_dofs.size();
+  Vector<double> a(nR), b_prev(nR), d_ramp(nR);
+  double sum = 0.;
+  for (unsigned int j = 1; j <= m; ++j)
+  {
+    ramp_velocity_reach[j].vmult(a, lambda);
+    ramp_damping_reach[j].vmult(d_ramp, lambda);
+    for (unsigned int r = 0; r < nR; ++r)
+    {
+      const double D_r = b_prev[r] + d_ramp[r];
+      const double D_a = pass_damping_reach[j - 1][r] + pass_damping_reach[j][r];
+      sum += mass[reach_dofs[r]] * (pass_velocity_reach[j][r] * D_r + a[r] * (D_a + D_r));
+    }
+    b_prev = d_ramp;
+  }
+  return 0.5 * sum;
 }
 
 const Vector<double> &HATICoupling::displacement() const

@@ -5,6 +5,7 @@
 
 #include <hati/model/discrete_system.h>
 #include <hati/time/energies.h>
+#include <hati/time/newmark.h>
 
 #include <array>
 
@@ -16,9 +17,10 @@ using namespace dealii;
 
 /**
  * The CD-Lagrange explicit event-capturing contact/impact integrator
- * (paper (3), algorithms.md A1-A6): central differences on a lumped mass,
+ * (paper (3), algorithms.md A1-A7): central differences on a lumped mass,
  * velocity-level Lagrange multipliers for the contacts, Newton's
- * restitution law, no event detection and no penalty parameter.
+ * restitution law, no event detection and no penalty parameter, and
+ * Rayleigh damping `C = a0 M + a1 K` (A7, doc/theory.md 1.6).
  *
  * State: displacement U_n at integer times, velocity V_{n+1/2} at half
  * times. The integrator only sees a DiscreteSystem: it does not know
@@ -28,21 +30,32 @@ using namespace dealii;
  * rows padded to a fixed width (ELLPACK) so that the row loop is unrolled at
  * compile time (bench/explicit_throughput.sh), so that the hot loop of a step is one pass
  * over U (A1) and one fused pass computing `V_free = V + dt M^-1 (F_ext - K U)` (A2-A3);
- * contacts (A4-A6) only touch the contact DoFs.
+ * contacts (A4-A6) only touch the contact DoFs. With damping (A7) a second
+ * kernel of the same shape computes
+ * `V_free = c1 V + c2 dt M^-1 (F_ext - K U - a1 K V)` and the damping force,
+ * `c1 = (1 - a0 dt/2) / (1 + a0 dt/2)`, `c2 = 1 / (1 + a0 dt/2)`; the
+ * undamped loop is unchanged.
  */
 class CDLagrange
 {
 public:
   /**
-   * Prepare the integrator with time step @p dt (s). Throws, printing the
-   * critical step `dt_crit = 2 / omega_max`, if `dt > safety * dt_crit`.
-   * The initial half-step velocity is
-   * `V_{1/2} = V_0 + dt/2 M^-1 (F_ext(0) - K U_0)`.
+   * Prepare the integrator with time step @p dt (s) and Rayleigh damping
+   * @p damping (`C = a0 M + a1 K` with the lumped M, a0 in 1/s, a1 in s;
+   * none by default). Throws, printing the critical step
+   * `dt_crit = (2 / omega_max) (sqrt(1 + xi^2) - xi)`,
+   * `xi = a1 omega_max / 2` (A7; `2 / omega_max` without stiffness damping),
+   * if `dt > safety_factor * dt_crit` (@p safety_factor, -). The initial
+   * half-step velocity is `V_{1/2} = V_0 + dt/2 M^-1 G_0` with
+   * `G_0 = F_ext(0) - K U_0 - C V_0` (doc/theory.md 1.1).
    */
-  CDLagrange(const DiscreteSystem &system, const double dt, const double safety_factor);
+  CDLagrange(const DiscreteSystem &system,
+             const double dt,
+             const double safety_factor,
+             const RayleighDamping &damping = RayleighDamping());
 
   /**
-   * One step t_n -> t_{n+1}: (A1)-(A6), i.e. predict(), free_velocity(),
+   * One step t_n -> t_{n+1}: (A1)-(A7), i.e. predict(), free_velocity(),
    * finish_step().
    */
   void step();
@@ -57,22 +70,29 @@ public:
 
   /**
    * (A2)-(A3) the free velocity `V_free = V_{n+1/2} + dt M^-1 (F_ext(t_{n+1})
-   * - K U_{n+1})`; without the external loads if @p with_loads is false
-   * (the homogeneous response of the coupling's unit ramp, G3').
+   * - K U_{n+1})`; with damping (A7)
+   * `(1 + a0 dt/2) V_free = (1 - a0 dt/2) V_{n+1/2} + dt M^-1 (F_ext(t_{n+1})
+   * - K U_{n+1} - a1 K V_{n+1/2})`, i.e. the damping force
+   * `D_{n+1} = a0 M (V_{n+1/2} + V_free)/2 + a1 K V_{n+1/2}`, whose work
+   * is booked in dissipated_energy(). Without the external loads if
+   * @p with_loads is false (the homogeneous response of the coupling's unit
+   * ramp, G3').
    */
   void free_velocity(const bool with_loads = true);
 
   /**
    * Add a force @p force (N) along the row @p row acting over the whole step:
    * `V_free += dt M^-1 row^T force` (the interface force `C_E^T Lambda_j`
-   * of G2).
+   * of G2). It is not scaled by the damping factor `c2` and not part of the
+   * damping force D_{n+1} (A7).
    */
   void add_force(const SparseRow &row, const double force);
 
   /**
    * The velocity at the integer time t_{n+1} of DoF @p i,
-   * `(V_{n+1/2} + V_free) / 2 = V_{n+1/2} + dt/2 M^-1 F_{n+1}` (G2), valid
-   * between free_velocity() and finish_step().
+   * `(V_{n+1/2} + V_free) / 2 = V_{n+1/2} + dt/2 M^-1 F_{n+1}` (G2), with
+   * `F_{n+1}` the whole force of the update (damping D_{n+1} included, A7),
+   * valid between free_velocity() and finish_step().
    */
   double integer_velocity(const unsigned int i) const
   {
@@ -85,20 +105,23 @@ public:
 
   /**
    * The vectors of the linear state between two steps, {U_n, V_{n+1/2},
-   * V_{n-1/2}}, for the coupling: it adds the response to the interface
+   * V_{n-1/2}, d_n}, for the coupling: it adds the response to the interface
    * multiplier by superposition (G3') and reads and sets the state.
+   * `d_n = dt M^-1 D_n` (m/s) is the damping force of the last update (A7),
+   * all zeros without damping. The dissipated energy is quadratic in the
+   * state: the coupling corrects it with add_dissipated().
    */
-  std::array<Vector<double> *, 3> linear_state() { return {{&U, V, V_prev}}; }
+  std::array<Vector<double> *, 4> linear_state() { return {{&U, V, V_prev, &d_prev}}; }
 
   /** Everything a step changes, to redo steps (coupling with contacts). */
   struct Snapshot
   {
-    Vector<double> U, V, V_prev;
+    Vector<double> U, V, V_prev, d_prev;
     double t = 0.;
     unsigned long n_steps = 0;
     std::vector<double> gap, lambda;
     std::vector<bool> is_active;
-    double contact_work = 0., time_dependent_work = 0.;
+    double contact_work = 0., time_dependent_work = 0., dissipated = 0.;
   };
   void save(Snapshot &snapshot) const;
   void restore(const Snapshot &snapshot);
@@ -115,7 +138,11 @@ public:
   /** Diagonal of M^-1 (1/kg), zero on fixed DoFs. */
   const Vector<double> &inverse_mass() const { return minv; }
 
-  /** Critical time step 2 / omega_max (s); +infinity without stiffness. */
+  /**
+   * Critical time step (s): `(2 / omega_max) (sqrt(1 + xi^2) - xi)`,
+   * `xi = a1 omega_max / 2` (A7; `2 / omega_max` for a1 = 0); +infinity
+   * without stiffness.
+   */
   double critical_time_step() const { return dt_crit; }
   double time_step() const { return dt; }
   double time() const { return t; }
@@ -135,6 +162,22 @@ public:
   /** Whether contact k was active (g_k <= 0) in the last step (A4). */
   const std::vector<bool> &active() const { return is_active; }
 
+  /** Mass-proportional Rayleigh coefficient a0 (1/s). */
+  double mass_damping_coefficient() const { return a0; }
+  /** Stiffness-proportional Rayleigh coefficient a1 (s). */
+  double stiffness_damping_coefficient() const { return a1; }
+  /** Whether a0 or a1 is non-zero (the damped kernel is used, A7). */
+  bool damped() const { return a0 != 0. || a1 != 0.; }
+
+  /**
+   * Energy dissipated by the damping since t = 0 (J): the work of the
+   * damping force with the velocities of the updates,
+   * `sum_j 1/2 (U_{j+1} - U_j) . (D_j + D_{j+1})` (doc/theory.md 1.6).
+   */
+  double dissipated_energy() const { return dissipated; }
+  /** Add @p energy (J) to dissipated_energy() (corrections of the coupling). */
+  void add_dissipated(const double energy) { dissipated += energy; }
+
   /** Discrete energies at t_n (computes K U_n: call at output times). */
   Energies energies() const;
 
@@ -143,6 +186,11 @@ private:
 
   const DiscreteSystem &system;
   const double dt;
+  /** Rayleigh coefficients a0 (1/s), a1 (s) (A7). */
+  const double a0, a1;
+  /** Factors of the damped update, `(1 - a0 dt/2) / (1 + a0 dt/2)` and `1 / (1 + a0
+   * dt/2)`. */
+  const double c1, c2;
   double dt_crit;
   double t = 0.;
   unsigned long n_steps = 0;
@@ -159,6 +207,8 @@ private:
   Vector<double> dt_minv_force;
   Vector<double> dt_minv;
   Vector<double> minv;
+  /** Lumped mass (kg), zero on fixed DoFs. */
+  Vector<double> mass;
   /** Zero vector: the load term of a homogeneous step. */
   Vector<double> zero_force;
   std::vector<Vector<double>> dt_minv_load_shapes;
@@ -168,6 +218,10 @@ private:
   Vector<double> velocity_a, velocity_b;
   Vector<double> *V;      // V_{n+1/2}
   Vector<double> *V_prev; // V_{n-1/2}
+  /** `dt M^-1 D_n` (m/s), the damping force of the last update (A7). */
+  Vector<double> d_prev;
+  /** Work of the damping forces since t = 0 (J). */
+  double dissipated = 0.;
 
   // contacts
   std::vector<double> gap, lambda;

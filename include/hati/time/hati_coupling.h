@@ -194,6 +194,7 @@ private:
 
   const Decomposition &decomposition;
   const unsigned int m;
+  const RayleighDamping damping;
   CDLagrange explicit_integrator;
   Newmark implicit;
   const double gamma;
@@ -238,6 +239,16 @@ private:
    */
   FullMatrix<double> link_columns;
   Vector<double> link_acceleration;
+
+  // With damping (A7) the dissipated energy is bilinear in the explicit
+  // state: its part from the ramp response needs, on the DoFs the ramp
+  // reaches, the ramp's velocities V_{j-1/2} and damping forces d_j per
+  // micro step (|R| x n_G each) and those of the first pass.
+  std::vector<unsigned int> reach_dofs;
+  std::vector<FullMatrix<double>> ramp_velocity_reach, ramp_damping_reach;
+  std::vector<Vector<double>> pass_velocity_reach, pass_damping_reach;
+  /** The dissipated energy of the ramp part, after the first pass (G3', A7). */
+  double ramp_dissipation(const Vector<double> &lambda) const;
   mutable Vector<double> global_U, global_V;
   CDLagrange::Snapshot snapshot;
 };

@@ -1,0 +1,112 @@
+#!/usr/bin/python3
+"""Rayleigh damping in the explicit CD-Lagrange integrator (algorithms.md A7,
+doc/theory.md 1.6) on the 3D portal frame (parameter_files/
+portal_frame_dynamic.prm) under a base acceleration step, with a damping
+ratio of 5 % at the first sway frequency (both frequencies of the damping
+ratio set to it: a0 = zeta w1, a1 = zeta / w1), checked against:
+- the implicit Newmark integrator with the same damping: the two top-sway
+  histories (A1ux) agree, and so do the dissipated energies;
+- the damped SDOF: the excursions about the static displacement decay by
+  exp(-2 pi zeta / sqrt(1 - zeta^2)) per period;
+- the critical step of the damped explicit scheme,
+  (2 / w_max)(sqrt(1 + xi^2) - xi), xi = a1 w_max / 2 (w_max = 2 / the
+  undamped dt_crit): a step above it is refused with a message naming the
+  damping; mass damping alone leaves the step unchanged;
+- the discrete energy balance of the explicit run, with the dissipated
+  energy booked as the work of the damping force (round-off)."""
+import re
+import subprocess
+
+import numpy as np
+
+from hati_test import Context, read_csv, read_summary
+
+ctx = Context()
+prm = ctx.prm("portal_frame_dynamic.prm")
+zeta = 0.05
+quiet = ["Output/Output interval=0", "Output/History interval=1e-3", "Time integration/End time=1"]
+
+out, _ = ctx.run(prm, "static", ["Analysis/Type=static", "Loading/Gravity=-1, 0, 0",
+                                 "Loading/Base acceleration=0, 0, 0"])
+u_static = read_csv(out + "/history.csv")["A1ux"][0]
+
+out, _ = ctx.run(prm, "modal", ["Analysis/Type=modal"])
+modes = read_csv(out + "/modes.csv")
+f1 = modes["frequency"][np.argmax(modes["effective_mass_ratio_x"])]
+w1 = 2 * np.pi * f1
+a0, a1 = zeta * w1, zeta / w1
+print("first sway frequency %.6g Hz: a0 = %.6g 1/s, a1 = %.6g s" % (f1, a0, a1))
+rayleigh = ["Time integration/Damping/Damping ratio=%g" % zeta,
+            "Time integration/Damping/First frequency=%.15g" % f1,
+            "Time integration/Damping/Second frequency=%.15g" % f1]
+explicit = ["Time integration/Method=CD-Lagrange"]
+
+
+def sway(out):
+    h = read_csv(out + "/history.csv")
+    return h["time"], h["A1ux"]
+
+
+def peaks(t, x):
+    """Maxima of x (sampled), refined by a parabola through three samples."""
+    i = np.where((x[1:-1] > x[:-2]) & (x[1:-1] >= x[2:]))[0] + 1
+    a, b, c = x[i - 1], x[i], x[i + 1]
+    s = 0.5 * (a - c) / (a - 2 * b + c)
+    return t[i] + s * (t[1] - t[0]), b - 0.25 * (a - c) * s
+
+
+# 1. mass damping alone (a0 = 2 zeta w1) does not lower the step: dt = 2e-5
+mass_only = ["Time integration/Damping/Mass coefficient=%.15g" % (2 * zeta * w1)]
+out_m, p = ctx.run(prm, "explicit_mass", explicit + mass_only + quiet +
+                   ["Time integration/Time step=2e-5"])
+dt_crit0 = read_summary(out_m)["dt_crit"]
+out_mi, _ = ctx.run(prm, "implicit_mass", mass_only + quiet + ["Time integration/Time step=2.5e-4"])
+(te, ue), (ti, ui) = sway(out_m), sway(out_mi)
+diff = np.max(np.abs(np.interp(ti, te, ue) - ui)) / np.max(np.abs(ui))
+ctx.check("a0 only: explicit (dt 2e-5) vs Newmark A1ux, max diff / peak", diff, 0.0, abs_tol=0.02)
+
+# 2. the Rayleigh damping at dt = 2e-5 is refused: a1 lowers the critical step
+out_r, p = ctx.run(prm, "refused", explicit + rayleigh + quiet + ["Time integration/Time step=2e-5"],
+                   expect_failure=True)
+m = re.search(r"dt_crit = [^=]*= ([0-9.eE+-]+) s", p.stderr)
+ctx.check_true("Rayleigh damping, dt = 2e-5 s refused, the message names the damping",
+               p.returncode != 0 and m is not None and "damping" in p.stderr, p.stderr.strip())
+w_max = 2.0 / dt_crit0
+xi = a1 * w_max / 2
+dt_crit = 2.0 / w_max * (np.sqrt(1 + xi * xi) - xi)
+print("undamped dt_crit %.6g s, w_max %.6g rad/s, xi = %.6g: damped dt_crit %.6g s"
+      % (dt_crit0, w_max, xi, dt_crit))
+if m:
+    ctx.check("printed damped dt_crit (s) vs (2/w_max)(sqrt(1+xi^2)-xi)", float(m.group(1)),
+              dt_crit, rel=1e-5)
+
+# 3. the damped explicit run (0.9 dt_crit) against Newmark (dt = 2.5e-4)
+dt = 0.9 * dt_crit
+out_e, _ = ctx.run(prm, "explicit", explicit + rayleigh + quiet +
+                   ["Time integration/Time step=%.12g" % dt])
+out_i, _ = ctx.run(prm, "implicit", rayleigh + quiet + ["Time integration/Time step=2.5e-4"])
+(te, ue), (ti, ui) = sway(out_e), sway(out_i)
+diff = np.max(np.abs(np.interp(ti, te, ue) - ui)) / np.max(np.abs(ui))
+# lumped vs consistent mass (also in C), first vs second order damping: 2 %
+ctx.check("Rayleigh: explicit vs Newmark A1ux, max diff / peak", diff, 0.0, abs_tol=0.02)
+
+# decay of the sway excursions about the static displacement (the sway is
+# negative: peaks of -(u - u_static)), one period apart
+ratio = np.exp(-2 * np.pi * zeta / np.sqrt(1 - zeta ** 2))
+for name, t, u in (("explicit", te, ue), ("Newmark", ti, ui)):
+    tp, xp = peaks(t, -(u - u_static))
+    r = xp[1:] / xp[:-1]
+    print("%s: %d peaks, successive ratios %s" % (name, len(xp), np.array2string(r, precision=4)))
+    ctx.check_true("%s: at least 5 sway peaks in 1 s" % name, len(xp) >= 5)
+    worst = r[np.argmax(np.abs(r - ratio))]
+    ctx.check("%s: worst ratio of successive peaks vs exp(-2 pi zeta/sqrt(1-zeta^2))" % name,
+              worst, ratio, rel=0.1)
+
+se, si = read_summary(out_e), read_summary(out_i)
+ctx.check("explicit energy balance relative error", se["energy_balance_relative"], 0.0,
+          abs_tol=1e-9)
+ctx.check("Newmark energy balance relative error", si["energy_balance_relative"], 0.0,
+          abs_tol=1e-9)
+de, di = read_csv(out_e + "/energy.csv")["dissipated"][-1], read_csv(out_i + "/energy.csv")["dissipated"][-1]
+ctx.check("dissipated energy at t = 1 s (J), explicit vs Newmark", de, di, rel=0.01)
+ctx.finish()
