@@ -400,32 +400,55 @@ void Newmark::step()
 
 void Newmark::free_step()
 {
-  // (N1) predictors
-  U_star = U;
-  U_star.add(dt, V, dt * dt * (0.5 - beta), A);
-  V_star = V;
-  V_star.add(dt * (1. - gamma), A);
+  const unsigned int n = U.size();
+  // (N1) predictors U* = U_n + DT V_n + DT^2 (1/2 - beta) A_n,
+  // V* = V_n + DT (1 - gamma) A_n, in one pass
+  {
+    const double cu1 = dt, cu2 = dt * dt * (0.5 - beta), cv = dt * (1. - gamma);
+    const double *__restrict u = U.data(), *__restrict v = V.data(),
+                             *__restrict a = A.data();
+    double *__restrict us = U_star.data(), *__restrict vs = V_star.data();
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      us[i] = u[i] + cu1 * v[i] + cu2 * a[i];
+      vs[i] = v[i] + cv * a[i];
+    }
+  }
 
   // (N2) M_eff A_{n+1} = F_{n+1} - C V* - K U*
   const double t_new = (n_steps + 1) * dt;
   system.external_force(t_new, F_new);
-  rhs = F_new;
   stiffness_vmult(CV_new, U_star);
-  rhs -= CV_new;
+  {
+    const double *__restrict f = F_new.data(), *__restrict ku = CV_new.data();
+    double *__restrict r = rhs.data();
+    for (unsigned int i = 0; i < n; ++i)
+      r[i] = system.fixed[i] ? 0. : f[i] - ku[i];
+  }
   if (a0 != 0. || a1 != 0.)
   {
     damping_vmult(CV_new, V_star);
     rhs -= CV_new;
+    zero_fixed(rhs);
   }
-  zero_fixed(rhs);
   // A_n is the initial guess of CG; A_new becomes A_{n+1}
-  A_new = A;
+  if (!direct)
+    A_new = A;
   solve_with_effective_matrix(A_new, rhs);
-  zero_fixed(A_new);
 
   // (N3) correctors: U_star becomes U_{n+1}, V_star V_{n+1}
-  U_star.add(beta * dt * dt, A_new);
-  V_star.add(gamma * dt, A_new);
+  {
+    const double cu = beta * dt * dt, cv = gamma * dt;
+    double *__restrict a = A_new.data(), *__restrict us = U_star.data(),
+                       *__restrict vs = V_star.data();
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      if (system.fixed[i])
+        a[i] = 0.;
+      us[i] += cu * a[i];
+      vs[i] += cv * a[i];
+    }
+  }
 }
 
 void Newmark::add_link(const Vector<double> &force)
@@ -448,13 +471,20 @@ void Newmark::add_link_acceleration(const Vector<double> &a_link)
 
 void Newmark::finish_step()
 {
-  // energies: dU = U_{n+1} - U_n
-  tmp = U_star;
-  tmp -= U;
-  F += F_new;
-  external_work += 0.5 * (tmp * F);
+  // energies: 1/2 (U_{n+1} - U_n) . (F_n + F_{n+1}) (and the damping's work)
+  const unsigned int n = U.size();
+  double work = 0.;
+  {
+    const double *__restrict u = U.data(), *__restrict us = U_star.data(),
+                             *__restrict f = F.data(), *__restrict fn = F_new.data();
+    for (unsigned int i = 0; i < n; ++i)
+      work += (us[i] - u[i]) * (f[i] + fn[i]);
+  }
+  external_work += 0.5 * work;
   if (a0 != 0. || a1 != 0.)
   {
+    tmp = U_star;
+    tmp -= U;
     damping_vmult(CV_new, V_star);
     CV += CV_new;
     dissipated += 0.5 * (tmp * CV);
