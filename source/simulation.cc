@@ -193,13 +193,6 @@ void Simulation::run()
       { return (*record)(t) + (step ? step(t) : 0.); };
     }
   add_base_excitation(system, acceleration);
-  if (time_parameters.method == "HATI" && analysis_parameters.type == "transient")
-  {
-    decomposition = std::make_unique<Decomposition>();
-    decompose(*model, common_parameters, decomposition_parameters, *decomposition);
-    for (auto &part : decomposition->parts)
-      add_base_excitation(part.system, acceleration);
-  }
   if (analysis_parameters.type == "static")
     return run_static();
   if (analysis_parameters.type == "modal")
@@ -217,6 +210,22 @@ void Simulation::run()
               ExcMessage("Time integration/Damping: Rayleigh damping is applied by the "
                          "CD-Lagrange and Newmark integrators only; remove it for "
                          "Method = event-driven."));
+  if (time_parameters.method == "HATI")
+  {
+    // the subdomains, with the initial state just set (static or given)
+    decomposition = std::make_unique<Decomposition>();
+    decompose(*model, common_parameters, decomposition_parameters, *decomposition);
+    for (auto &part : decomposition->parts)
+    {
+      add_base_excitation(part.system, acceleration);
+      for (unsigned int i = 0; i < part.global_dofs.size(); ++i)
+      {
+        part.system.initial_displacement[i] =
+            system.initial_displacement[part.global_dofs[i]];
+        part.system.initial_velocity[i] = system.initial_velocity[part.global_dofs[i]];
+      }
+    }
+  }
   if (time_parameters.method == "event-driven")
     run_event_driven();
   else if (time_parameters.method == "Newmark")

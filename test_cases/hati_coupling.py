@@ -131,6 +131,34 @@ for method in ("Newmark", "HATI"):
               ed[method]["dissipated"][-1], ed["CD-Lagrange"]["dissipated"][-1], rel=0.02)
 check_balance("damped frame HATI m = 10", runs["HATI"])
 
+# gravity on both sides from the static state (Initial state = static): the
+# run starts at rest on the static deflection (Lambda_0 = the static
+# interface force) and stays there; the explicit side carries gravity with
+# its lumped mass, the static state has the consistent load: a residual
+# oscillation of 0.15 % of the deflection (0.3 % fully explicit)
+out, _ = ctx.run(frame, "frame_gravity_static",
+                 ["Loading/Gravity=0, 0, -9.81", "Loading/Base acceleration=0, 0, 0",
+                  "Analysis/Initial state=static", "Time integration/End time=0.1", no_vtu])
+h = read_csv(out + "/history.csv")
+for node in ("A1", "D1"):
+    ctx.check("gravity from the static state: %s.uz drift / static deflection" % node,
+              np.max(np.abs(h[node + "uz"] - h[node + "uz"][0])) / abs(h[node + "uz"][0]), 0.0,
+              abs_tol=0.005)
+check_balance("gravity from the static state", out)
+
+# a hinged interface (A1, B1 hinged: the translations only are shared)
+out, _ = ctx.run(frame, "frame_hinged", ["Model/Frame/Hinged joints=A1, B1", no_vtu,
+                                         "Time integration/End time=0.2"])
+out_r, _ = ctx.run(frame, "frame_hinged_explicit", ["Model/Frame/Hinged joints=A1, B1", no_vtu,
+                                                    "Time integration/End time=0.2",
+                                                    "Time integration/Method=CD-Lagrange"])
+h, r = read_csv(out + "/history.csv"), read_csv(out_r + "/history.csv")
+ctx.check_true("hinged interface: 6 interface DoFs (translations of A1, B1)",
+               read_summary(out)["n_interface_dofs"] == 6, str(read_summary(out)["n_interface_dofs"]))
+ctx.check("hinged interface: A1.ux vs fully explicit / peak",
+          np.max(np.abs(h["A1ux"] - np.interp(h["time"], r["time"], r["A1ux"]))) /
+          np.max(np.abs(r["A1ux"])), 0.0, abs_tol=0.01)
+
 # 1e4 macro steps (m = 20, 4 s): bounded (the undamped step response peaks at
 # about twice the static sway: within 5 % of the explicit run's peak) and the
 # energy balance still closed
@@ -170,6 +198,23 @@ for m, region in ((1, "0.5, 1"), (5, "0.5, 1"), (10, "0.5, 1"), (10, "0.95, 1"),
     within_reach = region != "0.5, 1"
     ctx.check_true(tag + ": macro steps redone only with the contact within reach",
                    (s["redone_macro_steps"] > 0) == within_reach, str(s["redone_macro_steps"]))
+
+# the 3D solid (code_aster SDNV100, laterally constrained: P-wave speed) with
+# the impacting half explicit, m = 2: contact 2 L / c_P, force rho c_P A v0
+out, _ = ctx.run(ctx.prm("bar_impact_3d.prm"), "solid_m2",
+                 ["Time integration/Method=HATI", "Model/Decomposition/Explicit region=0.1, 0.2",
+                  "Time integration/HATI/Time step ratio=2", "Time integration/Time step=1e-7",
+                  no_vtu])
+c = read_csv(out + "/contacts.csv")
+on = np.where(c["impulse"] > 0)[0]
+E, nu, rho = 2e11, 0.3, 8000.0
+c_p = np.sqrt(E * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * rho))
+ctx.check("solid m = 2: contact duration (s)", c["time"][on[-1]] - c["time"][on[0]] + 1e-7,
+          2 * 0.2 / c_p, rel=0.015)
+f = c["force"][on[0]:on[-1] + 1]
+ctx.check("solid m = 2: plateau force (N)", np.mean(f[len(f) // 4:3 * len(f) // 4]),
+          rho * c_p * 4e-4 * 100, rel=0.01)
+check_balance("solid m = 2", out)
 
 # --- bad decompositions --------------------------------------------------------
 def expect_error(what, prm, sets, *fragments):
