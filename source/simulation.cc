@@ -77,12 +77,13 @@ public:
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double fraction = t / end_time;
+    const auto precision = std::cout.precision();
     std::cout << "  t = " << std::setw(12) << std::setprecision(6) << t << " s ("
               << std::setw(5) << std::fixed << std::setprecision(1) << 100. * fraction
               << " %), step " << step << ", wall " << std::setprecision(1) << wall
               << " s, remaining ~"
               << (fraction > 0. ? wall * (1. - fraction) / fraction : 0.) << " s"
-              << std::defaultfloat << std::endl;
+              << std::defaultfloat << std::setprecision(precision) << std::endl;
   }
 
   double wall_time() const

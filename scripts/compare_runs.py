@@ -1,0 +1,146 @@
+#!/usr/bin/python3
+"""Compare two runs with contacts (e.g. fully explicit vs HATI, paper Fig. 9).
+
+Prints, per contact name of contacts.csv:
+- the contact-loss episodes of both runs: maximal intervals without contact
+  impulse after the first contact (start = first row without impulse,
+  end = first row with impulse again; an episode still open at the end of
+  the run ends with "open"), matched by order, with their differences;
+- the peak contact force of both runs and its difference;
+and the wall times of both runs (summary.json) and the speed-up of B over A.
+With --monitor COLUMN (a history.csv column, e.g. trolley_wheel_1.uz) it also
+draws COLUMN of both runs against time, full length and a zoom (--zoom
+t0,t1; default: around the first contact-loss episode of run A), as PNG.
+
+Usage: scripts/compare_runs.py RUN_A RUN_B [--monitor COLUMN] [--zoom T0,T1]
+                               [--png FILE] [--min-duration S]
+Episodes shorter than --min-duration (s, default 0) are ignored (chatter).
+Exit code 0; the numbers are for the user (and tests) to judge."""
+import argparse
+import json
+import os
+import sys
+
+import numpy as np
+
+
+def read_csv(path):
+    return np.atleast_1d(np.genfromtxt(path, delimiter=",", names=True, dtype=None,
+                                       encoding=None))
+
+
+def episodes(t, impulse, min_duration):
+    """Contact-loss episodes (start, end or None) after the first contact."""
+    on = impulse > 0
+    if not on.any():
+        return []
+    first = np.argmax(on)
+    result, start = [], None
+    for i in range(first, len(t)):
+        if not on[i] and start is None:
+            start = t[i]
+        elif on[i] and start is not None:
+            if t[i] - start >= min_duration:
+                result.append((start, t[i]))
+            start = None
+    if start is not None:
+        result.append((start, None))
+    return result
+
+
+def contact_table(run):
+    c = read_csv(os.path.join(run, "contacts.csv"))
+    names = list(dict.fromkeys(c["contact"]))
+    return {n: c[c["contact"] == n] for n in names}
+
+
+def summary(run):
+    with open(os.path.join(run, "summary.json")) as f:
+        return json.load(f)
+
+
+def fmt(x):
+    return "open" if x is None else "%.6f" % x
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("run_a")
+    p.add_argument("run_b")
+    p.add_argument("--monitor", help="history.csv column to plot (e.g. NODE.uz)")
+    p.add_argument("--zoom", help="t0,t1 of the zoomed plot (s)")
+    p.add_argument("--png", default="compare_runs.png", help="output picture")
+    p.add_argument("--min-duration", type=float, default=0.0,
+                   help="ignore contact-loss episodes shorter than this (s)")
+    a = p.parse_args()
+    ca, cb = contact_table(a.run_a), contact_table(a.run_b)
+    sa, sb = summary(a.run_a), summary(a.run_b)
+    print("A: %s (%s)\nB: %s (%s)" % (a.run_a, sa.get("method"), a.run_b, sb.get("method")))
+    worst_time, worst_force = 0.0, 0.0
+    first_episode = None
+    for name in ca:
+        if name not in cb:
+            print("contact %s: only in A" % name)
+            continue
+        ea = episodes(ca[name]["time"], ca[name]["impulse"], a.min_duration)
+        eb = episodes(cb[name]["time"], cb[name]["impulse"], a.min_duration)
+        fa, fb = np.max(ca[name]["force"]), np.max(cb[name]["force"])
+        print("\ncontact %s: %d contact-loss episodes in A, %d in B; peak force A %.6g N, "
+              "B %.6g N (%+.2f %%)" % (name, len(ea), len(eb), fa, fb,
+                                       100 * (fb - fa) / fa if fa else 0.0))
+        worst_force = max(worst_force, abs(fb - fa) / fa if fa else 0.0)
+        print("  %3s %12s %12s %12s %12s %11s %11s" % ("#", "start A", "end A", "start B",
+                                                    "end B", "d start", "d end"))
+        for k in range(max(len(ea), len(eb))):
+            sa_, ea_ = ea[k] if k < len(ea) else (None, None)
+            sb_, eb_ = eb[k] if k < len(eb) else (None, None)
+            ds = sb_ - sa_ if sa_ is not None and sb_ is not None else None
+            de = eb_ - ea_ if ea_ is not None and eb_ is not None else None
+            for d in (ds, de):
+                if d is not None:
+                    worst_time = max(worst_time, abs(d))
+            print("  %3d %12s %12s %12s %12s %11s %11s" % (
+                k + 1, fmt(sa_), fmt(ea_), fmt(sb_), fmt(eb_),
+                "-" if ds is None else "%+.2e" % ds, "-" if de is None else "%+.2e" % de))
+            if first_episode is None and sa_ is not None:
+                first_episode = (sa_, ea_ if ea_ is not None else sa_ + 0.05)
+    wa, wb = sa.get("stepping_wall_time", sa["wall_time"]), sb.get("stepping_wall_time",
+                                                                   sb["wall_time"])
+    print("\nlargest difference of episode start/end times: %.3e s; of peak forces: %.2f %%"
+          % (worst_time, 100 * worst_force))
+    print("wall time of the time stepping: A %.3f s, B %.3f s, speed-up of B over A %.2f"
+          % (wa, wb, wa / wb if wb > 0 else float("nan")))
+    if a.monitor:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        ha = read_csv(os.path.join(a.run_a, "history.csv"))
+        hb = read_csv(os.path.join(a.run_b, "history.csv"))
+        column = a.monitor.replace(".", "")  # numpy drops the dot of NODE.uz
+        if column not in ha.dtype.names:
+            sys.exit("compare_runs.py: no column %s in history.csv" % a.monitor)
+        if a.zoom:
+            z0, z1 = (float(x) for x in a.zoom.split(","))
+        elif first_episode:
+            z0, z1 = first_episode[0] - 0.02, first_episode[1] + 0.02
+        else:
+            z0, z1 = ha["time"][0], ha["time"][-1]
+        fig, ax = plt.subplots(1, 2, figsize=(13, 4.5))
+        for axis, (lo, hi) in zip(ax, ((ha["time"][0], ha["time"][-1]), (z0, z1))):
+            for h, label, style in ((ha, "A: " + str(sa.get("method")), "k-"),
+                                    (hb, "B: " + str(sb.get("method")), "C3--")):
+                sel = (h["time"] >= lo) & (h["time"] <= hi)
+                axis.plot(h["time"][sel], h[column][sel], style, label=label)
+            axis.set_xlabel("time (s)")
+            axis.set_ylabel(a.monitor + " (m)")
+            axis.grid(alpha=0.3)
+            axis.legend()
+        ax[0].set_title("%s: whole run" % a.monitor)
+        ax[1].set_title("zoom %.3f-%.3f s" % (z0, z1))
+        fig.tight_layout()
+        fig.savefig(a.png, dpi=110)
+        print("wrote %s" % a.png)
+
+
+if __name__ == "__main__":
+    main()
