@@ -7,6 +7,7 @@
 #include <hati/simulation.h>
 
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -133,7 +134,23 @@ int run_command_line(int argc, char **argv)
     const std::string file = vm["parameter-file"].as<std::string>();
     AssertThrow(std::filesystem::is_regular_file(file),
                 ExcMessage("parameter file '" + file + "' does not exist"));
-    prm.parse_input(file);
+    const std::string extension = std::filesystem::path(file).extension().string();
+    if (extension == ".json" || extension == ".xml")
+      prm.parse_input(file);
+    else
+    {
+      // .prm: accept a UTF-8 byte-order mark (editors on Windows write one)
+      std::ifstream in(file);
+      AssertThrow(in, ExcMessage("cannot read the parameter file '" + file + "'"));
+      char bom[3] = {0, 0, 0};
+      in.read(bom, 3);
+      if (!(in.gcount() == 3 && bom[0] == '\xEF' && bom[1] == '\xBB' && bom[2] == '\xBF'))
+      {
+        in.clear();
+        in.seekg(0);
+      }
+      prm.parse_input(in, file);
+    }
     if (vm.count("set"))
       for (const auto &s : vm["set"].as<std::vector<std::string>>())
         apply_override(prm, s);

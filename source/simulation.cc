@@ -170,6 +170,7 @@ Simulation::~Simulation() = default;
 void Simulation::run()
 {
   model->build(common_parameters, system);
+  check_finite(system);
   std::cout << "hati: " << parameter_file << "\n  model: " << model->description()
             << "\n  DoFs: " << system.n_dofs() << ", contacts: " << system.contacts.size()
             << "\n  output: " << output_directory << "/" << std::endl;

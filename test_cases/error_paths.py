@@ -96,6 +96,55 @@ if m:
     ctx.check("printed damped dt_crit (s)", float(m.group(1)),
               2 / w_max * (np.sqrt(1 + xi * xi) - xi), rel=1e-5)
 
+# bad inputs that used to get through or got a wrong diagnosis (issue #7):
+# each must give one line naming the entry and the cause
+portal = os.path.join(ctx.source, "parameter_files", "portal_frame_dynamic.prm")
+sections = "beam: box, 0.2, 0.4, 0.008, 0.012"
+bad_frame = [
+    ("a negative point mass", "Model/Frame/Point masses=A1: -500",
+     ["Point masses", "A1", ">= 0"]),
+    ("a duplicate section name",
+     "Model/Frame/Sections=column: box, 0.3, 0.3, 0.01, 0.01; column: box, 0.3, 0.3, 0.01, "
+     "0.01; " + sections, ["Sections", "'column' is defined twice"]),
+    ("a duplicate material name", "Model/Frame/Materials=steel: 2.1e11, 0.3, 7850; steel: "
+     "2e11, 0.3, 7850", ["Materials", "'steel' is defined twice"]),
+    ("a node listed twice in Supports",
+     "Model/Frame/Supports=A0: clamped; A0: clamped; B0: clamped; C0: clamped; D0: clamped",
+     ["Supports", "'A0' is listed twice"]),
+    ("a zero section orientation vector",
+     "Model/Frame/Members=colA: A0, A1, column, steel, 8, 0, 0, 0; colB: B0, B1, column, "
+     "steel, 8", ["Members", "colA", "orientation vector", "zero"]),
+    ("an element count that overflows 32 bits",
+     "Model/Frame/Members=colA: A0, A1, column, steel, 4294967297; colB: B0, B1, column, "
+     "steel, 8", ["Members", "colA", "from 1 to 10000000", "4294967297"]),
+    ("a zero section dimension (message names the entry, not a C++ function)",
+     "Model/Frame/Sections=column: rectangle, 0, 0.3; " + sections,
+     ["Sections", "'column'", "rectangle needs b > 0"]),
+    ("E = 1e308: overflow named", "Model/Frame/Materials=steel: 1e308, 0.3, 7850",
+     ["stiffness matrix", "not finite (overflow)"]),
+    ("a node at 1e200: overflow named",
+     "Model/Frame/Nodes=A0: 0, 0, 0; A1: 0, 0, 1e200; B0: 6, 0, 0; B1: 6, 0, 5; C0: 0, 4, 0; "
+     "C1: 0, 4, 5; D0: 6, 4, 0; D1: 6, 4, 5", ["colA", "overflow", "node coordinates too large"]),
+    ("a time step that would take 2e30 steps", "Time integration/Time step=1e-30",
+     ["Maximum number of steps", "2e+30"]),
+]
+for what, assignment, fragments in bad_frame:
+    expect_error(what, [portal, "--set", assignment, "--set",
+                        "Output/Output directory=" + os.path.join(ctx.work, "bad")], *fragments)
+expect_error("a bar element count above its maximum",
+             [bar, "--set", "Model/Bar/Number of elements=200000000"], "Number of elements",
+             "1e8")
+
+# a UTF-8 byte-order mark at the start of a .prm is accepted
+with open(os.path.join(ctx.source, "parameter_files", "bouncing_ball.prm"), "rb") as f:
+    text = f.read()
+bom_prm = os.path.join(ctx.work, "bom.prm")
+with open(bom_prm, "wb") as f:
+    f.write(b"\xef\xbb\xbf" + text)
+rc, err = hati(bom_prm, "--set", "Time integration/End time=0.1",
+               "--set", "Output/Output directory=" + os.path.join(ctx.work, "bom"))
+ctx.check_true("a .prm starting with a UTF-8 byte-order mark runs", rc == 0, err)
+
 # the documented entry names exist
 rc = subprocess.run([ctx.hati, "--print-parameters"], capture_output=True, text=True)
 for entry in ("Initial height", "Restitution coefficient", "Time step", "End time",

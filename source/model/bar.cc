@@ -50,7 +50,11 @@ void Bar::Parameters::parse_parameters(ParameterHandler &prm)
   area = prm.get_double("Cross-section area");
   young_modulus = prm.get_double("Young's modulus");
   density = prm.get_double("Density");
-  n_elements = prm.get_integer("Number of elements");
+  const long elements = prm.get_integer("Number of elements");
+  AssertThrow(elements >= 1 && elements <= 100000000,
+              ExcMessage("Model/Bar/Number of elements must be from 1 to 1e8, got " +
+                         std::to_string(elements)));
+  n_elements = elements;
   initial_velocity = prm.get_double("Initial velocity");
   left_end = prm.get("Left end");
   end_force = prm.get_double("End force");

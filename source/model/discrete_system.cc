@@ -71,6 +71,37 @@ void DiscreteSystem::fill_default_mass_influence()
   }
 }
 
+void check_finite(const DiscreteSystem &system)
+{
+  auto finite = [](const SparseMatrix<double> &a)
+  {
+    if (a.empty())
+      return true;
+    for (unsigned int i = 0; i < a.m(); ++i)
+      for (auto it = a.begin(i); it != a.end(i); ++it)
+        if (!std::isfinite(it->value()))
+          return false;
+    return true;
+  };
+  const char *advice =
+      ": check the material constants (E, rho), the section values and the "
+      "node coordinates for values too large";
+  AssertThrow(
+      !system.has_stiffness() || finite(system.stiffness),
+      ExcMessage(std::string("the assembled stiffness matrix has an entry that is "
+                             "not finite (overflow)") +
+                 advice));
+  AssertThrow(finite(system.consistent_mass) &&
+                  std::isfinite(system.lumped_mass.linfty_norm()),
+              ExcMessage(std::string("the assembled mass matrix has an entry that is not "
+                                     "finite (overflow)") +
+                         advice));
+  AssertThrow(std::isfinite(system.constant_force.linfty_norm()),
+              ExcMessage(std::string("the assembled constant load (gravity, nodal loads) "
+                                     "has an entry that is not finite (overflow)") +
+                         advice));
+}
+
 void decouple_fixed_dofs(SparseMatrix<double> &matrix, const std::vector<bool> &fixed)
 {
   for (unsigned int i = 0; i < matrix.m(); ++i)

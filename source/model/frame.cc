@@ -19,6 +19,9 @@ namespace
 {
 const char *const component_labels[6] = {"x", "y", "z", "rx", "ry", "rz"};
 
+/** Largest number of elements of one member (-). */
+constexpr double max_elements_per_member = 1e7;
+
 /** One item "name: v1, v2, ..." of a list entry. */
 struct Item
 {
@@ -193,6 +196,9 @@ void Frame::Parameters::parse_parameters(ParameterHandler &prm)
                 ExcMessage("Model/Frame/Materials: item '" + it.name +
                            "' needs E > 0, -1 < nu < 0.5 and rho > 0"));
     m.G = m.E / (2. * (1. + nu));
+    AssertThrow(
+        materials.count(it.name) == 0,
+        ExcMessage("Model/Frame/Materials: material '" + it.name + "' is defined twice"));
     materials[it.name] = m;
   }
   for (const Item &it : parse_items(prm.get("Sections"), "Sections"))
@@ -208,15 +214,26 @@ void Frame::Parameters::parse_parameters(ParameterHandler &prm)
                   ExcMessage("Model/Frame/Sections: item '" + it.name +
                              "' has a negative value"));
     }
+    AssertThrow(
+        sections.count(it.name) == 0,
+        ExcMessage("Model/Frame/Sections: section '" + it.name + "' is defined twice"));
     FrameSection s;
     if (kind == "rectangle")
     {
       expect_values(it, "Sections", {3}, "'rectangle, b, h'");
+      AssertThrow(v[0] > 0. && v[1] > 0.,
+                  ExcMessage("Model/Frame/Sections: item '" + it.name +
+                             "': a rectangle needs b > 0 and h > 0 (m)"));
       s = FrameSection::rectangle(v[0], v[1]);
     }
     else if (kind == "box")
     {
       expect_values(it, "Sections", {5}, "'box, b, h, t_web, t_flange'");
+      AssertThrow(v[0] > 0. && v[1] > 0. && v[2] > 0. && v[3] > 0. && 2. * v[2] < v[0] &&
+                      2. * v[3] < v[1],
+                  ExcMessage("Model/Frame/Sections: item '" + it.name +
+                             "': a box needs b, h, t_web, t_flange > 0 (m), 2 t_web < b "
+                             "and 2 t_flange < h"));
       s = FrameSection::box(v[0], v[1], v[2], v[3]);
     }
     else if (kind == "general")
@@ -252,13 +269,20 @@ void Frame::Parameters::parse_parameters(ParameterHandler &prm)
     m.section = it.values[2];
     m.material = it.values[3];
     const double ne = to_number(it.values[4], "Members", it);
-    AssertThrow(ne >= 1. && ne == std::floor(ne),
+    AssertThrow(ne >= 1. && ne == std::floor(ne) && ne <= max_elements_per_member,
                 ExcMessage("Model/Frame/Members: member '" + it.name +
-                           "': the number of elements must be a positive integer"));
+                           "': the number of elements must be an integer from 1 to " +
+                           std::to_string(static_cast<long>(max_elements_per_member)) +
+                           ", got " + it.values[4]));
     m.n_elements = static_cast<unsigned int>(ne);
     if (it.values.size() == 8)
+    {
       for (unsigned int d = 0; d < 3; ++d)
         m.y_reference[d] = to_number(it.values[5 + d], "Members", it);
+      AssertThrow(m.y_reference.norm() > 0.,
+                  ExcMessage("Model/Frame/Members: member '" + it.name +
+                             "': the section orientation vector (yx, yy, yz) is zero"));
+    }
     members.push_back(m);
   }
   const std::string mesh_file = Utilities::trim(prm.get("Mesh file"));
@@ -316,10 +340,19 @@ void Frame::Parameters::parse_parameters(ParameterHandler &prm)
     if (it.values.size() == 4)
       for (unsigned int d = 0; d < 3; ++d)
         p.rotary_inertia[d] = to_number(it.values[1 + d], "Point masses", it);
+    AssertThrow(p.mass >= 0. && p.rotary_inertia[0] >= 0. && p.rotary_inertia[1] >= 0. &&
+                    p.rotary_inertia[2] >= 0.,
+                ExcMessage("Model/Frame/Point masses: node '" + it.name +
+                           "': the mass (kg) and the rotary inertias (kg m^2) must be "
+                           ">= 0"));
     point_masses.push_back(p);
   }
   for (const Item &it : parse_items(prm.get("Supports"), "Supports"))
   {
+    for (const auto &other : supports)
+      AssertThrow(
+          other.node != it.name,
+          ExcMessage("Model/Frame/Supports: node '" + it.name + "' is listed twice"));
     Support s;
     s.node = it.name;
     if (it.values.size() == 1 && it.values[0] == "clamped")
@@ -416,6 +449,13 @@ void Frame::Parameters::parse_parameters(ParameterHandler &prm)
     AssertThrow(nodes[m.start].distance(nodes[m.end]) > 0.,
                 ExcMessage("Model/Frame/Members: member '" + m.name +
                            "' has zero length (both ends at the same point)"));
+    AssertThrow(
+        std::isfinite(nodes[m.start].square()) && std::isfinite(nodes[m.end].square()) &&
+            std::isfinite(nodes[m.start].distance_square(nodes[m.end])),
+        ExcMessage("Model/Frame/Members: member '" + m.name +
+                   "': the coordinates of its nodes '" + m.start + "', '" + m.end +
+                   "' overflow (not finite when squared): node coordinates too "
+                   "large"));
     for (unsigned int i = 0; i + 1 < m.path.size(); ++i)
     {
       AssertThrow(nodes[m.path[i]].distance(nodes[m.path[i + 1]]) > 0.,

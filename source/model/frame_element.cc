@@ -122,7 +122,7 @@ FullMatrix<double> transformation(const Tensor<2, 3> &R)
 FrameSection FrameSection::rectangle(const double b, const double h)
 {
   AssertThrow(std::isfinite(b) && std::isfinite(h) && b > 0. && h > 0.,
-              ExcMessage("FrameSection::rectangle: b and h must be > 0."));
+              ExcMessage("rectangle section: b and h must be > 0 (m)."));
   FrameSection s;
   s.A = b * h;
   s.Iy = b * h * h * h / 12.;
@@ -141,7 +141,7 @@ FrameSection FrameSection::box(const double b,
 {
   AssertThrow(std::isfinite(b) && std::isfinite(h) && b > 0. && h > 0. && t_web > 0. &&
                   t_flange > 0. && 2. * t_web < b && 2. * t_flange < h,
-              ExcMessage("FrameSection::box: need b, h, t_web, t_flange > 0, "
+              ExcMessage("box section: need b, h, t_web, t_flange > 0 (m), "
                          "2 t_web < b and 2 t_flange < h."));
   const double bi = b - 2. * t_web, hi = h - 2. * t_flange; // inner opening
   const double bm = b - t_web, hm = h - t_flange;           // centre lines
@@ -267,7 +267,7 @@ frame_rotation(const Point<3> &x1, const Point<3> &x2, const Tensor<1, 3> &y_ref
   const Tensor<1, 3> d = x2 - x1;
   const double L = d.norm();
   AssertThrow(L > 0. && L > 1e-12 * (x1.norm() + x2.norm()),
-              ExcMessage("frame_rotation: the member has zero length (its two "
+              ExcMessage("frame member: the member has zero length (its two "
                          "nodes coincide)."));
   const Tensor<1, 3> ex = d / L;
   const Tensor<1, 3> y_perp = y_reference - (y_reference * ex) * ex;

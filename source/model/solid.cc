@@ -51,8 +51,14 @@ void Solid::Parameters::parse_parameters(ParameterHandler &prm)
   young_modulus = prm.get_double("Young's modulus");
   poisson_ratio = prm.get_double("Poisson's ratio");
   density = prm.get_double("Density");
-  n_elements = prm.get_integer("Number of elements");
-  n_elements_across = prm.get_integer("Number of elements across");
+  const long along = prm.get_integer("Number of elements"),
+             across = prm.get_integer("Number of elements across");
+  AssertThrow(along >= 1 && across >= 1 && double(along) * across * across <= 1e7,
+              ExcMessage("Model/Solid: Number of elements (" + std::to_string(along) +
+                         ") times Number of elements across squared (" +
+                         std::to_string(across) + "^2) must be from 1 to 1e7 cells"));
+  n_elements = along;
+  n_elements_across = across;
   lateral_constraint = prm.get_bool("Lateral constraint");
   initial_velocity = prm.get_double("Initial velocity");
   AssertThrow(

@@ -1,5 +1,8 @@
 #include <hati/parameters/run_parameters.h>
 
+#include <cmath>
+#include <sstream>
+
 namespace hati
 {
 void TimeIntegrationParameters::declare_parameters(ParameterHandler &prm)
@@ -34,6 +37,12 @@ void TimeIntegrationParameters::declare_parameters(ParameterHandler &prm)
                     Patterns::Double(0., 1.),
                     "The time step must satisfy dt <= Safety factor * dt_crit (-), "
                     "0 < factor <= 1.");
+  prm.declare_entry("Maximum number of steps",
+                    "1e9",
+                    Patterns::Double(1.),
+                    "Refuse a run whose End time / Time step exceeds this number of "
+                    "steps (-): a time step given in the wrong unit would otherwise run "
+                    "for days.");
   prm.declare_entry("Maximum number of events",
                     "200",
                     Patterns::Integer(1),
@@ -62,6 +71,7 @@ void TimeIntegrationParameters::parse_parameters(ParameterHandler &prm)
   time_step = prm.get_double("Time step");
   end_time = prm.get_double("End time");
   safety_factor = prm.get_double("Safety factor");
+  max_steps = prm.get_double("Maximum number of steps");
   max_events = prm.get_integer("Maximum number of events");
   max_event_driven_dofs = prm.get_integer("Maximum number of DoFs");
   relative_tolerance = prm.get_double("Relative tolerance");
@@ -72,6 +82,15 @@ void TimeIntegrationParameters::parse_parameters(ParameterHandler &prm)
                          std::to_string(time_step) + "."));
   AssertThrow(safety_factor > 0.,
               ExcMessage("Time integration/Safety factor must be > 0."));
+  const double n_steps = std::ceil(end_time / time_step - 1e-9);
+  if (n_steps > max_steps)
+  {
+    std::ostringstream s;
+    s << "Time integration: End time / Time step = " << end_time << " / " << time_step
+      << " = " << n_steps << " steps, more than 'Maximum number of steps' = " << max_steps
+      << ": check the Time step (s) or raise the maximum.";
+    AssertThrow(false, ExcMessage(s.str()));
+  }
 }
 
 void AnalysisParameters::declare_parameters(ParameterHandler &prm)

@@ -166,6 +166,13 @@ public:
 };
 
 /**
+ * Throw a one-line error if the stiffness, a mass or the constant force of
+ * @p system has an entry that is not finite (an overflow from material
+ * constants or coordinates too large).
+ */
+void check_finite(const DiscreteSystem &system);
+
+/**
  * Decouple the fixed DoFs of a matrix on the stiffness pattern: their rows
  * and columns keep only a positive diagonal entry (1 where it was not
  * positive). The DiscreteSystem matrices are condensed already; this makes

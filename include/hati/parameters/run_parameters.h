@@ -20,6 +20,8 @@ struct TimeIntegrationParameters
   double time_step = 1e-3;   ///< s
   double end_time = 1.;      ///< s
   double safety_factor = 1.; ///< dt <= safety * dt_crit
+  /** Refuse runs of more steps than this, End time / Time step (-). */
+  double max_steps = 1e9;
   unsigned int max_events = 200;
   unsigned int max_event_driven_dofs = 36;
   double relative_tolerance = 1e-12;
