@@ -193,6 +193,13 @@ void Simulation::run()
       { return (*record)(t) + (step ? step(t) : 0.); };
     }
   add_base_excitation(system, acceleration);
+  if (!common_parameters.excited_members.empty())
+  {
+    std::cout << "  base excitation on the members:";
+    for (const auto &m : common_parameters.excited_members)
+      std::cout << ' ' << m;
+    std::cout << std::endl;
+  }
   if (time_parameters.method == "HATI" && analysis_parameters.type == "transient")
   {
     decomposition = std::make_unique<Decomposition>();

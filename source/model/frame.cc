@@ -637,6 +637,31 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
   Vector<double> lumped_cell(12), mass_influence_cell(12);
   for (auto &mi : system.mass_influence)
     mi.reinit(n);
+  // base excitation on some members only (Loading/Excited members)
+  std::vector<bool> excited(P.members.size(), common.excited_members.empty());
+  for (const auto &name : common.excited_members)
+  {
+    unsigned int m = 0;
+    while (m < P.members.size() && P.members[m].name != name)
+      ++m;
+    AssertThrow(m < P.members.size(),
+                ExcMessage("Loading/Excited members: no member named '" + name + "'"));
+    excited[m] = true;
+  }
+  const bool restricted = !common.excited_members.empty();
+  if (restricted)
+  {
+    for (auto &mi : system.excited_mass_influence)
+      mi.reinit(n);
+    system.excited_lumped_mass.reinit(n);
+  }
+  auto node_excited = [&](const std::string &node)
+  {
+    for (const unsigned int c : node_cells[node])
+      if (excited[cells[c].member])
+        return true;
+    return false;
+  };
   std::vector<types::global_dof_index> dofs(12);
   double omega2 = 0.;
   double mass = 0.; // of the part built
@@ -673,7 +698,13 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
         mass_influence_cell[i] = mg(i, d) + mg(i, 6 + d);
       constraints.distribute_local_to_global(
           mass_influence_cell, dofs, system.mass_influence[d]);
+      if (restricted && excited[info.member])
+        constraints.distribute_local_to_global(
+            mass_influence_cell, dofs, system.excited_mass_influence[d]);
     }
+    if (restricted && excited[info.member])
+      constraints.distribute_local_to_global(
+          lumped_cell, dofs, system.excited_lumped_mass);
     omega2 =
         std::max(omega2,
                  element_omega_squared(
@@ -702,6 +733,12 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
       system.consistent_mass.add(i, i, m);
       if (c < 3)
         system.mass_influence[c][i] += m;
+      if (restricted && node_excited(p.node))
+      {
+        system.excited_lumped_mass[i] += m;
+        if (c < 3)
+          system.excited_mass_influence[c][i] += m;
+      }
     }
   for (const auto &p : P.point_masses)
     if (owns_node(node_cells[p.node]))
