@@ -195,6 +195,13 @@ void Simulation::run()
       { return (*record)(t) + (step ? step(t) : 0.); };
     }
   add_base_excitation(system, acceleration);
+  if (!common_parameters.excited_members.empty())
+  {
+    std::cout << "  base excitation on the members:";
+    for (const auto &m : common_parameters.excited_members)
+      std::cout << ' ' << m;
+    std::cout << std::endl;
+  }
   if (analysis_parameters.type == "static")
     return run_static();
   if (analysis_parameters.type == "modal")
@@ -203,9 +210,17 @@ void Simulation::run()
   {
     std::cout << "  initial state: static equilibrium under the constant loads"
               << std::endl;
-    solve_static(
-        system, 0., system.initial_displacement, newmark_parameters.linear_solver, true);
+    std::vector<double> forces;
+    solve_static(system,
+                 0.,
+                 system.initial_displacement,
+                 newmark_parameters.linear_solver,
+                 true,
+                 &forces);
     system.initial_velocity = 0.;
+    const std::string entry = report_static_contact_forces(forces);
+    if (!entry.empty())
+      initial_state_summary.emplace_back("static_contact_forces", entry);
   }
   AssertThrow(time_parameters.method != "event-driven" ||
                   (damping.a0 == 0. && damping.a1 == 0.),
@@ -369,6 +384,8 @@ void Simulation::run_transient(Integrator &integrator,
   // time of the steps alone: the stepping loop minus the output inside it
   auto times = timer.get_summary_data(TimerOutput::total_wall_time);
   const double stepping = times["time stepping"] - times["output"];
+  summary.insert(
+      summary.end(), initial_state_summary.begin(), initial_state_summary.end());
   summary.insert(
       summary.end(),
       {{"model", json_string(model->description())},

@@ -8,6 +8,7 @@
 #include <hati/output/output_writer.h>
 #include <hati/simulation.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -23,10 +24,12 @@ void Simulation::run_static()
   const auto start = std::chrono::steady_clock::now();
   TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
   Vector<double> U, V(system.n_dofs());
+  std::vector<double> forces;
   {
     TimerOutput::Scope scope(timer, "static solve");
-    solve_static(system, 0., U, newmark_parameters.linear_solver);
+    solve_static(system, 0., U, newmark_parameters.linear_solver, false, &forces);
   }
+  const std::string contact_entry = report_static_contact_forces(forces);
   OutputWriter writer(output_directory, system, *model);
   OutputState s;
   s.time = 0.;
@@ -59,15 +62,61 @@ void Simulation::run_static()
         umax = std::max(umax, std::abs(U[i]));
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  write_summary(output_directory + "/summary.json",
-                {{"analysis", json_string("static")},
-                 {"model", json_string(model->description())},
-                 {"n_dofs", std::to_string(system.n_dofs())},
-                 {"max_translation", json_number(umax)},
-                 {"wall_time", json_number(wall)}});
+  std::vector<std::pair<std::string, std::string>> summary = {
+      {"analysis", json_string("static")},
+      {"model", json_string(model->description())},
+      {"n_dofs", std::to_string(system.n_dofs())},
+      {"max_translation", json_number(umax)},
+      {"wall_time", json_number(wall)}};
+  if (!contact_entry.empty())
+    summary.emplace_back("static_contact_forces", contact_entry);
+  write_summary(output_directory + "/summary.json", summary);
   std::cout << "  largest translation " << umax << " m; results in " << output_directory
             << "/ (history.csv, solution.pvd, summary.json)" << std::endl;
   timer.print_summary();
+}
+
+std::string
+Simulation::report_static_contact_forces(const std::vector<double> &forces) const
+{
+  // closed rows: zero initial gap (solve_static); sums per name, in order
+  std::vector<std::string> names;
+  std::vector<double> sums;
+  std::vector<unsigned int> n_rows;
+  for (unsigned int k = 0; k < system.contacts.size() && k < forces.size(); ++k)
+  {
+    if (system.contacts[k].initial_gap != 0.)
+      continue;
+    const auto it = std::find(names.begin(), names.end(), system.contacts[k].name);
+    if (it == names.end())
+    {
+      names.push_back(system.contacts[k].name);
+      sums.push_back(forces[k]);
+      n_rows.push_back(1);
+    }
+    else
+    {
+      sums[it - names.begin()] += forces[k];
+      ++n_rows[it - names.begin()];
+    }
+  }
+  if (names.empty())
+    return "";
+  std::cout << "  static contact forces (closed contacts, N):\n";
+  std::ostringstream json;
+  json << '{';
+  double total = 0.;
+  for (unsigned int g = 0; g < names.size(); ++g)
+  {
+    std::cout << "    " << std::left << std::setw(28) << names[g] << std::right
+              << std::setw(16) << std::setprecision(8) << sums[g] << std::endl;
+    json << (g ? ", " : "") << json_string(names[g]) << ": " << json_number(sums[g]);
+    total += sums[g];
+  }
+  std::cout << "    " << std::left << std::setw(28) << "total" << std::right
+            << std::setw(16) << std::setprecision(8) << total << std::endl;
+  json << '}';
+  return json.str();
 }
 
 void Simulation::run_modal()

@@ -70,6 +70,16 @@ private:
   std::unique_ptr<Decomposition> decomposition;
   std::string output_directory;
   std::string parameter_file;
+
+  /**
+   * Print the static contact forces @p forces (N, one per contact row of
+   * the system, summed per contact name) as a table and return the
+   * `static_contact_forces` entry of summary.json (name -> N; empty string
+   * if the system has no closed contact).
+   */
+  std::string report_static_contact_forces(const std::vector<double> &forces) const;
+  /** summary.json entries of the static initial state (transient runs). */
+  std::vector<std::pair<std::string, std::string>> initial_state_summary;
 };
 
 /**

@@ -1,7 +1,9 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -50,7 +52,8 @@ void residual(const SparseMatrix<double> &K,
  * d) satisfies K r_d = 0 to round-off, the model can translate along d
  * without straining. Round-off scale: sum_j |K_ij| |r_j| per row.
  */
-void check_rigid_translations(const DiscreteSystem &system)
+void check_rigid_translations(const DiscreteSystem &system,
+                              const std::vector<unsigned int> &closed)
 {
   const char *direction[3] = {"x", "y", "z"};
   const unsigned int n = system.n_dofs();
@@ -79,10 +82,118 @@ void check_rigid_translations(const DiscreteSystem &system)
       kr = std::max(kr, std::abs(row));
       scale = std::max(scale, row_abs);
     }
-    AssertThrow(kr > 1e-10 * scale,
+    if (kr > 1e-10 * scale)
+      continue;
+    // a closed contact whose row sees the translation holds it
+    bool held = false;
+    for (const unsigned int k : closed)
+    {
+      const ContactRow &c = system.contacts[k];
+      double lr = 0.;
+      for (unsigned int j = 0; j < c.dofs.size(); ++j)
+        if (!system.fixed[c.dofs[j]])
+          lr += c.coefficients[j] * r[c.dofs[j]];
+      held = held || std::abs(lr) > 1e-12;
+    }
+    AssertThrow(held,
                 ExcMessage(singular_message + ": a rigid translation along " +
-                           direction[d] + " costs no strain energy."));
+                           direction[d] + " costs no strain energy" +
+                           (closed.empty() ? "" : " and no closed contact holds it") +
+                           "."));
   }
+}
+
+/** Whether contact rows @p a and @p b are exact opposites (two-sided, no clearance). */
+bool opposite_rows(const ContactRow &a, const ContactRow &b)
+{
+  if (a.dofs != b.dofs || a.initial_gap != b.initial_gap)
+    return false;
+  for (unsigned int j = 0; j < a.dofs.size(); ++j)
+    if (a.coefficients[j] != -b.coefficients[j])
+      return false;
+  return true;
+}
+
+/**
+ * The static problem with the closed contact rows @p closed as bilateral
+ * constraints: `[K L^T; L 0] [U; mu] = [F; -g0]`, `lambda = -mu` (so that
+ * `K U = F + L^T lambda`), by KLU with up to two refinement steps. Returns
+ * lambda per closed row (N).
+ */
+std::vector<double> solve_closed(const DiscreteSystem &system,
+                                 const SparseMatrix<double> &K,
+                                 const Vector<double> &F,
+                                 const std::vector<unsigned int> &closed,
+                                 Vector<double> &U)
+{
+  const unsigned int n = system.n_dofs(), m = closed.size(), N = n + m;
+  const std::vector<bool> &fixed = system.fixed;
+  DynamicSparsityPattern dsp(N, N);
+  for (unsigned int i = 0; i < n; ++i)
+    for (auto it = K.begin(i); it != K.end(i); ++it)
+      dsp.add(i, it->column());
+  for (unsigned int r = 0; r < m; ++r)
+  {
+    const ContactRow &c = system.contacts[closed[r]];
+    dsp.add(n + r, n + r);
+    for (const auto dof : c.dofs)
+      if (!fixed[dof])
+      {
+        dsp.add(n + r, dof);
+        dsp.add(dof, n + r);
+      }
+  }
+  SparsityPattern pattern;
+  pattern.copy_from(dsp);
+  SparseMatrix<double> A(pattern);
+  for (unsigned int i = 0; i < n; ++i)
+    for (auto it = K.begin(i); it != K.end(i); ++it)
+      A.add(i, it->column(), it->value());
+  Vector<double> b(N), x(N), r(N), dx(N);
+  for (unsigned int i = 0; i < n; ++i)
+    b[i] = F[i];
+  for (unsigned int k = 0; k < m; ++k)
+  {
+    const ContactRow &c = system.contacts[closed[k]];
+    for (unsigned int j = 0; j < c.dofs.size(); ++j)
+      if (!fixed[c.dofs[j]])
+      {
+        A.add(n + k, c.dofs[j], c.coefficients[j]);
+        A.add(c.dofs[j], n + k, c.coefficients[j]);
+      }
+    b[n + k] = -c.initial_gap;
+  }
+  DirectSolver solver;
+  solver.factorize(A,
+                   singular_message + " with its closed contacts (Amesos_Klu found a "
+                                      "zero pivot in [K L^T; L 0]).");
+  solver.solve(x, b);
+  const double norm_b = b.l2_norm();
+  for (unsigned int refinement = 0; refinement < 2; ++refinement)
+  {
+    A.residual(r, x, b);
+    if (!std::isfinite(r.l2_norm()) || r.l2_norm() <= 1e-14 * norm_b)
+      break;
+    solver.solve(dx, r);
+    x += dx;
+  }
+  AssertThrow(std::isfinite(x.l2_norm()),
+              ExcMessage(singular_message + " (the solution is not finite)."));
+  const double norm_r = A.residual(r, x, b);
+  if (!(norm_r <= 1e-8 * norm_b))
+  {
+    std::ostringstream message;
+    message << singular_message << " with its closed contacts (residual " << norm_r
+            << " > 1e-8 ||F|| = " << 1e-8 * norm_b << ").";
+    AssertThrow(false, ExcMessage(message.str()));
+  }
+  U.reinit(n);
+  for (unsigned int i = 0; i < n; ++i)
+    U[i] = fixed[i] ? 0. : x[i];
+  std::vector<double> lambda(m);
+  for (unsigned int k = 0; k < m; ++k)
+    lambda[k] = -x[n + k];
+  return lambda;
 }
 } // namespace
 
@@ -90,7 +201,8 @@ void solve_static(const DiscreteSystem &system,
                   const double time,
                   Vector<double> &U,
                   const std::string &linear_solver,
-                  const bool constant_loads_only)
+                  const bool constant_loads_only,
+                  std::vector<double> *contact_forces)
 {
   AssertThrow(linear_solver == "direct" || linear_solver == "iterative",
               ExcMessage("static analysis: unknown linear solver <" + linear_solver +
@@ -98,6 +210,8 @@ void solve_static(const DiscreteSystem &system,
   const unsigned int n = system.n_dofs();
   const std::vector<bool> &fixed = system.fixed;
   U.reinit(n);
+  if (contact_forces != nullptr)
+    contact_forces->assign(system.contacts.size(), 0.);
   unsigned int n_free = 0;
   for (unsigned int i = 0; i < n; ++i)
     n_free += fixed[i] ? 0 : 1;
@@ -105,7 +219,26 @@ void solve_static(const DiscreteSystem &system,
     return;
   AssertThrow(system.has_stiffness(),
               ExcMessage(singular_message + ": the model has no stiffness."));
-  check_rigid_translations(system);
+
+  // closed contacts: zero initial gap and a free DoF in the row; the second
+  // of two opposite rows (two-sided without clearance) is left to the first
+  std::vector<unsigned int> closed;
+  std::vector<int> opposite(system.contacts.size(), -1);
+  for (unsigned int k = 0; k < system.contacts.size(); ++k)
+  {
+    const ContactRow &c = system.contacts[k];
+    bool free_dof = false;
+    for (const auto dof : c.dofs)
+      free_dof = free_dof || !fixed[dof];
+    if (c.initial_gap != 0. || !free_dof)
+      continue;
+    for (const unsigned int j : closed)
+      if (opposite_rows(system.contacts[j], c))
+        opposite[k] = j;
+    if (opposite[k] < 0)
+      closed.push_back(k);
+  }
+  check_rigid_translations(system, closed);
 
   Vector<double> F(n);
   if (constant_loads_only)
@@ -121,6 +254,42 @@ void solve_static(const DiscreteSystem &system,
   SparseMatrix<double> K(system.stiffness_pattern);
   K.copy_from(system.stiffness);
   decouple_fixed_dofs(K, fixed);
+
+  if (!closed.empty())
+  {
+    const std::vector<double> lambda = solve_closed(system, K, F, closed, U);
+    double largest = 0.;
+    for (const double l : lambda)
+      largest = std::max(largest, std::abs(l));
+    std::vector<double> forces(system.contacts.size(), 0.);
+    for (unsigned int r = 0; r < closed.size(); ++r)
+      forces[closed[r]] = lambda[r];
+    for (unsigned int k = 0; k < system.contacts.size(); ++k)
+      if (opposite[k] >= 0 && forces[opposite[k]] < 0.) // bilateral pair
+      {
+        forces[k] = -forces[opposite[k]];
+        forces[opposite[k]] = 0.;
+      }
+    for (unsigned int r = 0; r < closed.size(); ++r)
+    {
+      const unsigned int k = closed[r];
+      bool bilateral = false;
+      for (unsigned int j = 0; j < opposite.size(); ++j)
+        bilateral = bilateral || opposite[j] == static_cast<int>(k);
+      if (!bilateral && lambda[r] < -1e-9 * largest)
+      {
+        std::ostringstream message;
+        message << "static analysis: the closed contact '" << system.contacts[k].name
+                << "' is in tension (" << lambda[r]
+                << " N): the structure would lift off there (give it a gap > 0 or a "
+                   "support)";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+    }
+    if (contact_forces != nullptr)
+      *contact_forces = forces;
+    return;
+  }
 
   Vector<double> r(n);
   if (linear_solver == "direct")

@@ -11,7 +11,11 @@ void add_base_excitation(DiscreteSystem &system,
       continue;
     TimeDependentLoad load;
     system.fill_default_mass_influence();
-    load.shape = system.mass_influence[d];
+    // only the excited members' inertia (Loading/Excited members) if the
+    // model restricted it
+    load.shape = system.excited_mass_influence[d].size() == system.n_dofs()
+                     ? system.excited_mass_influence[d]
+                     : system.mass_influence[d];
     load.shape *= -1.; // F = -M r a_g
     load.amplitude = acceleration[d];
     load.acceleration_direction = d;

@@ -31,7 +31,9 @@ void extract_subsystem(const DiscreteSystem &full,
   {
     restrict(full.influence[d], sub.influence[d]);
     restrict(full.mass_influence[d], sub.mass_influence[d]);
+    restrict(full.excited_mass_influence[d], sub.excited_mass_influence[d]);
   }
+  restrict(full.excited_lumped_mass, sub.excited_lumped_mass);
   sub.gravity = full.gravity;
   sub.omega_max_bound = full.omega_max_bound;
   for (const auto &load : full.time_dependent_loads)

@@ -20,6 +20,9 @@ void DiscreteSystem::reinit(const unsigned int n)
     r.reinit(0);
   for (auto &r : mass_influence)
     r.reinit(0);
+  for (auto &r : excited_mass_influence)
+    r.reinit(0);
+  excited_lumped_mass.reinit(0);
   gravity = Tensor<1, 3>();
   contacts.clear();
   monitors.clear();

@@ -53,6 +53,14 @@ std::vector<Item> parse_items(const std::string &text, const std::string &entry)
   return items;
 }
 
+/** Whether @p value is a finite number (a node named like a number is read as one). */
+bool is_number(const std::string &value)
+{
+  char *end = nullptr;
+  const double x = std::strtod(value.c_str(), &end);
+  return !value.empty() && end != nullptr && *end == '\0' && std::isfinite(x);
+}
+
 double to_number(const std::string &value, const std::string &entry, const Item &item)
 {
   char *end = nullptr;
@@ -150,11 +158,18 @@ void Frame::Parameters::declare_parameters(ParameterHandler &prm)
       "Contacts",
       "",
       Patterns::Anything(),
-      "Unilateral contacts of nodes on rigid planes (CD-Lagrange only), 'name: node, "
-      "nx, ny, nz, gap[, e]; ...': the plane's normal n (global axes, pointing from "
-      "the obstacle to the node; normalised), the initial gap (m) and the "
-      "restitution coefficient e (-, default Contact/Restitution coefficient). The "
-      "gap is g = gap + n . u; contacts sharing a name are summed in contacts.csv.");
+      "Unilateral contacts (CD-Lagrange only), 'name: node, nx, ny, nz, gap[, e][, "
+      "two-sided]; ...' for a node on a rigid plane (moving with the base) or 'name: "
+      "node, other node, nx, ny, nz, gap[, e][, two-sided]; ...' for a node against "
+      "another node (recognised by the second value naming a node). n (global axes, "
+      "normalised) points from the obstacle (plane or other node) to the node; the gap "
+      "is g = gap + n . (u_node - u_other) (m, >= 0) and the impulse pushes the two "
+      "apart along n; e is the restitution coefficient (-, default "
+      "Contact/Restitution coefficient). With 'two-sided' the gap value is the total "
+      "clearance c (m, >= 0, e.g. a wheel flange's lateral play): two rows with "
+      "normals n and -n and initial gaps c / 2, both under the one name. Rows sharing "
+      "a name are summed in contacts.csv. With Method = HATI a node-to-node contact "
+      "is explicit if either node touches an explicit cell.");
   prm.declare_entry(
       "Nodal loads",
       "",
@@ -402,20 +417,50 @@ void Frame::Parameters::parse_parameters(ParameterHandler &prm)
 
   for (const Item &it : parse_items(prm.get("Contacts"), "Contacts"))
   {
-    expect_values(it, "Contacts", {5, 6}, "5 or 6 (node, nx, ny, nz, gap[, e])");
+    // forms: node, nx, ny, nz, gap[, e][, two-sided] (rigid plane) or
+    // node, other node, nx, ny, nz, gap[, e][, two-sided] (node to node)
+    std::vector<std::string> v = it.values;
     NodeContact c;
     c.name = it.name;
-    c.node = it.values[0];
+    if (!v.empty() && v.back() == "two-sided")
+    {
+      c.two_sided = true;
+      v.pop_back();
+    }
+    const bool node_to_node = v.size() >= 2 && nodes.count(v[1]) > 0 && !is_number(v[1]);
+    const unsigned int first = node_to_node ? 2 : 1; // index of nx
+    AssertThrow(v.size() == first + 4 || v.size() == first + 5,
+                ExcMessage("Model/Frame/Contacts: item '" + it.name + "' has " +
+                           std::to_string(it.values.size()) +
+                           " values, expected 'node, nx, ny, nz, gap[, e][, two-sided]' "
+                           "or 'node, other node, nx, ny, nz, gap[, e][, two-sided]'"));
+    c.node = v[0];
+    if (node_to_node)
+    {
+      c.other_node = v[1];
+      AssertThrow(c.other_node != c.node,
+                  ExcMessage("Model/Frame/Contacts: contact '" + it.name +
+                             "' names the node '" + c.node + "' twice"));
+    }
+    else
+      AssertThrow(is_number(v[1]),
+                  ExcMessage("Model/Frame/Contacts: contact '" + it.name + "': '" + v[1] +
+                             "' is neither a node of Model/Frame/Nodes nor a number "
+                             "(the normal's nx)"));
     for (unsigned int d = 0; d < 3; ++d)
-      c.normal[d] = to_number(it.values[1 + d], "Contacts", it);
+      c.normal[d] = to_number(v[first + d], "Contacts", it);
     AssertThrow(
         c.normal.norm() > 0.,
         ExcMessage("Model/Frame/Contacts: contact '" + it.name + "' has a zero normal"));
     c.normal /= c.normal.norm();
-    c.gap = to_number(it.values[4], "Contacts", it);
-    if (it.values.size() == 6)
+    c.gap = to_number(v[first + 3], "Contacts", it);
+    AssertThrow(c.gap >= 0.,
+                ExcMessage("Model/Frame/Contacts: contact '" + it.name + "': the " +
+                           (c.two_sided ? "clearance" : "gap") +
+                           " must be >= 0 (m), got " + v[first + 3]));
+    if (v.size() == first + 5)
     {
-      c.restitution = to_number(it.values[5], "Contacts", it);
+      c.restitution = to_number(v[first + 4], "Contacts", it);
       AssertThrow(c.restitution >= 0. && c.restitution <= 1.,
                   ExcMessage("Model/Frame/Contacts: contact '" + it.name +
                              "': the restitution coefficient must be in [0, 1]"));
@@ -481,7 +526,11 @@ void Frame::Parameters::parse_parameters(ParameterHandler &prm)
   for (const auto &l : nodal_loads)
     check_node(l.first, "Nodal loads");
   for (const auto &c : contacts)
+  {
     check_node(c.node, "Contacts");
+    if (!c.other_node.empty())
+      check_node(c.other_node, "Contacts");
+  }
   for (const auto &m : section_force_members)
     AssertThrow(
         member_names.count(m),
@@ -628,6 +677,31 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
   Vector<double> lumped_cell(12), mass_influence_cell(12);
   for (auto &mi : system.mass_influence)
     mi.reinit(n);
+  // base excitation on some members only (Loading/Excited members)
+  std::vector<bool> excited(P.members.size(), common.excited_members.empty());
+  for (const auto &name : common.excited_members)
+  {
+    unsigned int m = 0;
+    while (m < P.members.size() && P.members[m].name != name)
+      ++m;
+    AssertThrow(m < P.members.size(),
+                ExcMessage("Loading/Excited members: no member named '" + name + "'"));
+    excited[m] = true;
+  }
+  const bool restricted = !common.excited_members.empty();
+  if (restricted)
+  {
+    for (auto &mi : system.excited_mass_influence)
+      mi.reinit(n);
+    system.excited_lumped_mass.reinit(n);
+  }
+  auto node_excited = [&](const std::string &node)
+  {
+    for (const unsigned int c : node_cells[node])
+      if (excited[cells[c].member])
+        return true;
+    return false;
+  };
   std::vector<types::global_dof_index> dofs(12);
   double omega2 = 0.;
   double mass = 0.; // of the part built
@@ -664,7 +738,13 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
         mass_influence_cell[i] = mg(i, d) + mg(i, 6 + d);
       constraints.distribute_local_to_global(
           mass_influence_cell, dofs, system.mass_influence[d]);
+      if (restricted && excited[info.member])
+        constraints.distribute_local_to_global(
+            mass_influence_cell, dofs, system.excited_mass_influence[d]);
     }
+    if (restricted && excited[info.member])
+      constraints.distribute_local_to_global(
+          lumped_cell, dofs, system.excited_lumped_mass);
     omega2 =
         std::max(omega2,
                  element_omega_squared(
@@ -693,6 +773,12 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
       system.consistent_mass.add(i, i, m);
       if (c < 3)
         system.mass_influence[c][i] += m;
+      if (restricted && node_excited(p.node))
+      {
+        system.excited_lumped_mass[i] += m;
+        if (c < 3)
+          system.excited_mass_influence[c][i] += m;
+      }
     }
   for (const auto &p : P.point_masses)
     if (owns_node(node_cells[p.node]))
@@ -730,22 +816,40 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
     if (system.fixed[i])
       system.constant_force[i] = 0.;
 
-  // node-to-rigid-plane contacts: L = n^T on the node's translations
+  // contacts (doc/theory.md 1.2): g = gap + n . (u_node - u_other), so L has
+  // n on the node's translations and -n on the other node's (none for a rigid
+  // plane); a two-sided contact is two such rows with normals n and -n and
+  // gaps c / 2. A node-to-node contact belongs to the explicit subdomain if
+  // either node touches an explicit cell.
   for (const auto &c : P.contacts)
   {
-    if (!owns_node(node_cells[c.node]))
+    std::vector<unsigned int> contact_cells = node_cells[c.node];
+    if (!c.other_node.empty())
+      contact_cells.insert(contact_cells.end(),
+                           node_cells[c.other_node].begin(),
+                           node_cells[c.other_node].end());
+    if (!owns_node(contact_cells))
       continue;
-    ContactRow row;
-    row.name = c.name;
-    for (unsigned int d = 0; d < 3; ++d)
-      if (c.normal[d] != 0.)
-      {
-        row.dofs.push_back(node_dofs[c.node][d]);
-        row.coefficients.push_back(c.normal[d]);
-      }
-    row.initial_gap = c.gap;
-    row.restitution = c.restitution >= 0. ? c.restitution : common.restitution;
-    system.contacts.push_back(row);
+    for (const double side :
+         c.two_sided ? std::vector<double>{1., -1.} : std::vector<double>{1.})
+    {
+      ContactRow row;
+      row.name = c.name;
+      for (unsigned int d = 0; d < 3; ++d)
+        if (c.normal[d] != 0.)
+        {
+          row.dofs.push_back(node_dofs[c.node][d]);
+          row.coefficients.push_back(side * c.normal[d]);
+          if (!c.other_node.empty())
+          {
+            row.dofs.push_back(node_dofs[c.other_node][d]);
+            row.coefficients.push_back(-side * c.normal[d]);
+          }
+        }
+      row.initial_gap = c.two_sided ? 0.5 * c.gap : c.gap;
+      row.restitution = c.restitution >= 0. ? c.restitution : common.restitution;
+      system.contacts.push_back(row);
+    }
   }
 
   for (const auto &node : P.monitor_nodes)

@@ -55,6 +55,17 @@ void CommonModelParameters::declare_parameters(ParameterHandler &prm)
       Patterns::Double(),
       "Factor applied to every accelerogram value (-), e.g. to scale a record "
       "to a design peak ground acceleration.");
+  prm.declare_entry(
+      "Excited members",
+      "",
+      Patterns::Anything(),
+      "Frames: names of the members whose inertia the base acceleration loads, "
+      "'member, member, ...' (e.g. girder_1, girder_2 of a bridge crane): F = -M_S r "
+      "a_g is assembled from these members' elements and the point masses on their "
+      "nodes only (a point mass at a joint counts if one of its members is "
+      "excited), as when a record of the motion of those members is applied to "
+      "them. Empty: the whole model (the usual relative formulation). Gravity is "
+      "not affected. Other models: must be empty.");
   prm.leave_subsection();
 
   prm.enter_subsection("Contact");
@@ -93,6 +104,11 @@ void CommonModelParameters::parse_parameters(ParameterHandler &prm)
                          Utilities::trim(prm.get("Accelerogram Z"))}};
   accelerogram_units = prm.get("Accelerogram units");
   accelerogram_scale = prm.get_double("Accelerogram scale factor");
+  excited_members.clear();
+  for (const std::string &m :
+       Utilities::split_string_list(prm.get("Excited members"), ','))
+    if (!Utilities::trim(m).empty())
+      excited_members.push_back(Utilities::trim(m));
   prm.leave_subsection();
 
   prm.enter_subsection("Contact");
@@ -261,8 +277,15 @@ void declare_model_parameters(ParameterHandler &prm)
 
 std::unique_ptr<Model> create_model(ParameterHandler &prm)
 {
+  prm.enter_subsection("Loading");
+  const bool excited_members = !Utilities::trim(prm.get("Excited members")).empty();
+  prm.leave_subsection();
   prm.enter_subsection("Model");
   const std::string type = prm.get("Type");
+  AssertThrow(!excited_members || type == "frame",
+              ExcMessage("Loading/Excited members: only frame models have members; "
+                         "leave it empty for Model/Type = " +
+                         type));
   std::unique_ptr<Model> model;
   if (type == "point mass")
   {

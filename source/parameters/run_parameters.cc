@@ -113,7 +113,8 @@ void AnalysisParameters::declare_parameters(ParameterHandler &prm)
       Patterns::Selection("given|static"),
       "transient: start from the model's initial displacement and velocity "
       "(given) or at rest from the static equilibrium under the constant loads "
-      "(gravity, nodal loads), without the base excitation (static).");
+      "(gravity, nodal loads), without the base excitation (static); contacts "
+      "with a zero initial gap are closed in that equilibrium and must push.");
   prm.leave_subsection();
 }
 

@@ -281,9 +281,14 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
   {
     Vector<double> shape(load.shape);
     const int d = load.acceleration_direction;
+    // the lumped mass of the excited part (Loading/Excited members) if the
+    // model restricted the excitation to some members
+    const Vector<double> &mass = system.excited_lumped_mass.size() == n
+                                     ? system.excited_lumped_mass
+                                     : system.lumped_mass;
     if (d >= 0 && system.influence[d].size() == n)
       for (unsigned int i = 0; i < n; ++i)
-        shape[i] = -system.lumped_mass[i] * system.influence[d][i];
+        shape[i] = -mass[i] * system.influence[d][i];
     load_shapes.push_back(shape);
     shape.scale(dt_minv);
     dt_minv_load_shapes.push_back(shape);

@@ -6,6 +6,7 @@
 #include <hati/model/discrete_system.h>
 
 #include <string>
+#include <vector>
 
 namespace hati
 {
@@ -25,17 +26,32 @@ using namespace dealii;
  *        nodal loads), without the time-dependent ones (base excitation):
  *        the equilibrium a transient run starts from.
  *
+ * @param contact_forces if not null, resized to the number of contact rows
+ *        and filled with the static contact forces (N, >= 0 pushing the
+ *        bodies apart; 0 for open rows).
+ *
+ * Contacts with a zero initial gap are closed (doc/theory.md 1.2 with the
+ * static limit): the saddle-point problem `[K L_c^T; L_c 0] [U; -lambda] =
+ * [F; -g0_c]` on the closed rows `L_c` is factorised with KLU (pivoting, so
+ * that a structure supported by its contacts only is solved: then `K` alone
+ * may be singular). Two closed rows that are exact opposites (a two-sided
+ * contact without clearance) act as one bilateral row. Every other closed
+ * contact must be in compression (`lambda >= -1e-9 max|lambda|`), otherwise
+ * the error names it.
+ *
  * Throws ExcMessage with "the stiffness matrix is singular: the model can
  * move as a rigid body (check the supports)" if a rigid translation of the
- * model costs no strain energy (`K r_d = 0` for an influence vector), if the
- * factorisation fails, if the solution is not finite or if the residual
- * `||K U - F|| > 1e-8 ||F||` (free DoFs).
+ * model costs no strain energy (`K r_d = 0` for an influence vector; not
+ * checked when contacts are closed), if the factorisation fails, if the
+ * solution is not finite or if the residual `||K U - F|| > 1e-8 ||F||` (free
+ * DoFs; the residual of the augmented system with closed contacts).
  */
 void solve_static(const DiscreteSystem &system,
                   const double time,
                   Vector<double> &U,
                   const std::string &linear_solver = "direct",
-                  const bool constant_loads_only = false);
+                  const bool constant_loads_only = false,
+                  std::vector<double> *contact_forces = nullptr);
 } // namespace hati
 
 #endif

@@ -140,6 +140,20 @@ public:
    */
   std::array<Vector<double>, 3> mass_influence;
 
+  /**
+   * Base excitation on part of the model only (`Loading/Excited members`,
+   * doc/theory.md section 4 with `M` restricted to the excited members): `M_S
+   * r_d` (consistent, N per m/s^2) of the excited elements and point masses.
+   * Empty vectors: the whole model is excited (mass_influence).
+   */
+  std::array<Vector<double>, 3> excited_mass_influence;
+
+  /**
+   * Lumped mass (kg) of the excited part only, for the integrators with a
+   * lumped mass (they load `-M_lumped,S r_d a_g`); empty: lumped_mass.
+   */
+  Vector<double> excited_lumped_mass;
+
   /** Fill the empty mass_influence vectors with `M influence[d]`. */
   void fill_default_mass_influence();
 

@@ -74,13 +74,27 @@ public:
     std::vector<Support> supports;
     std::vector<std::string> hinged_joints;
     std::map<std::string, std::array<double, 6>> nodal_loads;
+    /**
+     * One entry of Model/Frame/Contacts (doc/theory.md 1.2, doc/user_guide.md
+     * "Contacts of frame nodes"): the gap is `g = gap + n . (u_node -
+     * u_other)` (`u_other = 0` for a rigid plane that moves with the base).
+     */
     struct NodeContact
     {
       std::string name, node;
+      /** Node-to-node: the node of the obstacle; empty for a rigid plane. */
+      std::string other_node;
+      /** Normal (unit, global axes) pointing from the obstacle to the node. */
       Tensor<1, 3> normal;
+      /**
+       * One-sided: the initial gap (m, >= 0). Two-sided: the total clearance
+       * c (m, >= 0), two rows with normals n and -n and initial gaps c / 2.
+       */
       double gap = 0.;
       /** Negative: Contact/Restitution coefficient. */
       double restitution = -1.;
+      /** Two rows, one per side of the clearance, both named `name`. */
+      bool two_sided = false;
     };
     std::vector<NodeContact> contacts;
     std::vector<std::string> monitor_nodes;

@@ -36,6 +36,11 @@ struct CommonModelParameters
   std::string accelerogram_units = "g";
   /** Factor on every accelerogram value (-). */
   double accelerogram_scale = 1.;
+  /**
+   * Frame members whose inertia the base acceleration loads
+   * (`Loading/Excited members`); empty: the whole model.
+   */
+  std::vector<std::string> excited_members;
   /** Name of the contact in contacts.csv. */
   std::string contact_name;
   /** Newton's restitution coefficient e in [0, 1]. */
