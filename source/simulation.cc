@@ -386,6 +386,8 @@ void Simulation::run_transient(Integrator &integrator,
   const double stepping = times["time stepping"] - times["output"];
   summary.insert(
       summary.end(), initial_state_summary.begin(), initial_state_summary.end());
+  for (const auto &entry : model->summary_entries(static_contact_forces))
+    summary.push_back(entry);
   summary.insert(
       summary.end(),
       {{"model", json_string(model->description())},

@@ -70,14 +70,15 @@ void Simulation::run_static()
       {"wall_time", json_number(wall)}};
   if (!contact_entry.empty())
     summary.emplace_back("static_contact_forces", contact_entry);
+  for (const auto &entry : model->summary_entries(static_contact_forces))
+    summary.push_back(entry);
   write_summary(output_directory + "/summary.json", summary);
   std::cout << "  largest translation " << umax << " m; results in " << output_directory
             << "/ (history.csv, solution.pvd, summary.json)" << std::endl;
   timer.print_summary();
 }
 
-std::string
-Simulation::report_static_contact_forces(const std::vector<double> &forces) const
+std::string Simulation::report_static_contact_forces(const std::vector<double> &forces)
 {
   // closed rows: zero initial gap (solve_static); sums per name, in order
   std::vector<std::string> names;
@@ -111,9 +112,10 @@ Simulation::report_static_contact_forces(const std::vector<double> &forces) cons
     std::cout << "    " << std::left << std::setw(28) << names[g] << std::right
               << std::setw(16) << std::setprecision(8) << sums[g] << std::endl;
     json << (g ? ", " : "") << json_string(names[g]) << ": " << json_number(sums[g]);
+    static_contact_forces[names[g]] = sums[g];
     total += sums[g];
   }
-  std::cout << "    " << std::left << std::setw(28) << "total" << std::right
+  std::cout << "    " << std::left << std::setw(28) << "sum" << std::right
             << std::setw(16) << std::setprecision(8) << total << std::endl;
   json << '}';
   return json.str();

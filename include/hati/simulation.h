@@ -12,6 +12,7 @@
 #include <hati/time/hati_coupling.h>
 #include <hati/time/newmark.h>
 
+#include <map>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -77,7 +78,9 @@ private:
    * `static_contact_forces` entry of summary.json (name -> N; empty string
    * if the system has no closed contact).
    */
-  std::string report_static_contact_forces(const std::vector<double> &forces) const;
+  std::string report_static_contact_forces(const std::vector<double> &forces);
+  /** Static contact forces per contact name (N), filled by the above. */
+  std::map<std::string, double> static_contact_forces;
   /** summary.json entries of the static initial state (transient runs). */
   std::vector<std::pair<std::string, std::string>> initial_state_summary;
 };

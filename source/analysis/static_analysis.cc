@@ -124,6 +124,7 @@ std::vector<double> solve_closed(const DiscreteSystem &system,
                                  const SparseMatrix<double> &K,
                                  const Vector<double> &F,
                                  const std::vector<unsigned int> &closed,
+                                 const std::vector<unsigned int> &centred,
                                  Vector<double> &U)
 {
   const unsigned int n = system.n_dofs(), m = closed.size(), N = n + m;
@@ -161,7 +162,10 @@ std::vector<double> solve_closed(const DiscreteSystem &system,
         A.add(n + k, c.dofs[j], c.coefficients[j]);
         A.add(c.dofs[j], n + k, c.coefficients[j]);
       }
-    b[n + k] = -c.initial_gap;
+    // a two-sided pair with a clearance is held where it is (L U = 0)
+    const bool held_centred =
+        std::find(centred.begin(), centred.end(), closed[k]) != centred.end();
+    b[n + k] = held_centred ? 0. : -c.initial_gap;
   }
   DirectSolver solver;
   solver.factorize(A,
@@ -222,7 +226,7 @@ void solve_static(const DiscreteSystem &system,
 
   // closed contacts: zero initial gap and a free DoF in the row; the second
   // of two opposite rows (two-sided without clearance) is left to the first
-  std::vector<unsigned int> closed;
+  std::vector<unsigned int> closed, centred;
   std::vector<int> opposite(system.contacts.size(), -1);
   for (unsigned int k = 0; k < system.contacts.size(); ++k)
   {
@@ -230,8 +234,22 @@ void solve_static(const DiscreteSystem &system,
     bool free_dof = false;
     for (const auto dof : c.dofs)
       free_dof = free_dof || !fixed[dof];
-    if (c.initial_gap != 0. || !free_dof)
+    if (!free_dof)
       continue;
+    // a row with a gap is held only as the second of a two-sided pair whose
+    // first row (the same gap, the opposite normal) precedes it
+    if (c.initial_gap != 0.)
+    {
+      for (unsigned int j = 0; j < k; ++j)
+        if (opposite_rows(system.contacts[j], c))
+        {
+          centred.push_back(j);
+          closed.push_back(j);
+          opposite[k] = j;
+          break;
+        }
+      continue;
+    }
     for (const unsigned int j : closed)
       if (opposite_rows(system.contacts[j], c))
         opposite[k] = j;
@@ -257,7 +275,7 @@ void solve_static(const DiscreteSystem &system,
 
   if (!closed.empty())
   {
-    const std::vector<double> lambda = solve_closed(system, K, F, closed, U);
+    const std::vector<double> lambda = solve_closed(system, K, F, closed, centred, U);
     double largest = 0.;
     for (const double l : lambda)
       largest = std::max(largest, std::abs(l));
@@ -273,7 +291,7 @@ void solve_static(const DiscreteSystem &system,
     for (unsigned int r = 0; r < closed.size(); ++r)
     {
       const unsigned int k = closed[r];
-      bool bilateral = false;
+      bool bilateral = false; // includes the centred pairs
       for (unsigned int j = 0; j < opposite.size(); ++j)
         bilateral = bilateral || opposite[j] == static_cast<int>(k);
       if (!bilateral && lambda[r] < -1e-9 * largest)
@@ -286,6 +304,28 @@ void solve_static(const DiscreteSystem &system,
         AssertThrow(false, ExcMessage(message.str()));
       }
     }
+    // a two-sided contact with a clearance only stands in for the play: the
+    // static load must not push the node to a side
+    double load = 0.;
+    for (unsigned int i = 0; i < n; ++i)
+      load = std::max(load, std::abs(F[i]));
+    for (unsigned int r = 0; r < closed.size(); ++r)
+      if (std::find(centred.begin(), centred.end(), closed[r]) != centred.end())
+      {
+        if (std::abs(lambda[r]) > 1e-9 * std::max(largest, load))
+        {
+          std::ostringstream message;
+          message << "static analysis: the static load pushes the two-sided contact '"
+                  << system.contacts[closed[r]].name << "' across its clearance ("
+                  << lambda[r]
+                  << " N): there is no static state within the play (support it)";
+          AssertThrow(false, ExcMessage(message.str()));
+        }
+        forces[closed[r]] = 0.;
+        for (unsigned int k = 0; k < opposite.size(); ++k)
+          if (opposite[k] == static_cast<int>(closed[r]))
+            forces[k] = 0.;
+      }
     if (contact_forces != nullptr)
       *contact_forces = forces;
     return;

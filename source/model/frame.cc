@@ -188,6 +188,68 @@ void Frame::Parameters::declare_parameters(ParameterHandler &prm)
                     "every history row, 'member, member, ...'.");
 }
 
+FrameSection Frame::Parameters::parse_section(const std::string &text,
+                                              const std::string &where)
+{
+  std::vector<std::string> values;
+  for (const std::string &v : Utilities::split_string_list(text, ','))
+    values.push_back(Utilities::trim(v));
+  AssertThrow(!values.empty() && !values[0].empty(),
+              ExcMessage(where + " has no kind (rectangle, box or general)"));
+  const std::string kind = values[0];
+  std::vector<double> v;
+  for (unsigned int i = 1; i < values.size(); ++i)
+  {
+    char *end = nullptr;
+    const double x = std::strtod(values[i].c_str(), &end);
+    AssertThrow(!values[i].empty() && *end == '\0' && std::isfinite(x),
+                ExcMessage(where + ": '" + values[i] + "' is not a number"));
+    AssertThrow(x >= 0., ExcMessage(where + " has a negative value"));
+    v.push_back(x);
+  }
+  auto expect = [&](const unsigned int count, const std::string &form)
+  {
+    AssertThrow(values.size() == count,
+                ExcMessage(where + " has " + std::to_string(values.size()) +
+                           " values, expected " + form));
+  };
+  FrameSection s;
+  if (kind == "rectangle")
+  {
+    expect(3, "'rectangle, b, h'");
+    AssertThrow(v[0] > 0. && v[1] > 0.,
+                ExcMessage(where + ": a rectangle needs b > 0 and h > 0 (m)"));
+    s = FrameSection::rectangle(v[0], v[1]);
+  }
+  else if (kind == "box")
+  {
+    expect(5, "'box, b, h, t_web, t_flange'");
+    AssertThrow(v[0] > 0. && v[1] > 0. && v[2] > 0. && v[3] > 0. && 2. * v[2] < v[0] &&
+                    2. * v[3] < v[1],
+                ExcMessage(where +
+                           ": a box needs b, h, t_web, t_flange > 0 (m), 2 t_web < b "
+                           "and 2 t_flange < h"));
+    s = FrameSection::box(v[0], v[1], v[2], v[3]);
+  }
+  else if (kind == "general")
+  {
+    expect(7, "'general, A, Iy, Iz, J, Asy, Asz'");
+    s.A = v[0];
+    s.Iy = v[1];
+    s.Iz = v[2];
+    s.J = v[3];
+    s.shear_area_y = v[4];
+    s.shear_area_z = v[5];
+  }
+  else
+    AssertThrow(false,
+                ExcMessage(where + ": unknown kind '" + kind +
+                           "', expected rectangle, box or general"));
+  AssertThrow(s.A > 0. && s.Iy > 0. && s.Iz > 0. && s.J > 0.,
+              ExcMessage(where + " needs A, Iy, Iz and J > 0"));
+  return s;
+}
+
 void Frame::Parameters::parse_parameters(ParameterHandler &prm)
 {
   for (const Item &it : parse_items(prm.get("Nodes"), "Nodes"))
@@ -218,58 +280,14 @@ void Frame::Parameters::parse_parameters(ParameterHandler &prm)
   }
   for (const Item &it : parse_items(prm.get("Sections"), "Sections"))
   {
-    AssertThrow(!it.values.empty(),
-                ExcMessage("Model/Frame/Sections: item '" + it.name + "' has no kind"));
-    const std::string kind = it.values[0];
-    std::vector<double> v;
-    for (unsigned int i = 1; i < it.values.size(); ++i)
-    {
-      v.push_back(to_number(it.values[i], "Sections", it));
-      AssertThrow(v.back() >= 0.,
-                  ExcMessage("Model/Frame/Sections: item '" + it.name +
-                             "' has a negative value"));
-    }
     AssertThrow(
         sections.count(it.name) == 0,
         ExcMessage("Model/Frame/Sections: section '" + it.name + "' is defined twice"));
-    FrameSection s;
-    if (kind == "rectangle")
-    {
-      expect_values(it, "Sections", {3}, "'rectangle, b, h'");
-      AssertThrow(v[0] > 0. && v[1] > 0.,
-                  ExcMessage("Model/Frame/Sections: item '" + it.name +
-                             "': a rectangle needs b > 0 and h > 0 (m)"));
-      s = FrameSection::rectangle(v[0], v[1]);
-    }
-    else if (kind == "box")
-    {
-      expect_values(it, "Sections", {5}, "'box, b, h, t_web, t_flange'");
-      AssertThrow(v[0] > 0. && v[1] > 0. && v[2] > 0. && v[3] > 0. && 2. * v[2] < v[0] &&
-                      2. * v[3] < v[1],
-                  ExcMessage("Model/Frame/Sections: item '" + it.name +
-                             "': a box needs b, h, t_web, t_flange > 0 (m), 2 t_web < b "
-                             "and 2 t_flange < h"));
-      s = FrameSection::box(v[0], v[1], v[2], v[3]);
-    }
-    else if (kind == "general")
-    {
-      expect_values(it, "Sections", {7}, "'general, A, Iy, Iz, J, Asy, Asz'");
-      s.A = v[0];
-      s.Iy = v[1];
-      s.Iz = v[2];
-      s.J = v[3];
-      s.shear_area_y = v[4];
-      s.shear_area_z = v[5];
-    }
-    else
-      AssertThrow(false,
-                  ExcMessage("Model/Frame/Sections: item '" + it.name +
-                             "': unknown kind '" + kind +
-                             "', expected rectangle, box or general"));
-    AssertThrow(s.A > 0. && s.Iy > 0. && s.Iz > 0. && s.J > 0.,
-                ExcMessage("Model/Frame/Sections: item '" + it.name +
-                           "' needs A, Iy, Iz and J > 0"));
-    sections[it.name] = s;
+    std::string text;
+    for (unsigned int i = 0; i < it.values.size(); ++i)
+      text += (i ? ", " : "") + it.values[i];
+    sections[it.name] =
+        parse_section(text, "Model/Frame/Sections: item '" + it.name + "'");
   }
   for (const Item &it : parse_items(prm.get("Members"), "Members"))
   {

@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <hati/model/bar.h>
+#include <hati/model/bridge_crane.h>
 #include <hati/model/frame.h>
 #include <hati/model/model.h>
 #include <hati/model/point_mass.h>
@@ -252,10 +253,11 @@ void declare_model_parameters(ParameterHandler &prm)
   prm.declare_entry(
       "Type",
       "point mass",
-      Patterns::Selection("point mass|bar|solid|frame"),
+      Patterns::Selection("point mass|bar|solid|frame|bridge crane"),
       "Which model to build: 'point mass' (rigid, 3 DoFs: the bouncing "
-      "ball), 'bar' (1D elastic bar), 'solid' (3D elastic prism) or 'frame' "
-      "(3D beam frame).");
+      "ball), 'bar' (1D elastic bar), 'solid' (3D elastic prism), 'frame' "
+      "(3D beam frame) or 'bridge crane' (a frame generated from the Bridge "
+      "crane subsection).");
   prm.enter_subsection("Point mass");
   PointMass::Parameters::declare_parameters(prm);
   prm.leave_subsection();
@@ -267,6 +269,9 @@ void declare_model_parameters(ParameterHandler &prm)
   prm.leave_subsection();
   prm.enter_subsection("Frame");
   Frame::Parameters::declare_parameters(prm);
+  prm.leave_subsection();
+  prm.enter_subsection("Bridge crane");
+  BridgeCrane::Parameters::declare_parameters(prm);
   prm.leave_subsection();
   prm.enter_subsection("Decomposition");
   DecompositionParameters::declare_parameters(prm);
@@ -282,7 +287,7 @@ std::unique_ptr<Model> create_model(ParameterHandler &prm)
   prm.leave_subsection();
   prm.enter_subsection("Model");
   const std::string type = prm.get("Type");
-  AssertThrow(!excited_members || type == "frame",
+  AssertThrow(!excited_members || type == "frame" || type == "bridge crane",
               ExcMessage("Loading/Excited members: only frame models have members; "
                          "leave it empty for Model/Type = " +
                          type));
@@ -310,6 +315,14 @@ std::unique_ptr<Model> create_model(ParameterHandler &prm)
     p.parse_parameters(prm);
     prm.leave_subsection();
     model = std::make_unique<Frame>(p);
+  }
+  else if (type == "bridge crane")
+  {
+    prm.enter_subsection("Bridge crane");
+    BridgeCrane::Parameters p;
+    p.parse_parameters(prm);
+    prm.leave_subsection();
+    model = std::make_unique<BridgeCrane>(p);
   }
   else
   {

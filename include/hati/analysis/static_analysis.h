@@ -35,7 +35,12 @@ using namespace dealii;
  * [F; -g0_c]` on the closed rows `L_c` is factorised with KLU (pivoting, so
  * that a structure supported by its contacts only is solved: then `K` alone
  * may be singular). Two closed rows that are exact opposites (a two-sided
- * contact without clearance) act as one bilateral row. Every other closed
+ * contact without clearance) act as one bilateral row. A two-sided contact
+ * with a clearance (two opposite rows, the same positive gap) is held at its
+ * initial position (`L U = 0`): the play is a mechanism that a static state
+ * must not load, so its force must vanish (`|lambda| <= 1e-9` times the
+ * largest force or nodal load), otherwise the error names it; its force is
+ * reported as 0. Every other closed
  * contact must be in compression (`lambda >= -1e-9 max|lambda|`), otherwise
  * the error names it.
  *

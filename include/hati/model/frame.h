@@ -40,6 +40,14 @@ public:
     static void declare_parameters(ParameterHandler &prm);
     void parse_parameters(ParameterHandler &prm);
 
+    /**
+     * A cross-section from the Sections syntax after the name, @p text =
+     * 'rectangle, b, h' | 'box, b, h, t_web, t_flange' | 'general, A, Iy,
+     * Iz, J, Asy, Asz' (m, m^2, m^4; frame_element.h); @p where (the entry
+     * and item) starts every error message.
+     */
+    static FrameSection parse_section(const std::string &text, const std::string &where);
+
     struct Member
     {
       std::string name, start, end, section, material;

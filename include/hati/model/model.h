@@ -7,6 +7,7 @@
 #include <hati/model/discrete_system.h>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -123,6 +124,17 @@ public:
 
   /** One line describing the model for the terminal and summary.json. */
   virtual std::string description() const = 0;
+
+  /**
+   * Model-specific summary.json entries (key, JSON value), given the static
+   * contact forces per contact name (N; empty without a static state). None
+   * by default.
+   */
+  virtual std::vector<std::pair<std::string, std::string>>
+  summary_entries(const std::map<std::string, double> & /*static_contact_forces*/) const
+  {
+    return {};
+  }
 
   /**
    * Header of `section_forces.csv`, or an empty string if the model writes

@@ -1,0 +1,86 @@
+#ifndef hati_model_bridge_crane_h
+#define hati_model_bridge_crane_h
+
+#include <hati/model/frame.h>
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hati
+{
+/**
+ * A parametric double-girder overhead travelling (bridge) crane, generated
+ * as a Frame description (doc/user_guide.md "Bridge crane"): two box girders
+ * along Y (span) on two end carriages along X (runway), four crane wheels on
+ * rigid runway rails (node-to-plane contacts, doc/theory.md 1.2), a trolley
+ * frame with four wheels on the flexible girders (node-to-node contacts
+ * against the girder node under each wheel) and the hoist mass at the
+ * trolley's centre. Vertical contacts are one-sided with zero gap (closed in
+ * the static state); lateral contacts are two-sided with the flange
+ * clearance. X is the runway (long travel), Y the span (cross travel), Z up.
+ */
+class BridgeCrane : public Frame
+{
+public:
+  /** The `Model/Bridge crane` subsection. */
+  struct Parameters
+  {
+    static void declare_parameters(ParameterHandler &prm);
+    void parse_parameters(ParameterHandler &prm);
+
+    /** Distance between the runway rails (m, along Y). */
+    double span = 20.;
+    /** Distance between the girders = trolley rail gauge (m, along X). */
+    double girder_spacing = 2.;
+    /** Distance between the two wheels of an end carriage (m, along X). */
+    double end_carriage_wheelbase = 3.5;
+    /** Distance between the trolley's wheels along a girder (m, along Y). */
+    double trolley_wheelbase = 1.8;
+    /** Position of the trolley's centre (and hoist) as a fraction of the span (-). */
+    double trolley_position = 0.5;
+    /** Sections, Model/Frame/Sections syntax after the name. */
+    std::string girder_section, end_carriage_section, trolley_section;
+    /** Young's modulus (Pa), Poisson's ratio (-), density (kg/m^3). */
+    double E = 2.1e11, nu = 0.3, rho = 7850.;
+    /** Trolley rail on each girder (kg/m), lumped on the girder nodes. */
+    double rail_mass_per_metre = 25.;
+    /** Trolley (crab) machinery (kg), a quarter on each trolley wheel node. */
+    double trolley_mass = 3000.;
+    /** Lifted load and hook block (kg), rigidly at the trolley's centre. */
+    double hoist_mass = 20350.;
+    /** Total lateral play of a wheel between its flanges (m). */
+    double flange_clearance = 0.02;
+    /** Newton's restitution coefficient of every wheel contact (-). */
+    double wheel_restitution = 0.;
+    /** "braked" (crane wheels fixed along X, trolley tied along Y) or "free". */
+    std::string travel = "braked";
+    /** Element lengths outside and inside the explicit zones (m). */
+    double element_length = 1., explicit_element_length = 0.25;
+    /** Length of girder / end carriage around each wheel meshed finely (m). */
+    double explicit_zone_length = 1.;
+
+    /** The frame: nodes, members, sections, masses, supports, contacts. */
+    Frame::Parameters frame() const;
+    /** Girders, end carriages and rails (kg). */
+    double mass_bridge() const;
+    /** Trolley frame, trolley mass and hoist mass (kg). */
+    double mass_trolley() const;
+  };
+
+  explicit BridgeCrane(const Parameters &parameters);
+  std::string description() const override;
+  /**
+   * `mass_bridge`, `mass_trolley` (kg) and `static_wheel_loads` (wheel
+   * contact name -> vertical static force, N) from @p static_contact_forces.
+   */
+  std::vector<std::pair<std::string, std::string>> summary_entries(
+      const std::map<std::string, double> &static_contact_forces) const override;
+
+private:
+  const Parameters crane;
+};
+} // namespace hati
+
+#endif

@@ -1,0 +1,509 @@
+#include <deal.II/base/utilities.h>
+
+#include <hati/model/bridge_crane.h>
+#include <hati/output/output_writer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace hati
+{
+namespace
+{
+const std::string where = "Model/Bridge crane/";
+
+/** Height above the girder axes at which the trolley frame is drawn (m). */
+constexpr double trolley_height = 0.5;
+
+/**
+ * Stations along a line of length @p L: 0, L, the @p fixed points and the
+ * edges of the @p zones (clipped to [0, L]), each interval divided into equal
+ * elements no longer than @p h, or @p h_zone inside a zone.
+ */
+std::vector<double> stations(const double L,
+                             const std::vector<double> &fixed,
+                             const std::vector<std::pair<double, double>> &zones,
+                             const double h,
+                             const double h_zone)
+{
+  std::vector<double> breaks = {0., L};
+  breaks.insert(breaks.end(), fixed.begin(), fixed.end());
+  for (const auto &[a, b] : zones)
+    for (const double x : {a, b})
+      if (x > 0. && x < L)
+        breaks.push_back(x);
+  std::sort(breaks.begin(), breaks.end());
+  std::vector<double> unique;
+  for (const double x : breaks)
+    if (unique.empty() || x - unique.back() > 1e-9 * L)
+      unique.push_back(x);
+  std::vector<double> s = {0.};
+  for (unsigned int i = 0; i + 1 < unique.size(); ++i)
+  {
+    const double a = unique[i], b = unique[i + 1], mid = 0.5 * (a + b);
+    bool in_zone = false;
+    for (const auto &z : zones)
+      in_zone = in_zone || (mid > z.first && mid < z.second);
+    const unsigned int n = std::max(
+        1u,
+        static_cast<unsigned int>(std::ceil((b - a) / (in_zone ? h_zone : h) - 1e-9)));
+    for (unsigned int k = 1; k <= n; ++k)
+      s.push_back(k == n ? b : a + (b - a) * k / n);
+  }
+  return s;
+}
+
+/** Index of @p x in @p s (it is one of the stations). */
+unsigned int station_index(const std::vector<double> &s, const double x)
+{
+  unsigned int best = 0;
+  for (unsigned int i = 1; i < s.size(); ++i)
+    if (std::abs(s[i] - x) < std::abs(s[best] - x))
+      best = i;
+  return best;
+}
+
+double section_area(const std::string &text, const std::string &entry)
+{
+  return Frame::Parameters::parse_section(text, where + entry).A;
+}
+} // namespace
+
+void BridgeCrane::Parameters::declare_parameters(ParameterHandler &prm)
+{
+  // defaults: a 20 t, 20 m span double-girder crane, /work/shared/notes/crane-data.md
+  prm.declare_entry("Span",
+                    "20",
+                    Patterns::Double(),
+                    "Distance between the runway rails (m, along Y), > 0. Default: the "
+                    "20 t / 20 m reference crane (crane-data.md section 0; spans "
+                    "10.5-31.5 m in 3 m steps).");
+  prm.declare_entry("Girder spacing",
+                    "2",
+                    Patterns::Double(),
+                    "Distance between the two girders = trolley rail gauge (m, along X), "
+                    "> 0 and < End carriage wheelbase. Default 2 m: trolley gauges are "
+                    "1.4-2.5 m, classic 20/5 t crabs about 2 m (crane-data.md section 4, "
+                    "estimate).");
+  prm.declare_entry("End carriage wheelbase",
+                    "3.5",
+                    Patterns::Double(),
+                    "Distance between the two wheels of an end carriage (m, along X), > "
+                    "Girder spacing. Default 3.5 m: anti-skew rule wheelbase >= span/7 "
+                    "(2.9 m) and the IS 800 25 t / 16 m example (crane-data.md section "
+                    "3).");
+  prm.declare_entry("Trolley wheelbase",
+                    "1.8",
+                    Patterns::Double(),
+                    "Distance between the trolley's two wheels on one girder (m, along "
+                    "Y), > 0. Default 1.8 m (range 1.2-2.5 m, crane-data.md section 4, "
+                    "estimate).");
+  prm.declare_entry("Trolley position",
+                    "0.5",
+                    Patterns::Double(),
+                    "Position of the trolley's centre, where the hoist stands, as a "
+                    "fraction of the span from the rail at Y = 0 (-); all trolley wheels "
+                    "must lie strictly inside the span. Default 0.5 (mid-span: largest "
+                    "girder deflection).");
+  prm.declare_entry("Girder section",
+                    "box, 0.46, 1.10, 0.006, 0.013",
+                    Patterns::Anything(),
+                    "Section of each girder, Model/Frame/Sections syntax after the name "
+                    "(m). Default: welded box 1.10 m deep (L/h = 18), flanges 460 x 13 "
+                    "mm, webs 6 mm: A = 248 cm^2, I_vertical = 4.8e-3 m^4 "
+                    "(crane-data.md section 1, estimate meeting the L/800 deflection "
+                    "limit).");
+  prm.declare_entry("End carriage section",
+                    "box, 0.3, 0.5, 0.008, 0.012",
+                    Patterns::Anything(),
+                    "Section of each end carriage, Model/Frame/Sections syntax (m). "
+                    "Default: box 0.5 m high, 0.3 m wide, 8/12 mm plates (crane-data.md "
+                    "section 3, estimate).");
+  prm.declare_entry("Trolley section",
+                    "box, 0.2, 0.3, 0.008, 0.010",
+                    Patterns::Anything(),
+                    "Section of the trolley frame members, Model/Frame/Sections syntax "
+                    "(m). Default: box 0.3 x 0.2 m, 8/10 mm plates (estimate for a "
+                    "welded crab frame; its mass, 0.64 t, is part of the trolley).");
+  prm.declare_entry("Material",
+                    "2.1e11, 0.3, 7850",
+                    Patterns::List(Patterns::Double(), 3, 3, ","),
+                    "E (Pa), nu (-), rho (kg/m^3) of every member. Default: structural "
+                    "steel.");
+  prm.declare_entry("Rail mass per metre",
+                    "25",
+                    Patterns::Double(),
+                    "Mass of the trolley rail on each girder (kg/m), >= 0, lumped on the "
+                    "girder nodes. Default 25 kg/m (light rail or 50 x 50 bar, 20-40 "
+                    "kg/m, crane-data.md section 2). Diaphragms, walkway, drives (about "
+                    "+50 % of the plates) are not in the default model: add them here "
+                    "or to rho.");
+  prm.declare_entry(
+      "Trolley mass",
+      "3000",
+      Patterns::Double(),
+      "Trolley (crab) machinery (kg), >= 0, a quarter on each trolley wheel "
+      "node. Default 3 t: European compact double-rail crab for 20 t, 2-4 t "
+      "(crane-data.md section 4; a classic open-winch crab is 6-8 t).");
+  prm.declare_entry("Hoist mass",
+                    "20350",
+                    Patterns::Double(),
+                    "Lifted load and hook block (kg), >= 0, rigidly at the trolley's "
+                    "centre (no rope pendulum). Default: the rated 20 t plus a 0.35 t "
+                    "hook block (crane-data.md section 0).");
+  prm.declare_entry("Flange clearance",
+                    "0.02",
+                    Patterns::Double(),
+                    "Total lateral play of a wheel between its flanges (m), >= 0, for "
+                    "the crane and the trolley wheels (two-sided contacts, +-c/2). "
+                    "Default 20 mm: CMAA practice 19-25 mm for bridge wheels, 15-30 mm "
+                    "in Europe (crane-data.md section 5).");
+  prm.declare_entry("Wheel restitution",
+                    "0",
+                    Patterns::Double(),
+                    "Newton's restitution coefficient of every wheel contact (-), in "
+                    "[0, 1]. Default 0: plastic impact, the usual choice for "
+                    "finite-element contact.");
+  prm.declare_entry("Travel",
+                    "braked",
+                    Patterns::Selection("braked|free"),
+                    "braked: the crane wheels are held along the runway (X) and the "
+                    "trolley wheels tied to their girder nodes along Y (two-sided "
+                    "contacts without clearance, trolley_wheel_<i>_travel); free: both "
+                    "roll freely (then a static state along X and Y does not exist: "
+                    "use Initial state = given).");
+  prm.declare_entry("Element length",
+                    "1",
+                    Patterns::Double(),
+                    "Largest element length outside the explicit zones (m), > 0.");
+  prm.declare_entry("Explicit element length",
+                    "0.25",
+                    Patterns::Double(),
+                    "Largest element length inside the explicit zones and in the trolley "
+                    "frame (m), > 0.");
+  prm.declare_entry("Explicit zone length",
+                    "1",
+                    Patterns::Double(),
+                    "Length of girder and of end carriage centred on each wheel that is "
+                    "meshed with the Explicit element length (m), >= 0 and not longer "
+                    "than a girder (the span).");
+}
+
+void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
+{
+  auto positive = [&](const std::string &name, const bool allow_zero = false)
+  {
+    const double x = prm.get_double(name);
+    AssertThrow(std::isfinite(x) && (allow_zero ? x >= 0. : x > 0.),
+                ExcMessage(where + name + ": expected a value " +
+                           (allow_zero ? ">= 0" : "> 0") + ", got " + prm.get(name)));
+    return x;
+  };
+  span = positive("Span");
+  girder_spacing = positive("Girder spacing");
+  end_carriage_wheelbase = positive("End carriage wheelbase");
+  trolley_wheelbase = positive("Trolley wheelbase");
+  trolley_position = prm.get_double("Trolley position");
+  girder_section = prm.get("Girder section");
+  end_carriage_section = prm.get("End carriage section");
+  trolley_section = prm.get("Trolley section");
+  const auto m =
+      Utilities::string_to_double(Utilities::split_string_list(prm.get("Material"), ','));
+  E = m[0];
+  nu = m[1];
+  rho = m[2];
+  AssertThrow(E > 0. && nu > -1. && nu < 0.5 && rho > 0.,
+              ExcMessage(where + "Material: expected E > 0, -1 < nu < 0.5, rho > 0"));
+  rail_mass_per_metre = positive("Rail mass per metre", true);
+  trolley_mass = positive("Trolley mass", true);
+  hoist_mass = positive("Hoist mass", true);
+  flange_clearance = positive("Flange clearance", true);
+  wheel_restitution = prm.get_double("Wheel restitution");
+  AssertThrow(wheel_restitution >= 0. && wheel_restitution <= 1.,
+              ExcMessage(where + "Wheel restitution: expected a value in [0, 1], got " +
+                         prm.get("Wheel restitution")));
+  travel = prm.get("Travel");
+  element_length = positive("Element length");
+  explicit_element_length = positive("Explicit element length");
+  explicit_zone_length = positive("Explicit zone length", true);
+
+  AssertThrow(girder_spacing < end_carriage_wheelbase,
+              ExcMessage(where + "Girder spacing: expected less than the End carriage "
+                                 "wheelbase (the girders sit between the wheels)"));
+  const double y1 = (trolley_position - 0.5 * trolley_wheelbase / span) * span,
+               y2 = y1 + trolley_wheelbase;
+  std::ostringstream s;
+  s << where << "Trolley position: the trolley is off the span: its wheels at y = " << y1
+    << " and " << y2 << " m must lie strictly between the rails at 0 and " << span
+    << " m";
+  AssertThrow(y1 > 0. && y2 < span, ExcMessage(s.str()));
+  std::ostringstream z;
+  z << where << "Explicit zone length: " << explicit_zone_length
+    << " m is longer than a girder (Span = " << span << " m)";
+  AssertThrow(explicit_zone_length <= span, ExcMessage(z.str()));
+  // check the sections now (one-line errors naming the entry)
+  section_area(girder_section, "Girder section");
+  section_area(end_carriage_section, "End carriage section");
+  section_area(trolley_section, "Trolley section");
+}
+
+double BridgeCrane::Parameters::mass_bridge() const
+{
+  return rho * (2. * section_area(girder_section, "Girder section") * span +
+                2. * section_area(end_carriage_section, "End carriage section") *
+                    end_carriage_wheelbase) +
+         2. * rail_mass_per_metre * span;
+}
+
+double BridgeCrane::Parameters::mass_trolley() const
+{
+  // frame: two sides (wheelbase), two ends and the hoist beam (gauge)
+  return rho * section_area(trolley_section, "Trolley section") *
+             (2. * trolley_wheelbase + 3. * girder_spacing) +
+         trolley_mass + hoist_mass;
+}
+
+Frame::Parameters BridgeCrane::Parameters::frame() const
+{
+  Frame::Parameters f;
+  FrameMaterial steel;
+  steel.E = E;
+  steel.G = E / (2. * (1. + nu));
+  steel.rho = rho;
+  f.materials["steel"] = steel;
+  f.sections["girder"] =
+      Frame::Parameters::parse_section(girder_section, where + "Girder section");
+  f.sections["end_carriage"] = Frame::Parameters::parse_section(
+      end_carriage_section, where + "End carriage section");
+  f.sections["trolley"] =
+      Frame::Parameters::parse_section(trolley_section, where + "Trolley section");
+  auto node = [&](const std::string &name, const double x, const double y, const double z)
+  {
+    f.nodes[name] = Point<3>(x, y, z);
+    f.node_order.push_back(name);
+  };
+  auto member = [&](const std::string &name,
+                    const std::vector<std::string> &path,
+                    const std::string &section)
+  {
+    Frame::Parameters::Member m;
+    m.name = name;
+    m.path = path;
+    m.start = path.front();
+    m.end = path.back();
+    m.section = section;
+    m.material = "steel";
+    m.n_elements = path.size() - 1;
+    f.members.push_back(m);
+  };
+  const double S = span, a = 0.5 * girder_spacing, w = 0.5 * end_carriage_wheelbase,
+               yc = trolley_position * S, y1 = yc - 0.5 * trolley_wheelbase,
+               y2 = yc + 0.5 * trolley_wheelbase, hz = 0.5 * explicit_zone_length;
+
+  // end carriages along X at Y = 0 and Y = S: crane wheels at the ends,
+  // girder joints at x = -a, +a
+  const std::vector<double> xs = stations(2. * w,
+                                          {w - a, w + a},
+                                          {{-hz, hz}, {2. * w - hz, 2. * w + hz}},
+                                          element_length,
+                                          explicit_element_length);
+  for (unsigned int c = 1; c <= 2; ++c)
+  {
+    const double y = c == 1 ? 0. : S;
+    std::vector<std::string> path;
+    for (unsigned int i = 0; i < xs.size(); ++i)
+    {
+      std::string name = "end_carriage_" + std::to_string(c) + "_" + std::to_string(i);
+      if (i == 0)
+        name = "cw" + std::to_string(2 * c - 1);
+      else if (i + 1 == xs.size())
+        name = "cw" + std::to_string(2 * c);
+      else if (i == station_index(xs, w - a))
+        name = "joint_1_" + std::to_string(c);
+      else if (i == station_index(xs, w + a))
+        name = "joint_2_" + std::to_string(c);
+      node(name, xs[i] - w, y, 0.);
+      path.push_back(name);
+    }
+    member("end_carriage_" + std::to_string(c), path, "end_carriage");
+  }
+
+  // girders along Y at x = -a (girder_1) and +a (girder_2), a node under
+  // each trolley wheel; the rail mass lumped on their nodes
+  const std::vector<double> ys = stations(S,
+                                          {y1, y2},
+                                          {{y1 - hz, y1 + hz}, {y2 - hz, y2 + hz}},
+                                          element_length,
+                                          explicit_element_length);
+  for (unsigned int g = 1; g <= 2; ++g)
+  {
+    std::vector<std::string> path;
+    for (unsigned int i = 0; i < ys.size(); ++i)
+    {
+      std::string name = "girder_" + std::to_string(g) + "_" + std::to_string(i);
+      if (i == 0)
+        name = "joint_" + std::to_string(g) + "_1";
+      else if (i + 1 == ys.size())
+        name = "joint_" + std::to_string(g) + "_2";
+      else if (i == station_index(ys, y1))
+        name = "rail_" + std::to_string(2 * g - 1);
+      else if (i == station_index(ys, y2))
+        name = "rail_" + std::to_string(2 * g);
+      else
+        node(name, g == 1 ? -a : a, ys[i], 0.);
+      path.push_back(name);
+      const double tributary = 0.5 * ((i > 0 ? ys[i] - ys[i - 1] : 0.) +
+                                      (i + 1 < ys.size() ? ys[i + 1] - ys[i] : 0.));
+      if (rail_mass_per_metre > 0.)
+      {
+        Frame::Parameters::PointMassData p;
+        p.node = name;
+        p.mass = rail_mass_per_metre * tributary;
+        f.point_masses.push_back(p);
+      }
+    }
+    node("rail_" + std::to_string(2 * g - 1), g == 1 ? -a : a, y1, 0.);
+    node("rail_" + std::to_string(2 * g), g == 1 ? -a : a, y2, 0.);
+    member("girder_" + std::to_string(g), path, "girder");
+  }
+
+  // trolley frame above the girders: wheels tw1, tw2 on girder_1 (y1, y2),
+  // tw3, tw4 on girder_2; the hoist on a beam across at yc
+  const double zt = trolley_height;
+  node("tw1", -a, y1, zt);
+  node("tw2", -a, y2, zt);
+  node("tw3", a, y1, zt);
+  node("tw4", a, y2, zt);
+  node("ts1", -a, yc, zt);
+  node("ts2", a, yc, zt);
+  node("hoist", 0., yc, zt);
+  auto straight = [&](const std::string &name,
+                      const std::string &from,
+                      const std::string &to,
+                      const double length)
+  {
+    Frame::Parameters::Member m;
+    m.name = name;
+    m.start = from;
+    m.end = to;
+    m.section = "trolley";
+    m.material = "steel";
+    m.n_elements = std::max(
+        1u,
+        static_cast<unsigned int>(std::ceil(length / explicit_element_length - 1e-9)));
+    f.members.push_back(m);
+  };
+  straight("trolley_side_1a", "tw1", "ts1", 0.5 * trolley_wheelbase);
+  straight("trolley_side_1b", "ts1", "tw2", 0.5 * trolley_wheelbase);
+  straight("trolley_side_2a", "tw3", "ts2", 0.5 * trolley_wheelbase);
+  straight("trolley_side_2b", "ts2", "tw4", 0.5 * trolley_wheelbase);
+  straight("trolley_end_1", "tw1", "tw3", girder_spacing);
+  straight("trolley_end_2", "tw2", "tw4", girder_spacing);
+  straight("trolley_beam_1", "ts1", "hoist", a);
+  straight("trolley_beam_2", "hoist", "ts2", a);
+  for (const char *n : {"tw1", "tw2", "tw3", "tw4"})
+    if (trolley_mass > 0.)
+    {
+      Frame::Parameters::PointMassData p;
+      p.node = n;
+      p.mass = 0.25 * trolley_mass;
+      f.point_masses.push_back(p);
+    }
+  if (hoist_mass > 0.)
+  {
+    Frame::Parameters::PointMassData p;
+    p.node = "hoist";
+    p.mass = hoist_mass;
+    f.point_masses.push_back(p);
+  }
+
+  // supports: braked crane wheels along the runway
+  if (travel == "braked")
+    for (unsigned int k = 1; k <= 4; ++k)
+    {
+      Frame::Parameters::Support s;
+      s.node = "cw" + std::to_string(k);
+      s.stiffness[0] = 0.;
+      f.supports.push_back(s);
+    }
+
+  // contacts
+  auto contact = [&](const std::string &name,
+                     const std::string &node_name,
+                     const std::string &other,
+                     const Tensor<1, 3> &normal,
+                     const double gap,
+                     const bool two_sided)
+  {
+    Frame::Parameters::NodeContact c;
+    c.name = name;
+    c.node = node_name;
+    c.other_node = other;
+    c.normal = normal;
+    c.gap = gap;
+    c.restitution = wheel_restitution;
+    c.two_sided = two_sided;
+    f.contacts.push_back(c);
+  };
+  const Tensor<1, 3> ex({1., 0., 0.}), ey({0., 1., 0.}), ez({0., 0., 1.});
+  for (unsigned int k = 1; k <= 4; ++k)
+  {
+    const std::string cw = "crane_wheel_" + std::to_string(k);
+    contact(cw, "cw" + std::to_string(k), "", ez, 0., false);
+    contact(cw + "_lateral", "cw" + std::to_string(k), "", ey, flange_clearance, true);
+  }
+  for (unsigned int k = 1; k <= 4; ++k)
+  {
+    const std::string tw = "trolley_wheel_" + std::to_string(k),
+                      wn = "tw" + std::to_string(k), rn = "rail_" + std::to_string(k);
+    contact(tw, wn, rn, ez, 0., false);
+    contact(tw + "_lateral", wn, rn, ex, flange_clearance, true);
+    if (travel == "braked")
+      contact(tw + "_travel", wn, rn, ey, 0., true);
+  }
+  f.monitor_nodes = {"hoist", "tw1", "tw2", "tw3", "tw4", "cw1", "cw2", "cw3", "cw4"};
+  return f;
+}
+
+BridgeCrane::BridgeCrane(const Parameters &parameters)
+    : Frame(parameters.frame()), crane(parameters)
+{
+}
+
+std::string BridgeCrane::description() const
+{
+  std::ostringstream s;
+  s << "bridge crane: span " << crane.span << " m, trolley at " << crane.trolley_position
+    << " of the span, bridge " << crane.mass_bridge() << " kg, trolley "
+    << crane.mass_trolley() << " kg; " << Frame::description();
+  return s.str();
+}
+
+std::vector<std::pair<std::string, std::string>> BridgeCrane::summary_entries(
+    const std::map<std::string, double> &static_contact_forces) const
+{
+  std::vector<std::pair<std::string, std::string>> entries = {
+      {"mass_bridge", json_number(crane.mass_bridge())},
+      {"mass_trolley", json_number(crane.mass_trolley())}};
+  if (!static_contact_forces.empty())
+  {
+    std::ostringstream s;
+    s << '{';
+    bool first = true;
+    for (const char *kind : {"crane_wheel_", "trolley_wheel_"})
+      for (unsigned int k = 1; k <= 4; ++k)
+      {
+        const std::string name = kind + std::to_string(k);
+        const auto it = static_contact_forces.find(name);
+        if (it == static_contact_forces.end())
+          continue;
+        s << (first ? "" : ", ") << json_string(name) << ": " << json_number(it->second);
+        first = false;
+      }
+    s << '}';
+    entries.emplace_back("static_wheel_loads", s.str());
+  }
+  return entries;
+}
+} // namespace hati

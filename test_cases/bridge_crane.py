@@ -1,0 +1,66 @@
+#!/usr/bin/python3
+"""The parametric bridge crane (parameter_files/bridge_crane_static.prm,
+Model/Type = bridge crane): static wheel loads with the vertical contacts
+closed.
+
+- the generated masses equal the hand sums of the section areas (header of
+  the .prm) to 1e-12;
+- the crane wheel loads sum to the total weight M g to 1e-8 relative, the
+  trolley wheel loads to the trolley's weight (internal contacts);
+- the two runway rails share the weight by the lever rule from the trolley
+  position (statically determinate), at two trolley positions, to 1e-8;
+- the two wheels of a rail carry the same load (symmetry about X = 0);
+- one-line errors: trolley off the span, explicit zone longer than a
+  girder, negative flange clearance."""
+import os
+import subprocess
+
+from hati_test import Context, read_summary
+
+ctx = Context()
+prm = ctx.prm("bridge_crane_static.prm")
+g, S, rho = 9.81, 20.0, 7850.0
+A_g = 0.46 * 1.10 - 0.448 * 1.074
+A_ec = 0.3 * 0.5 - 0.284 * 0.476
+A_t = 0.2 * 0.3 - 0.184 * 0.28
+m_girders, m_rails, m_ec = 2 * rho * A_g * S, 2 * 25.0 * S, rho * A_ec * 3.5
+m_bridge = m_girders + m_rails + 2 * m_ec
+m_trolley = rho * A_t * (2 * 1.8 + 3 * 2.0) + 3000.0 + 20350.0
+M = m_bridge + m_trolley
+
+for p in (0.3, 0.75):
+    out, _ = ctx.run(prm, "p%g" % p, ["Model/Bridge crane/Trolley position=%g" % p])
+    s = read_summary(out)
+    ctx.check("p = %g: mass_bridge (kg)" % p, s["mass_bridge"], m_bridge, rel=1e-12)
+    ctx.check("p = %g: mass_trolley (kg)" % p, s["mass_trolley"], m_trolley, rel=1e-12)
+    w = s["static_wheel_loads"]
+    crane = [w["crane_wheel_%d" % k] for k in range(1, 5)]
+    trolley = [w["trolley_wheel_%d" % k] for k in range(1, 5)]
+    ctx.check("p = %g: sum of crane wheel loads (N) = M g" % p, sum(crane), M * g, rel=1e-8)
+    ctx.check("p = %g: sum of trolley wheel loads (N)" % p, sum(trolley), m_trolley * g, rel=1e-8)
+    R_S = g * ((m_girders + m_rails) / 2 + m_ec + p * m_trolley)
+    ctx.check("p = %g: rail at Y = S (wheels 3, 4) (N), lever rule" % p, crane[2] + crane[3], R_S,
+              rel=1e-8)
+    ctx.check("p = %g: rail at Y = 0 (wheels 1, 2) (N), lever rule" % p, crane[0] + crane[1],
+              M * g - R_S, rel=1e-8)
+    ctx.check("p = %g: wheels 1 and 2 equal (symmetry), relative" % p,
+              abs(crane[0] - crane[1]) / crane[0], 0.0, abs_tol=1e-8)
+
+
+def expect_error(what, sets, *fragments):
+    p = subprocess.run([ctx.hati, prm] + sum((["--set", x] for x in sets), []) +
+                       ["--set", "Output/Output directory=" + os.path.join(ctx.work, "err")],
+                       capture_output=True, text=True, timeout=120)
+    err = p.stderr.strip()
+    ok = (p.returncode > 0 and len(err.splitlines()) == 1 and err.startswith("hati: error:")
+          and all(x in err for x in fragments))
+    ctx.check_true(what, ok, "(exit %d) %s" % (p.returncode, err))
+
+
+expect_error("trolley off the span", ["Model/Bridge crane/Trolley position=0.97"],
+             "Trolley position", "off the span")
+expect_error("explicit zone longer than a girder", ["Model/Bridge crane/Explicit zone length=25"],
+             "Explicit zone length", "longer than a girder")
+expect_error("negative flange clearance", ["Model/Bridge crane/Flange clearance=-0.01"],
+             "Flange clearance", ">= 0")
+ctx.finish()
