@@ -18,6 +18,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include "test_tools.h"
+
 #include <hati/model/discrete_system.h>
 #include <hati/time/cd_lagrange.h>
 
@@ -33,39 +35,10 @@
 
 using namespace dealii;
 using namespace hati;
+using namespace hati_test;
 
 namespace
 {
-int failures = 0;
-
-/** |value - reference| <= tolerance, printed. */
-void check(const std::string &what,
-           const double value,
-           const double reference,
-           const double tolerance)
-{
-  const bool ok = std::abs(value - reference) <= tolerance;
-  std::cout << (ok ? "ok   " : "FAIL ") << std::setprecision(12) << what << ": value "
-            << value << ", reference " << reference << ", tolerance " << tolerance
-            << std::endl;
-  failures += ok ? 0 : 1;
-}
-
-/** what() with every run of white space (deal.II wraps lines) made one blank. */
-std::string message_of(const std::exception &e)
-{
-  std::istringstream in(e.what());
-  std::string word, message;
-  while (in >> word)
-    message += (message.empty() ? "" : " ") + word;
-  return message;
-}
-
-void expect(const bool ok, const std::string &what)
-{
-  std::cout << (ok ? "ok   " : "FAIL ") << what << std::endl;
-  failures += ok ? 0 : 1;
-}
 
 RayleighDamping rayleigh(const double a0, const double a1)
 {
@@ -575,9 +548,5 @@ int main(int argc, char **argv)
     std::cout << "FAIL exception: " << e.what() << std::endl;
     return 1;
   }
-  if (failures == 0)
-    std::cout << "all checks passed" << std::endl;
-  else
-    std::cout << "FAILURES: " << failures << std::endl;
-  return failures == 0 ? 0 : 1;
+  return finish();
 }

@@ -31,6 +31,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/tensor.h>
 
+#include "test_tools.h"
+
 #include <hati/model/discrete_system.h>
 #include <hati/time/cd_lagrange.h>
 
@@ -43,29 +45,10 @@
 
 using namespace dealii;
 using namespace hati;
+using namespace hati_test;
 
 namespace
 {
-int failures = 0;
-
-/** |value - reference| <= tolerance, printed. */
-void check(const std::string &what,
-           const double value,
-           const double reference,
-           const double tolerance)
-{
-  const bool ok = std::abs(value - reference) <= tolerance && std::isfinite(value);
-  std::cout << (ok ? "ok   " : "FAIL ") << std::setprecision(12) << what << ": value "
-            << value << ", reference " << reference << ", tolerance " << tolerance
-            << std::endl;
-  failures += ok ? 0 : 1;
-}
-
-void expect(const bool ok, const std::string &what)
-{
-  std::cout << (ok ? "ok   " : "FAIL ") << what << std::endl;
-  failures += ok ? 0 : 1;
-}
 
 using Vec = Tensor<1, 3>;
 
@@ -423,9 +406,5 @@ int main(int argc, char **argv)
     std::cout << "FAIL exception: " << e.what() << std::endl;
     return 1;
   }
-  if (failures == 0)
-    std::cout << "all checks passed" << std::endl;
-  else
-    std::cout << "FAILURES: " << failures << std::endl;
-  return failures == 0 ? 0 : 1;
+  return finish();
 }

@@ -6,6 +6,8 @@
 // problems. Returns non-zero on failure.
 #include <deal.II/base/exceptions.h>
 
+#include "test_tools.h"
+
 #include <hati/contact/lcp_solver.h>
 
 #include <cmath>
@@ -13,16 +15,10 @@
 #include <random>
 
 using namespace dealii;
+using namespace hati_test;
 
 namespace
 {
-int failures = 0;
-
-void expect(const bool ok, const std::string &what)
-{
-  std::cout << (ok ? "ok   " : "FAIL ") << what << std::endl;
-  failures += ok ? 0 : 1;
-}
 
 /** Largest violation of the complementarity conditions, relative to |q|. */
 double

@@ -49,8 +49,6 @@ public:
   void add_column(const Vector<double> &v);
   /** y += sum_k column_k x_k. */
   void add_multiply(Vector<double> &y, const Vector<double> &x) const;
-  /** Number of stored entries. */
-  std::size_t n_entries() const { return row.size(); }
   /** Rows with an entry in any column. */
   std::vector<unsigned int> rows() const;
 
@@ -164,7 +162,6 @@ public:
   /** Set-up: factorisation, ramp response, interface matrix (s). */
   double setup_seconds() const { return setup; }
 
-  const CDLagrange &explicit_part() const { return explicit_integrator; }
   const Newmark &implicit_part() const { return implicit; }
   unsigned int n_interface_dofs() const { return rows_E.size(); }
 
