@@ -7,6 +7,7 @@
 #include <hati/analysis/static_analysis.h>
 #include <hati/loading/accelerogram.h>
 #include <hati/loading/base_excitation.h>
+#include <hati/output/contact_statistics.h>
 #include <hati/output/output_writer.h>
 #include <hati/simulation.h>
 #include <hati/time/cd_lagrange.h>
@@ -231,6 +232,9 @@ void Simulation::run()
   {
     // the subdomains, with the initial state just set (static or given)
     decomposition = std::make_unique<Decomposition>();
+    if (decomposition_parameters.boxes.empty() &&
+        decomposition_parameters.members.empty())
+      decomposition_parameters = model->default_decomposition();
     decompose(*model, common_parameters, decomposition_parameters, *decomposition);
     for (auto &part : decomposition->parts)
     {
@@ -331,6 +335,12 @@ void Simulation::run_transient(Integrator &integrator,
       writer.write_vtu(s);
   };
 
+  // per contact name: impacts, peak force, time out of contact, episodes
+  std::vector<double> initial_gaps;
+  for (const auto &c : system.contacts)
+    initial_gaps.push_back(c.initial_gap + c.apply(system.initial_displacement));
+  ContactStatistics statistics(system.contacts, initial_gaps);
+
   // HATI: contact statistics and contacts.csv rows at the micro steps
   unsigned long micro_step = 0;
   const unsigned long every_contact_row =
@@ -344,6 +354,7 @@ void Simulation::run_transient(Integrator &integrator,
       integrator.after_micro_step = [&](const HATICoupling::ContactSample &sample)
       {
         writer.track_contacts(sample.gaps, sample.impulses);
+        statistics.add_step(sample.time, integrator.micro_time_step(), sample.impulses);
         if (++micro_step % every_contact_row == 0)
         {
           contact_row.time = sample.time;
@@ -365,7 +376,10 @@ void Simulation::run_transient(Integrator &integrator,
       integrator.step();
       if constexpr (explicit_scheme)
         if (!system.contacts.empty())
+        {
           writer.track_contacts(integrator.gaps(), integrator.impulses());
+          statistics.add_step(integrator.time(), dt, integrator.impulses());
+        }
       if (step % every_history == 0 || (every_vtu > 0 && step % every_vtu == 0) ||
           step == n_steps)
         write(step);
@@ -419,12 +433,23 @@ void Simulation::run_transient(Integrator &integrator,
          {"wall_time_setup", json_number(integrator.setup_seconds())},
          {"interface_velocity_jump", json_number(integrator.interface_velocity_jump())},
          {"redone_macro_steps", std::to_string(integrator.redone_macro_steps())},
-         {"interface_iterations", std::to_string(integrator.interface_iterations())}});
+         {"interface_iterations", std::to_string(integrator.interface_iterations())},
+         {"ramp_patterns", std::to_string(integrator.ramp_patterns())}});
     std::cout << "  HATI wall time: explicit " << integrator.explicit_seconds()
               << " s, implicit " << integrator.implicit_seconds() << " s, interface "
               << integrator.interface_seconds() << " s, set-up "
               << integrator.setup_seconds() << " s; interface velocity jump "
               << integrator.interface_velocity_jump() << " m/s" << std::endl;
+  }
+  if (!system.contacts.empty())
+  {
+    summary.emplace_back("contacts", statistics.json());
+    const auto wheels = model->wheel_contacts();
+    if (!wheels.empty())
+      summary.emplace_back("wheels", statistics.json(wheels));
+    std::ofstream episodes(output_directory + "/contact_episodes.csv");
+    statistics.write_episodes(episodes);
+    statistics.print_table(std::cout);
   }
   write_summary(output_directory + "/summary.json", summary);
   std::cout << "  done: " << n_steps << " steps in " << wall << " s; ";

@@ -291,7 +291,7 @@ void solve_static(const DiscreteSystem &system,
     for (unsigned int r = 0; r < closed.size(); ++r)
     {
       const unsigned int k = closed[r];
-      bool bilateral = false; // includes the centred pairs
+      bool bilateral = system.contacts[k].bilateral; // and the centred pairs
       for (unsigned int j = 0; j < opposite.size(); ++j)
         bilateral = bilateral || opposite[j] == static_cast<int>(k);
       if (!bilateral && lambda[r] < -1e-9 * largest)

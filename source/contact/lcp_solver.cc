@@ -13,8 +13,13 @@ namespace
 /** Exact enumeration of the 2^n active sets (n <= 12). */
 bool enumerate(const FullMatrix<double> &W,
                const Vector<double> &q,
+               const std::vector<bool> &bilateral,
                Vector<double> &lambda)
 {
+  unsigned int bilateral_mask = 0;
+  for (unsigned int i = 0; i < bilateral.size(); ++i)
+    if (bilateral[i])
+      bilateral_mask |= 1u << i;
   const unsigned int n = q.size();
   double scale = 0.;
   for (unsigned int i = 0; i < n; ++i)
@@ -32,6 +37,8 @@ bool enumerate(const FullMatrix<double> &W,
 
   for (const unsigned int mask : masks)
   {
+    if ((mask & bilateral_mask) != bilateral_mask)
+      continue; // bilateral rows are always in the active set
     std::vector<unsigned int> set;
     for (unsigned int i = 0; i < n; ++i)
       if (mask & (1u << i))
@@ -70,9 +77,10 @@ bool enumerate(const FullMatrix<double> &W,
       bool ok = true;
       for (unsigned int a = 0; a < set.size(); ++a)
       {
-        if (!std::isfinite(ls[a]) || ls[a] < -tol / wmax)
+        const bool free_sign = (bilateral_mask >> set[a]) & 1u;
+        if (!std::isfinite(ls[a]) || (!free_sign && ls[a] < -tol / wmax))
           ok = false;
-        lambda[set[a]] = std::max(0., ls[a]);
+        lambda[set[a]] = free_sign ? ls[a] : std::max(0., ls[a]);
       }
       if (!ok)
         continue;
@@ -97,6 +105,7 @@ bool enumerate(const FullMatrix<double> &W,
 /** Projected Gauss-Seidel for larger clusters. */
 bool projected_gauss_seidel(const FullMatrix<double> &W,
                             const Vector<double> &q,
+                            const std::vector<bool> &bilateral,
                             Vector<double> &lambda)
 {
   const unsigned int n = q.size();
@@ -110,7 +119,9 @@ bool projected_gauss_seidel(const FullMatrix<double> &W,
       double r = q[i];
       for (unsigned int j = 0; j < n; ++j)
         r += W(i, j) * lambda[j];
-      const double li = std::max(0., lambda[i] - r / W(i, i));
+      const double li = (i < bilateral.size() && bilateral[i])
+                            ? lambda[i] - r / W(i, i)
+                            : std::max(0., lambda[i] - r / W(i, i));
       change = std::max(change, std::abs(li - lambda[i]) * W(i, i));
       lambda[i] = li;
     }
@@ -121,8 +132,12 @@ bool projected_gauss_seidel(const FullMatrix<double> &W,
 }
 } // namespace
 
-Vector<double> solve_lcp(const FullMatrix<double> &W, const Vector<double> &q)
+Vector<double> solve_lcp(const FullMatrix<double> &W,
+                         const Vector<double> &q,
+                         const std::vector<bool> &bilateral)
 {
+  const bool has_bilateral =
+      std::find(bilateral.begin(), bilateral.end(), true) != bilateral.end();
   const unsigned int n = q.size();
   Vector<double> lambda(n);
   if (n == 0)
@@ -133,11 +148,11 @@ Vector<double> solve_lcp(const FullMatrix<double> &W, const Vector<double> &q)
                            "mass (fixed or massless); its Delassus entry is zero."));
   if (n == 1)
   {
-    lambda[0] = std::max(0., -q[0] / W(0, 0));
+    lambda[0] = has_bilateral ? -q[0] / W(0, 0) : std::max(0., -q[0] / W(0, 0));
     return lambda;
   }
-  const bool ok =
-      (n <= 12) ? enumerate(W, q, lambda) : projected_gauss_seidel(W, q, lambda);
+  const bool ok = (n <= 12) ? enumerate(W, q, bilateral, lambda)
+                            : projected_gauss_seidel(W, q, bilateral, lambda);
   if (!ok)
   {
     std::ostringstream s;

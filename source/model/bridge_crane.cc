@@ -173,6 +173,14 @@ void BridgeCrane::Parameters::declare_parameters(ParameterHandler &prm)
                     "contacts without clearance, trolley_wheel_<i>_travel); free: both "
                     "roll freely (then a static state along X and Y does not exist: "
                     "use Initial state = given).");
+  prm.declare_entry("Crane wheels",
+                    "contacts",
+                    Patterns::Selection("contacts|pinned"),
+                    "contacts: the four crane wheels stand on the rigid runway rails "
+                    "(one-sided vertical contacts crane_wheel_<i>, two-sided lateral "
+                    "ones with the Flange clearance); pinned: they are held in X, Y and "
+                    "Z (no crane wheel contact: the paper's case, where only the trolley "
+                    "wheels can lift off).");
   prm.declare_entry("Element length",
                     "1",
                     Patterns::Double(),
@@ -224,6 +232,7 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
               ExcMessage(where + "Wheel restitution: expected a value in [0, 1], got " +
                          prm.get("Wheel restitution")));
   travel = prm.get("Travel");
+  crane_wheels = prm.get("Crane wheels");
   element_length = positive("Element length");
   explicit_element_length = positive("Explicit element length");
   explicit_zone_length = positive("Explicit zone length", true);
@@ -390,8 +399,7 @@ Frame::Parameters BridgeCrane::Parameters::frame() const
     m.section = "trolley";
     m.material = "steel";
     m.n_elements = std::max(
-        1u,
-        static_cast<unsigned int>(std::ceil(length / explicit_element_length - 1e-9)));
+        1u, static_cast<unsigned int>(std::ceil(length / element_length - 1e-9)));
     f.members.push_back(m);
   };
   straight("trolley_side_1a", "tw1", "ts1", 0.5 * trolley_wheelbase);
@@ -418,13 +426,15 @@ Frame::Parameters BridgeCrane::Parameters::frame() const
     f.point_masses.push_back(p);
   }
 
-  // supports: braked crane wheels along the runway
-  if (travel == "braked")
+  // supports: braked crane wheels along the runway; pinned wheels
+  if (travel == "braked" || crane_wheels == "pinned")
     for (unsigned int k = 1; k <= 4; ++k)
     {
       Frame::Parameters::Support s;
       s.node = "cw" + std::to_string(k);
       s.stiffness[0] = 0.;
+      if (crane_wheels == "pinned")
+        s.stiffness[1] = s.stiffness[2] = 0.;
       f.supports.push_back(s);
     }
 
@@ -447,7 +457,7 @@ Frame::Parameters BridgeCrane::Parameters::frame() const
     f.contacts.push_back(c);
   };
   const Tensor<1, 3> ex({1., 0., 0.}), ey({0., 1., 0.}), ez({0., 0., 1.});
-  for (unsigned int k = 1; k <= 4; ++k)
+  for (unsigned int k = 1; k <= 4 && crane_wheels == "contacts"; ++k)
   {
     const std::string cw = "crane_wheel_" + std::to_string(k);
     contact(cw, "cw" + std::to_string(k), "", ez, 0., false);
@@ -469,6 +479,48 @@ Frame::Parameters BridgeCrane::Parameters::frame() const
 BridgeCrane::BridgeCrane(const Parameters &parameters)
     : Frame(parameters.frame()), crane(parameters)
 {
+}
+
+DecompositionParameters BridgeCrane::default_decomposition() const
+{
+  DecompositionParameters d;
+  const double S = crane.span, a = 0.5 * crane.girder_spacing,
+               w = 0.5 * crane.end_carriage_wheelbase,
+               hz = 0.5 * crane.explicit_zone_length, yc = crane.trolley_position * S,
+               y1 = yc - 0.5 * crane.trolley_wheelbase,
+               y2 = yc + 0.5 * crane.trolley_wheelbase, eps = 1e-6 * S,
+               z = 0.25 * trolley_height; // girders and end carriages lie at z = 0
+  if (hz > 0.)
+  {
+    // girder cells around the trolley wheels' rail nodes
+    for (const double x : {-a, a})
+      for (const double y : {y1, y2})
+        d.boxes.push_back({{x - eps, x + eps, y - hz - eps, y + hz + eps, -z, z}});
+    // end carriage cells around the crane wheels (at the carriage ends),
+    // when they are contacts
+    for (const double y : crane.crane_wheels == "contacts" ? std::vector<double>{0., S}
+                                                           : std::vector<double>{})
+      for (const double x : {-w, w})
+        d.boxes.push_back({{x - hz - eps, x + hz + eps, y - eps, y + eps, -z, z}});
+  }
+  d.members = {"trolley_side_1a",
+               "trolley_side_1b",
+               "trolley_side_2a",
+               "trolley_side_2b",
+               "trolley_end_1",
+               "trolley_end_2",
+               "trolley_beam_1",
+               "trolley_beam_2"};
+  return d;
+}
+
+std::vector<std::string> BridgeCrane::wheel_contacts() const
+{
+  std::vector<std::string> names;
+  for (const char *kind : {"crane_wheel_", "trolley_wheel_"})
+    for (unsigned int k = 1; k <= 4; ++k)
+      names.push_back(kind + std::to_string(k));
+  return names;
 }
 
 std::string BridgeCrane::description() const

@@ -848,11 +848,15 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
                            node_cells[c.other_node].end());
     if (!owns_node(contact_cells))
       continue;
-    for (const double side :
-         c.two_sided ? std::vector<double>{1., -1.} : std::vector<double>{1.})
+    // two-sided without clearance: one bilateral row; with a clearance: two
+    // opposite rows
+    const bool bilateral = c.two_sided && c.gap == 0.;
+    for (const double side : c.two_sided && !bilateral ? std::vector<double>{1., -1.}
+                                                       : std::vector<double>{1.})
     {
       ContactRow row;
       row.name = c.name;
+      row.bilateral = bilateral;
       for (unsigned int d = 0; d < 3; ++d)
         if (c.normal[d] != 0.)
         {

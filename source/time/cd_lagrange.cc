@@ -489,13 +489,13 @@ void CDLagrange::apply_contacts()
     if (lambda[k] != 0.)
       contact_work += 0.5 * system.contacts[k].apply(*V_prev) * lambda[k];
 
-  // (A4) active set from the position-level gap
-  std::vector<unsigned int> active_list;
+  // (A4) active set from the position-level gap (or the prescribed one)
+  active_list.clear();
   for (unsigned int k = 0; k < nc; ++k)
   {
     const auto &c = system.contacts[k];
     gap[k] = c.initial_gap + c.apply(U);
-    is_active[k] = (gap[k] <= 0.);
+    is_active[k] = c.bilateral || (prescribed ? bool((*prescribed)[k]) : (gap[k] <= 0.));
     lambda[k] = 0.;
     if (is_active[k])
       active_list.push_back(k);
@@ -504,32 +504,62 @@ void CDLagrange::apply_contacts()
     return;
 
   // (A5) clusters of coupled active contacts, each an LCP w = W lambda + q
-  std::vector<bool> done(nc, false);
+  clustered.assign(nc, false);
   for (const unsigned int k0 : active_list)
   {
-    if (done[k0])
+    if (clustered[k0])
       continue;
-    std::vector<unsigned int> cluster{k0};
-    done[k0] = true;
+    cluster.assign(1, k0);
+    clustered[k0] = true;
     for (unsigned int c = 0; c < cluster.size(); ++c)
       for (const unsigned int l : coupled_with[cluster[c]])
-        if (is_active[l] && !done[l])
+        if (is_active[l] && !clustered[l])
         {
-          done[l] = true;
+          clustered[l] = true;
           cluster.push_back(l);
         }
 
     const unsigned int m = cluster.size();
-    std::vector<const ContactRow *> rows(m);
+    if (m == 1)
+    {
+      // a single contact: lambda = max(0, -q / W) (bilateral: -q / W)
+      const auto &c = system.contacts[k0];
+      const double q = c.apply(v) + c.restitution * c.apply(*V_prev);
+      double w = 0.;
+      for (unsigned int i = 0; i < c.dofs.size(); ++i)
+        w += c.coefficients[i] * c.coefficients[i] * minv[c.dofs[i]];
+      AssertThrow(w > 0.,
+                  ExcMessage("contact LCP: a contact acts on degrees of freedom without "
+                             "mass (fixed or massless); its Delassus entry is zero."));
+      const double l = (prescribed || c.bilateral) ? -q / w : std::max(0., -q / w);
+      lambda[k0] = l;
+      if (l != 0.)
+        c.add_transpose(l, minv, v);
+      continue;
+    }
+    cluster_rows.resize(m);
     Vector<double> q(m);
+    std::vector<bool> bilateral(m);
     for (unsigned int a = 0; a < m; ++a)
     {
-      rows[a] = &system.contacts[cluster[a]];
+      cluster_rows[a] = &system.contacts[cluster[a]];
+      bilateral[a] = cluster_rows[a]->bilateral;
       // q = L V_free + e L V_{n+1/2}
-      q[a] = rows[a]->apply(v) + rows[a]->restitution * rows[a]->apply(*V_prev);
+      q[a] = cluster_rows[a]->apply(v) +
+             cluster_rows[a]->restitution * cluster_rows[a]->apply(*V_prev);
     }
-    const FullMatrix<double> W = delassus(rows, minv);
-    const Vector<double> l = solve_lcp(W, q);
+    const FullMatrix<double> W = delassus(cluster_rows, minv);
+    Vector<double> l(m);
+    if (prescribed)
+    {
+      // bilateral: W lambda = -q on the prescribed active set
+      FullMatrix<double> W_inverse(W);
+      W_inverse.gauss_jordan();
+      W_inverse.vmult(l, q);
+      l *= -1.;
+    }
+    else
+      l = solve_lcp(W, q, bilateral);
 
     // V_{n+3/2} = V_free + M^-1 L^T lambda  (A5); lambda is an impulse (A6)
     for (unsigned int a = 0; a < m; ++a)

@@ -4,6 +4,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <vector>
+
 namespace hati
 {
 using namespace dealii;
@@ -24,9 +26,14 @@ using namespace dealii;
  *   which converges for a symmetric positive definite W; an exception
  *   is thrown when it does not converge.
  *
+ * Rows flagged in @p bilateral (empty: none) are equalities: always in the
+ * active set, `w = 0`, their lambda of either sign.
+ *
  * Returns lambda (impulses, N s).
  */
-Vector<double> solve_lcp(const FullMatrix<double> &W, const Vector<double> &q);
+Vector<double> solve_lcp(const FullMatrix<double> &W,
+                         const Vector<double> &q,
+                         const std::vector<bool> &bilateral = {});
 } // namespace hati
 
 #endif

@@ -56,6 +56,8 @@ public:
     double wheel_restitution = 0.;
     /** "braked" (crane wheels fixed along X, trolley tied along Y) or "free". */
     std::string travel = "braked";
+    /** "contacts" (on the runway rails) or "pinned" (held in X, Y, Z: paper case). */
+    std::string crane_wheels = "contacts";
     /** Element lengths outside and inside the explicit zones (m). */
     double element_length = 1., explicit_element_length = 0.25;
     /** Length of girder / end carriage around each wheel meshed finely (m). */
@@ -77,6 +79,17 @@ public:
    */
   std::vector<std::pair<std::string, std::string>> summary_entries(
       const std::map<std::string, double> &static_contact_forces) const override;
+
+  /**
+   * The trolley members and the cells of girder and end carriage whose
+   * centres lie within half the `Explicit zone length` of a wheel (boxes
+   * around the wheels' rail nodes): the subdomain of Method = HATI when
+   * `Model/Decomposition` is empty.
+   */
+  DecompositionParameters default_decomposition() const override;
+
+  /** crane_wheel_1..4 and trolley_wheel_1..4 (the vertical contacts). */
+  std::vector<std::string> wheel_contacts() const override;
 
 private:
   const Parameters crane;

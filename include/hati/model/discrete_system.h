@@ -30,6 +30,11 @@ struct ContactRow : SparseRow
   std::string name;
   double initial_gap = 0.;
   double restitution = 0.;
+  /**
+   * A bilateral row (a two-sided contact without clearance, e.g. a braked
+   * wheel): always active, its impulse of either sign (A5 as an equality).
+   */
+  bool bilateral = false;
 };
 
 /**

@@ -137,6 +137,20 @@ public:
   }
 
   /**
+   * The explicit subdomain the model proposes when `Model/Decomposition` is
+   * empty (Method = HATI): none by default. The bridge crane makes its
+   * trolley and the zones of girder and end carriage around each wheel
+   * explicit.
+   */
+  virtual DecompositionParameters default_decomposition() const { return {}; }
+
+  /**
+   * Names of the contacts that are wheels on rails: their statistics go to
+   * summary.json as `wheels` (none by default).
+   */
+  virtual std::vector<std::string> wheel_contacts() const { return {}; }
+
+  /**
    * Header of `section_forces.csv`, or an empty string if the model writes
    * no section forces (the default).
    */

@@ -178,6 +178,28 @@ public:
   /** Add @p energy (J) to dissipated_energy() (corrections of the coupling). */
   void add_dissipated(const double energy) { dissipated += energy; }
 
+  /**
+   * @name Contacts as the coupling's superposition needs them (G3')
+   */
+  /** @{ */
+  /**
+   * With a non-null @p pattern (one flag per contact), the next steps take
+   * the contacts flagged as active whatever their gap and solve (A5) as
+   * bilateral constraints, `W lambda = -q` without the sign condition: the
+   * linear response of the explicit part for a given active set (the
+   * coupling's ramp responses). nullptr restores (A4)-(A5).
+   */
+  void prescribe_active_set(const std::vector<bool> *pattern) { prescribed = pattern; }
+  /** Set the gap (m) and impulse (N s) of contact @p k (superposition). */
+  void set_contact_state(const unsigned int k, const double gap_k, const double impulse)
+  {
+    gap[k] = gap_k;
+    lambda[k] = impulse;
+  }
+  /** Add @p work (J) to the contact work (superposition). */
+  void add_contact_work(const double work) { contact_work += work; }
+  /** @} */
+
   /** Discrete energies at t_n (computes K U_n: call at output times). */
   Energies energies() const;
 
@@ -227,6 +249,12 @@ private:
   std::vector<double> gap, lambda;
   std::vector<bool> is_active;
   std::vector<std::vector<unsigned int>> coupled_with;
+  /** Active set imposed by prescribe_active_set() (nullptr: from the gaps). */
+  const std::vector<bool> *prescribed = nullptr;
+  /** Work space of apply_contacts(), reused from step to step. */
+  std::vector<unsigned int> active_list, cluster;
+  std::vector<bool> clustered;
+  std::vector<const ContactRow *> cluster_rows;
   double contact_work = 0.;
   double time_dependent_work = 0.;
 };

@@ -12,6 +12,8 @@
 #include <hati/time/newmark.h>
 
 #include <functional>
+#include <map>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -154,6 +156,8 @@ public:
   unsigned long redone_macro_steps() const { return n_redone; }
   /** Largest number of interface corrections in one macro step. */
   unsigned int interface_iterations() const { return max_iterations; }
+  /** Active sets of the contacts within reach whose ramp response was computed. */
+  unsigned long ramp_patterns() const { return n_patterns; }
 
   /** Wall time of the explicit micro steps, the implicit steps, the interface (s). */
   double explicit_seconds() const { return seconds[0]; }
@@ -199,21 +203,60 @@ private:
 
   Vector<double> lambda_n, lambda_m;
 
-  // (G3') interface matrix, factorised, and its two parts
-  LAPACKFullMatrix<double> H;
-  FullMatrix<double> H_E_matrix, H_I;
-  // ramp response: the explicit linear state at j = m per unit column
-  std::vector<SparseColumns> ramp_state;
-  // interface displacement increments of the ramp: sum_j and weighted sum
-  FullMatrix<double> ramp_increment_sum, ramp_increment_weighted;
-  // per time-dependent load and micro step j: shape . dU_ramp,j (columns)
-  std::vector<std::vector<Vector<double>>> ramp_load_work;
+  /**
+   * The explicit response to the unit ramps `(j/m) e_l` from rest, for one
+   * active set of the contacts within reach (none: the open response),
+   * with what the superposition needs: the state columns, the interface
+   * increments, the load work, the velocities and damping forces on the
+   * reach (damped), the impulse and gap of each contact within reach after
+   * every micro step and its normal velocity `L V_{j-1/2}` before it, and
+   * the factorised interface matrix `H = C_E V_ramp + gamma DT C_I
+   * M_eff^-1 C_I^T` (G3').
+   */
+  struct RampResponse
+  {
+    std::vector<SparseColumns> state;
+    FullMatrix<double> increment_sum, increment_weighted, H_E;
+    std::vector<std::vector<Vector<double>>> load_work;
+    std::vector<FullMatrix<double>> velocity_reach, damping_reach;
+    std::vector<FullMatrix<double>> impulse, gap, normal_velocity;
+    LAPACKFullMatrix<double> H;
+  };
+  /**
+   * Compute @p r for the active set @p pattern of the contacts within reach
+   * (empty: all open), the contacts of the pattern taken as bilateral
+   * (CDLagrange::prescribe_active_set()).
+   */
+  void compute_ramp(const std::vector<bool> &pattern,
+                    RampResponse &r,
+                    const bool with_damping);
+  /** The ramp response of @p pattern, computed on first use and cached. */
+  const RampResponse &ramp_for(const std::vector<bool> &pattern);
+  /**
+   * Check that the pass plus the ramp response `r Lambda` keeps the active
+   * set of the pass (impulses of active contacts >= 0, gaps of inactive
+   * ones > 0 at every micro step); if so add it to the explicit state, its
+   * works and the recorded contact samples and return true.
+   */
+  bool superpose(const RampResponse &r, const Vector<double> &lambda);
+
+  // (G3') the implicit part of the interface matrix, the ramp responses
+  FullMatrix<double> H_I;
+  RampResponse open_ramp;
+  std::map<std::vector<bool>, RampResponse> pattern_ramps;
+  std::unique_ptr<CDLagrange> ramp_integrator;
+  unsigned long n_patterns = 0;
+  // the pass over the contacts within reach: impulses, gaps, normal
+  // velocities and active flags per micro step (row-major, j x contact)
+  std::vector<double> pass_impulse, pass_gap, pass_normal;
+  std::vector<double> total_impulse, total_gap, total_normal;
+  std::vector<bool> pass_active, pattern;
   // contacts within reach of the ramp response (indices)
   std::vector<unsigned int> reach_contacts;
   bool contacts_in_reach = false;
   // per macro step with contacts in reach: whether one was active, and the
   // contact state of every micro step (replayed to after_micro_step)
-  bool record_contacts = false, contact_was_active = false;
+  bool record_contacts = false;
   std::vector<ContactSample> contact_record;
   ContactSample sample;
   /** Fill `sample` from the explicit integrator. */
@@ -242,10 +285,9 @@ private:
   // reaches, the ramp's velocities V_{j-1/2} and damping forces d_j per
   // micro step (|R| x n_G each) and those of the first pass.
   std::vector<unsigned int> reach_dofs;
-  std::vector<FullMatrix<double>> ramp_velocity_reach, ramp_damping_reach;
   std::vector<Vector<double>> pass_velocity_reach, pass_damping_reach;
-  /** The dissipated energy of the ramp part, after the first pass (G3', A7). */
-  double ramp_dissipation(const Vector<double> &lambda) const;
+  /** The dissipated energy of the ramp part @p r Lambda after the pass (G3', A7). */
+  double ramp_dissipation(const RampResponse &r, const Vector<double> &lambda) const;
   mutable Vector<double> global_U, global_V;
   CDLagrange::Snapshot snapshot;
 };

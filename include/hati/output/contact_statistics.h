@@ -1,0 +1,77 @@
+#ifndef hati_output_contact_statistics_h
+#define hati_output_contact_statistics_h
+
+#include <hati/model/discrete_system.h>
+
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hati
+{
+/**
+ * What a crane engineer asks of every contact (a wheel on its rail), at the
+ * resolution of the (micro) steps: the impacts, the peak contact force and
+ * the time out of contact, per contact name (the rows of a name, e.g. the
+ * two rows of a two-sided contact, form one group).
+ *
+ * A group is *pushing* in a step when one of its rows has a compressive
+ * impulse (A6; a bilateral row when its impulse is non-zero). An impact is
+ * a step where a group starts pushing after a step without; a group that
+ * touches (gap <= 0) in the initial state counts as pushing before the
+ * first step, so a crane starting from its static state on its wheels has
+ * no impact at t = 0. The time out of contact (`uplift_time`) sums the
+ * steps without push after the first push; a contact-loss episode runs from
+ * the first step without push to the first step with push again.
+ */
+class ContactStatistics
+{
+public:
+  /** Per contact name. */
+  struct Entry
+  {
+    std::string name;
+    unsigned int n_impacts = 0;
+    /** Largest contact force sum(lambda) / dt (N) and its time (s). */
+    double peak_force = 0., peak_force_time = 0.;
+    /** Total time without push after the first push (s). */
+    double uplift_time = 0.;
+    /** Contact-loss episodes (start, end) in s; end < 0: still open. */
+    std::vector<std::pair<double, double>> episodes;
+  };
+
+  /**
+   * @param contacts the contact rows (grouped by name, in order of first appearance)
+   * @param initial_gaps gap of each row in the initial state (m)
+   */
+  ContactStatistics(const std::vector<ContactRow> &contacts,
+                    const std::vector<double> &initial_gaps);
+
+  /**
+   * Account for one step of duration @p dt (s) ending at @p time (s) with
+   * the impulses @p impulses (N s) of every row. No allocation.
+   */
+  void add_step(const double time, const double dt, const std::vector<double> &impulses);
+
+  const std::vector<Entry> &entries() const { return groups; }
+
+  /** `{"name": {"n_impacts": .., "peak_impact_force": .., "uplift_time": ..}, ...}`. */
+  std::string json(const std::vector<std::string> &names = {}) const;
+
+  /** `contact_episodes.csv`: contact,start,end,duration (s; end empty if open). */
+  void write_episodes(std::ostream &out) const;
+
+  /** The results table (one line per contact name) for the terminal. */
+  void print_table(std::ostream &out) const;
+
+private:
+  const std::vector<ContactRow> &contacts;
+  std::vector<unsigned int> group_of_row;
+  std::vector<Entry> groups;
+  std::vector<double> group_force;
+  std::vector<char> pushing, pushed_once;
+};
+} // namespace hati
+
+#endif

@@ -1,0 +1,125 @@
+#include <hati/output/contact_statistics.h>
+#include <hati/output/output_writer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace hati
+{
+ContactStatistics::ContactStatistics(const std::vector<ContactRow> &contacts,
+                                     const std::vector<double> &initial_gaps)
+    : contacts(contacts)
+{
+  for (const auto &c : contacts)
+  {
+    auto it = std::find_if(
+        groups.begin(), groups.end(), [&](const Entry &e) { return e.name == c.name; });
+    group_of_row.push_back(it - groups.begin());
+    if (it == groups.end())
+    {
+      groups.emplace_back();
+      groups.back().name = c.name;
+    }
+  }
+  group_force.assign(groups.size(), 0.);
+  pushing.assign(groups.size(), 0);
+  pushed_once.assign(groups.size(), 0);
+  // touching in the initial state: pushing before the first step
+  for (unsigned int k = 0; k < contacts.size() && k < initial_gaps.size(); ++k)
+    if (initial_gaps[k] <= 0.)
+      pushing[group_of_row[k]] = pushed_once[group_of_row[k]] = 1;
+}
+
+void ContactStatistics::add_step(const double time,
+                                 const double dt,
+                                 const std::vector<double> &impulses)
+{
+  std::fill(group_force.begin(), group_force.end(), 0.);
+  for (unsigned int k = 0; k < impulses.size(); ++k)
+  {
+    const double l = contacts[k].bilateral ? std::abs(impulses[k]) : impulses[k];
+    if (l > 0.)
+      group_force[group_of_row[k]] += l;
+  }
+  for (unsigned int g = 0; g < groups.size(); ++g)
+  {
+    Entry &e = groups[g];
+    const bool push = group_force[g] > 0.;
+    if (push)
+    {
+      const double force = group_force[g] / dt;
+      if (force > e.peak_force)
+      {
+        e.peak_force = force;
+        e.peak_force_time = time;
+      }
+      if (!pushing[g])
+      {
+        ++e.n_impacts;
+        if (!e.episodes.empty() && e.episodes.back().second < 0.)
+          e.episodes.back().second = time;
+      }
+      pushed_once[g] = 1;
+    }
+    else if (pushed_once[g])
+    {
+      e.uplift_time += dt;
+      if (pushing[g])
+        e.episodes.emplace_back(time, -1.);
+    }
+    pushing[g] = push;
+  }
+}
+
+std::string ContactStatistics::json(const std::vector<std::string> &names) const
+{
+  std::ostringstream s;
+  s << '{';
+  bool first = true;
+  for (const auto &e : groups)
+  {
+    if (!names.empty() && std::find(names.begin(), names.end(), e.name) == names.end())
+      continue;
+    s << (first ? "" : ", ") << json_string(e.name) << ": {\"n_impacts\": " << e.n_impacts
+      << ", \"peak_impact_force\": " << json_number(e.peak_force)
+      << ", \"peak_force_time\": " << json_number(e.peak_force_time)
+      << ", \"uplift_time\": " << json_number(e.uplift_time)
+      << ", \"n_contact_loss_episodes\": " << e.episodes.size() << '}';
+    first = false;
+  }
+  s << '}';
+  return s.str();
+}
+
+void ContactStatistics::write_episodes(std::ostream &out) const
+{
+  out << "contact,start,end,duration\n" << std::setprecision(15);
+  for (const auto &e : groups)
+    for (const auto &[start, end] : e.episodes)
+    {
+      out << e.name << ',' << start << ',';
+      if (end >= 0.)
+        out << end << ',' << end - start;
+      else
+        out << ',';
+      out << '\n';
+    }
+}
+
+void ContactStatistics::print_table(std::ostream &out) const
+{
+  const auto flags = out.flags();
+  const auto precision = out.precision();
+  out << "  contacts:        name   impacts  peak force (N)    at t (s)  time out of "
+         "contact (s)  loss episodes\n";
+  for (const auto &e : groups)
+    out << "    " << std::setw(24) << e.name << std::setw(10) << e.n_impacts
+        << std::setw(16) << std::setprecision(6) << e.peak_force << std::setw(12)
+        << e.peak_force_time << std::setw(25) << e.uplift_time << std::setw(15)
+        << e.episodes.size() << '\n';
+  out.flags(flags);
+  out.precision(precision);
+}
+} // namespace hati
