@@ -56,6 +56,12 @@ public:
     double wheel_restitution = 0.;
     /** "braked" (crane wheels fixed along X, trolley tied along Y) or "free". */
     std::string travel = "braked";
+    /**
+     * Rayleigh damping ratio (-) at the first vertical and the first
+     * horizontal mode, used when Time integration/Damping is not set; 0:
+     * undamped.
+     */
+    double damping_ratio = 0.02;
     /** Element lengths outside and inside the explicit zones (m). */
     double element_length = 1., explicit_element_length = 0.25;
     /** Length of girder / end carriage around each wheel meshed finely (m). */
@@ -71,6 +77,8 @@ public:
 
   explicit BridgeCrane(const Parameters &parameters);
   std::string description() const override;
+  /** Model/Bridge crane/Damping ratio (-). */
+  double default_damping_ratio() const override { return crane.damping_ratio; }
   /**
    * `mass_bridge`, `mass_trolley` (kg) and `static_wheel_loads` (wheel
    * contact name -> vertical static force, N) from @p static_contact_forces.
