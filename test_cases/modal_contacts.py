@@ -14,6 +14,9 @@
 2. A node-to-plane contact with zero gap along +Z at the tip of a
    cantilever is a vertical support there: the same frequencies as the
    frame with 'tip: free, free, fixed, free, free, free', to 1e-9 relative.
+   The same with oblique normals ((1, 1, 0) two-sided, (1, -1, 0.5)
+   one-sided, (0, 1, 1) two-sided), so that the elimination substitutes
+   earlier slaves and pivots.
 3. The contacts are really used: the tied model's first frequency differs
    from the untied one (the two separate cantilevers) by more than 10 %."""
 import os
@@ -46,6 +49,17 @@ TIED = """
     set Supports = a: clamped; b: clamped
     set Contacts = wheel: m1, m2, 0, 0, 1, 0; along_x: m1, m2, 1, 0, 0, 0, two-sided; \\
                    along_y: m2, m1, 0, 1, 0, 0, two-sided; open: m1, 0, 0, 1, 0.01
+"""
+# the same hinge from oblique normals (an in-plane pair at 45 degrees, one
+# of them one-sided with a Z part, a third in the YZ plane): each row, once
+# the earlier slaves are substituted, pivots on another DoF and updates the
+# earlier slaves
+OBLIQUE = """
+    set Nodes    = a: 0, 0, 0; m1: 1, 0, 0; m2: 1, 0, 0; b: 2.2, 0, 0
+    set Members  = b1: a, m1, rect, steel, 4; b2: m2, b, rect, steel, 4
+    set Supports = a: clamped; b: clamped
+    set Contacts = d1: m1, m2, 1, 1, 0, 0, two-sided; d2: m2, m1, 1, -1, 0.5, 0; \\
+                   d3: m1, m2, 0, 1, 1, 0, two-sided; open: m2, 0, 1, 0, 0.02
 """
 HINGED = """
     set Nodes    = a: 0, 0, 0; m: 1, 0, 0; b: 2.2, 0, 0
@@ -89,6 +103,16 @@ for n in (6, 40):
     for k in range(n):
         ctx.check("%d modes: mode %d (Hz) vs hinged frame" % (n, k + 1), tied[k], hinged[k],
                   rel=1e-9)
+
+for n in (6, 40):
+    oblique, s, _ = frequencies("oblique_%d" % n, OBLIQUE, n)
+    hinged, _, _ = frequencies("hinged_%d" % n, HINGED, n)
+    # rows: d1 2, d2 1, d3 2 = 5 (3 independent); 'open' has a gap
+    ctx.check("oblique, %d modes: closed contact rows" % n, s["n_closed_contact_rows"], 5,
+              abs_tol=0)
+    for k in range(n):
+        ctx.check("oblique, %d modes: mode %d (Hz) vs hinged frame" % (n, k + 1), oblique[k],
+                  hinged[k], rel=1e-9)
 
 untied, _, _ = frequencies("untied", UNTIED, 6)
 ctx.check_true("the ties change the first frequency by > 10 %",
