@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <hati/analysis/modal_analysis.h>
+#include <hati/analysis/modal_damping.h>
 #include <hati/analysis/static_analysis.h>
 #include <hati/loading/accelerogram.h>
 #include <hati/loading/base_excitation.h>
@@ -223,6 +224,9 @@ void Simulation::run()
     if (!entry.empty())
       initial_state_summary.emplace_back("static_contact_forces", entry);
   }
+  for (const auto &entry :
+       apply_default_damping(*model, system, time_parameters.method, damping))
+    initial_state_summary.push_back(entry);
   AssertThrow(time_parameters.method != "event-driven" ||
                   (damping.a0 == 0. && damping.a1 == 0.),
               ExcMessage("Time integration/Damping: Rayleigh damping is applied by the "

@@ -137,7 +137,11 @@ void Simulation::run_modal()
   csv << "mode,frequency,period,participation_x,participation_y,participation_z,"
          "effective_mass_x,effective_mass_y,effective_mass_z,effective_mass_ratio_x,"
          "effective_mass_ratio_y,effective_mass_ratio_z\n";
-  std::cout << "  modal analysis: " << r.frequencies.size() << " modes\n"
+  std::cout << "  modal analysis: " << r.frequencies.size() << " modes";
+  if (r.n_closed_contacts > 0)
+    std::cout << ", " << r.n_closed_contacts << " zero-gap contact rows held closed ("
+              << r.n_constraints << " independent constraints)";
+  std::cout << "\n"
             << "   mode  frequency (Hz)   period (s)   eff. mass ratio x      y      z\n";
   std::vector<std::pair<double, std::string>> files;
   for (unsigned int k = 0; k < r.frequencies.size(); ++k)
@@ -182,6 +186,7 @@ void Simulation::run_modal()
                  {"model", json_string(model->description())},
                  {"n_dofs", std::to_string(system.n_dofs())},
                  {"frequencies", list.str()},
+                 {"n_closed_contact_rows", std::to_string(r.n_closed_contacts)},
                  {"wall_time", json_number(wall)}});
   std::cout << "  modes.csv and mode shapes (modes.pvd: 'time' = mode number) in "
             << output_directory << "/" << std::endl;

@@ -11,7 +11,7 @@ closed.
   position (statically determinate), at two trolley positions, to 1e-8;
 - the two wheels of a rail carry the same load (symmetry about X = 0);
 - one-line errors: trolley off the span, explicit zone longer than a
-  girder, negative flange clearance."""
+  girder, negative flange clearance, damping ratio >= 1."""
 import os
 import subprocess
 
@@ -63,4 +63,6 @@ expect_error("explicit zone longer than a girder", ["Model/Bridge crane/Explicit
              "Explicit zone length", "longer than a girder")
 expect_error("negative flange clearance", ["Model/Bridge crane/Flange clearance=-0.01"],
              "Flange clearance", ">= 0")
+expect_error("damping ratio >= 1", ["Model/Bridge crane/Damping ratio=1.5"],
+             "Damping ratio", "[0, 1)")
 ctx.finish()

@@ -9,9 +9,17 @@
 // spectral transformation, for no gain on the serial problems hati solves.
 // Small problems where ARPACK's constraint 2 nev + 1 < ncv <= n_free cannot
 // be met go to dense LAPACK (dsygv) on the free DoFs.
+//
+// Closed contacts: the zero-gap contact rows are bilateral constraints
+// L_c U = 0, eliminated as U = T q (one slave DoF per independent row,
+// Gaussian elimination with partial pivoting on the sparse rows) so that
+// K_r = T^T K T and M_r = T^T M T stay sparse and both solvers above apply
+// unchanged, the slaves being held like fixed DoFs. A dense null-space basis
+// Z = null(L_c) would be exact too but dense, n x (n - m).
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/arpack_solver.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/solver_control.h>
@@ -26,6 +34,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <random>
 #include <sstream>
@@ -166,20 +175,155 @@ std::vector<Eigenpair> arpack_modes(const SparseMatrix<double> &K,
   }
   return pairs;
 }
+
+/**
+ * The closed contacts as a linear map `U = T q` (doc/theory.md 7.3): every
+ * zero-gap contact row with a free DoF is a bilateral constraint `L_k U =
+ * 0`. Gaussian elimination row by row with partial pivoting: the row, with
+ * the earlier slaves substituted, loses its largest entry's DoF (the slave),
+ * which is then a combination of the remaining DoFs; rows that vanish after
+ * the substitution (an opposite row of a two-sided contact, dependent rows)
+ * are redundant. Fixed DoFs are zero and drop out of the rows.
+ */
+struct ContactElimination
+{
+  /** Per slave DoF: the masters and coefficients, `U_s = sum_j c_j U_j`. */
+  std::map<unsigned int, std::vector<std::pair<unsigned int, double>>> slaves;
+  /** Closed rows, independent ones and redundant ones. */
+  unsigned int n_closed = 0, n_redundant = 0;
+
+  ContactElimination() = default;
+
+  explicit ContactElimination(const DiscreteSystem &system)
+  {
+    const std::vector<bool> &fixed = system.fixed;
+    for (const ContactRow &row : system.contacts)
+    {
+      if (row.initial_gap != 0.)
+        continue; // open: a contact with a positive gap does not act on small vibrations
+      std::map<unsigned int, double> a;
+      double scale = 0.;
+      for (unsigned int j = 0; j < row.dofs.size(); ++j)
+      {
+        const unsigned int dof = row.dofs[j];
+        const double c = row.coefficients[j];
+        if (fixed[dof] || c == 0.)
+          continue;
+        scale = std::max(scale, std::abs(c));
+        const auto slave = slaves.find(dof);
+        if (slave == slaves.end())
+          a[dof] += c;
+        else
+          for (const auto &[master, cm] : slave->second)
+            a[master] += c * cm;
+      }
+      if (scale == 0.)
+        continue; // only fixed DoFs: nothing to hold
+      ++n_closed;
+      unsigned int pivot = numbers::invalid_unsigned_int;
+      double largest = 0.;
+      for (const auto &[dof, c] : a)
+        if (std::abs(c) > 1e-12 * scale && std::abs(c) > largest)
+        {
+          largest = std::abs(c);
+          pivot = dof;
+        }
+      if (pivot == numbers::invalid_unsigned_int)
+      {
+        ++n_redundant;
+        continue;
+      }
+      std::vector<std::pair<unsigned int, double>> expression;
+      for (const auto &[dof, c] : a)
+        if (dof != pivot && std::abs(c) > 1e-12 * scale)
+          expression.emplace_back(dof, -c / a[pivot]);
+      // earlier slaves that depend on the new slave
+      for (auto &[s, terms] : slaves)
+      {
+        std::map<unsigned int, double> merged;
+        bool depends = false;
+        for (const auto &[master, c] : terms)
+          if (master == pivot)
+          {
+            depends = true;
+            for (const auto &[m, cm] : expression)
+              merged[m] += c * cm;
+          }
+          else
+            merged[master] += c;
+        if (depends)
+          terms.assign(merged.begin(), merged.end());
+      }
+      slaves[pivot] = expression;
+    }
+  }
+
+  /**
+   * `T^T A T` on the full numbering: rows and columns of slaves keep only
+   * their diagonal entry @p slave_diagonal[s] (so that they act as fixed
+   * DoFs), other entries collect the contributions of the slaves.
+   */
+  void condense(const SparseMatrix<double> &A,
+                const std::vector<double> &slave_diagonal,
+                SparsityPattern &pattern,
+                SparseMatrix<double> &result) const
+  {
+    const unsigned int n = A.m();
+    auto expansion = [&](const unsigned int i)
+    {
+      const auto s = slaves.find(i);
+      return s == slaves.end() ? std::vector<std::pair<unsigned int, double>>{{i, 1.}}
+                               : s->second;
+    };
+    if (pattern.n_rows() == 0)
+    {
+      DynamicSparsityPattern dsp(n, n);
+      for (unsigned int i = 0; i < n; ++i)
+      {
+        dsp.add(i, i);
+        const auto ei = expansion(i);
+        for (auto it = A.begin(i); it != A.end(i); ++it)
+          for (const auto &[p, cp] : ei)
+            for (const auto &[q, cq] : expansion(it->column()))
+              dsp.add(p, q);
+      }
+      pattern.copy_from(dsp);
+    }
+    result.reinit(pattern);
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      const auto ei = expansion(i);
+      for (auto it = A.begin(i); it != A.end(i); ++it)
+        if (it->value() != 0.)
+          for (const auto &[p, cp] : ei)
+            for (const auto &[q, cq] : expansion(it->column()))
+              result.add(p, q, cp * it->value() * cq);
+    }
+    for (const auto &entry : slaves)
+      result.set(entry.first, entry.first, slave_diagonal[entry.first]);
+  }
+
+  /** Back-substitution `U = T q`: the slaves from their masters. */
+  void distribute(Vector<double> &phi) const
+  {
+    for (const auto &[s, terms] : slaves)
+    {
+      double value = 0.;
+      for (const auto &[master, c] : terms)
+        value += c * phi[master];
+      phi[s] = value;
+    }
+  }
+};
 } // namespace
 
-ModalResult compute_modes(const DiscreteSystem &system, const unsigned int n_modes)
+ModalResult compute_modes(const DiscreteSystem &system,
+                          const unsigned int n_modes,
+                          const bool close_contacts)
 {
   const unsigned int n = system.n_dofs();
-  const std::vector<bool> &fixed = system.fixed;
-  AssertThrow(fixed.size() == n,
+  AssertThrow(system.fixed.size() == n,
               ExcMessage("modal analysis: the DiscreteSystem has no fixed flags."));
-  const unsigned int n_free = std::count(fixed.begin(), fixed.end(), false);
-  AssertThrow(n_modes <= n_free,
-              ExcMessage("modal analysis: " + std::to_string(n_modes) +
-                         " modes requested, but the model has only " +
-                         std::to_string(n_free) +
-                         " free degrees of freedom (the number of modes)."));
 
   // K and M on one pattern (a diagonal one for a model without stiffness);
   // fixed DoFs: K keeps a positive diagonal, M rows and columns are zero, so
@@ -211,11 +355,11 @@ ModalResult compute_modes(const DiscreteSystem &system, const unsigned int n_mod
   else
     for (unsigned int i = 0; i < n; ++i)
       M.set(i, i, system.lumped_mass[i]);
-  decouple_fixed_dofs(K, fixed);
+  decouple_fixed_dofs(K, system.fixed);
   // fixed DoFs get no mass: their spurious eigenvalues go to infinity
   for (unsigned int i = 0; i < n; ++i)
     for (auto it = M.begin(i); it != M.end(i); ++it)
-      if (fixed[i] || fixed[it->column()])
+      if (system.fixed[i] || system.fixed[it->column()])
         it->value() = 0.;
 
   ModalResult result;
@@ -226,7 +370,7 @@ ModalResult compute_modes(const DiscreteSystem &system, const unsigned int n_mod
       // M r with the inertia coupled to the supports (DiscreteSystem)
       Mr[d] = system.mass_influence[d];
       for (unsigned int i = 0; i < n; ++i)
-        if (fixed[i])
+        if (system.fixed[i])
           Mr[d][i] = 0.;
       result.total_mass[d] =
           system.influence[d].size() == n ? system.influence[d] * Mr[d] : 0.;
@@ -237,6 +381,41 @@ ModalResult compute_modes(const DiscreteSystem &system, const unsigned int n_mod
       M.vmult(Mr[d], system.influence[d]);
       result.total_mass[d] = system.influence[d] * Mr[d];
     }
+
+  // closed contacts (doc/theory.md 7.3): K_r = T^T K T, M_r = T^T M T on the
+  // full numbering, the eliminated (slave) DoFs held like fixed ones
+  const ContactElimination elimination =
+      close_contacts ? ContactElimination(system) : ContactElimination();
+  result.n_closed_contacts = elimination.n_closed;
+  result.n_constraints = elimination.slaves.size();
+  std::vector<bool> fixed = system.fixed;
+  SparsityPattern condensed_pattern;
+  SparseMatrix<double> K_condensed, M_condensed;
+  if (!elimination.slaves.empty())
+  {
+    std::vector<double> diagonal(n, 1.), zero(n, 0.);
+    for (const auto &entry : elimination.slaves)
+    {
+      fixed[entry.first] = true;
+      if (K.diag_element(entry.first) > 0.)
+        diagonal[entry.first] = K.diag_element(entry.first);
+    }
+    elimination.condense(K, diagonal, condensed_pattern, K_condensed);
+    elimination.condense(M, zero, condensed_pattern, M_condensed);
+  }
+  const SparseMatrix<double> &Kw = elimination.slaves.empty() ? K : K_condensed;
+  const SparseMatrix<double> &Mw = elimination.slaves.empty() ? M : M_condensed;
+
+  const unsigned int n_free = std::count(fixed.begin(), fixed.end(), false);
+  AssertThrow(n_modes <= n_free,
+              ExcMessage("modal analysis: " + std::to_string(n_modes) +
+                         " modes requested, but the model has only " +
+                         std::to_string(n_free) + " free degrees of freedom" +
+                         (elimination.slaves.empty()
+                              ? std::string()
+                              : " once its closed contacts hold " +
+                                    std::to_string(elimination.slaves.size())) +
+                         " (the number of modes)."));
   if (n_modes == 0)
     return result;
 
@@ -245,19 +424,21 @@ ModalResult compute_modes(const DiscreteSystem &system, const unsigned int n_mod
   const unsigned int ncv =
       std::min({n_free, n - 1, std::max(2 * n_modes + 2, n_modes + 20)});
   std::vector<Eigenpair> pairs = (ncv >= 2 * n_modes + 2)
-                                     ? arpack_modes(K, M, fixed, n_modes, ncv)
-                                     : dense_modes(K, M, fixed);
+                                     ? arpack_modes(Kw, Mw, fixed, n_modes, ncv)
+                                     : dense_modes(Kw, Mw, fixed);
   std::sort(pairs.begin(),
             pairs.end(),
             [](const Eigenpair &a, const Eigenpair &b) { return a.lambda < b.lambda; });
   pairs.resize(n_modes);
 
-  // mass-normalise, fix the sign (largest entry positive), check K phi = lambda M phi
+  // mass-normalise, check K phi = lambda M phi (on the free DoFs of the
+  // condensed problem), back-substitute the slaves, fix the sign (largest
+  // entry positive)
   double norm_K = 0.;
   for (unsigned int i = 0; i < n; ++i)
   {
     double row = 0.;
-    for (auto it = K.begin(i); it != K.end(i); ++it)
+    for (auto it = Kw.begin(i); it != Kw.end(i); ++it)
       row += std::abs(it->value());
     norm_K = std::max(norm_K, row);
   }
@@ -268,22 +449,17 @@ ModalResult compute_modes(const DiscreteSystem &system, const unsigned int n_mod
     for (unsigned int i = 0; i < n; ++i)
       if (fixed[i])
         phi[i] = 0.;
-    M.vmult(Mphi, phi);
+    Mw.vmult(Mphi, phi);
     const double mass = phi * Mphi;
     AssertThrow(mass > 0. && std::isfinite(mass),
                 ExcMessage("modal analysis: mode " + std::to_string(k + 1) +
                            " has no kinetic energy (ARPACK did not converge or the "
                            "mass matrix is singular)."));
-    unsigned int largest = 0;
-    for (unsigned int i = 0; i < n; ++i)
-      if (std::abs(phi[i]) > std::abs(phi[largest]))
-        largest = i;
-    const double scale = (phi[largest] < 0. ? -1. : 1.) / std::sqrt(mass);
-    phi *= scale;
-    Mphi *= scale;
+    phi /= std::sqrt(mass);
+    Mphi /= std::sqrt(mass);
 
     const double lambda = pairs[k].lambda;
-    K.vmult(Kphi, phi);
+    Kw.vmult(Kphi, phi);
     r = Kphi;
     r.add(-lambda, Mphi);
     for (unsigned int i = 0; i < n; ++i)
@@ -299,6 +475,14 @@ ModalResult compute_modes(const DiscreteSystem &system, const unsigned int n_mod
               << " > " << tolerance << " (the eigensolver did not converge).";
       AssertThrow(false, ExcMessage(message.str()));
     }
+
+    elimination.distribute(phi);
+    unsigned int largest = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      if (std::abs(phi[i]) > std::abs(phi[largest]))
+        largest = i;
+    if (phi[largest] < 0.)
+      phi *= -1.;
 
     result.frequencies.push_back(std::sqrt(std::max(lambda, 0.)) / (2. * M_PI));
     std::array<double, 3> gamma{{0., 0., 0.}}, effective{{0., 0., 0.}};

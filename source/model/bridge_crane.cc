@@ -165,6 +165,16 @@ void BridgeCrane::Parameters::declare_parameters(ParameterHandler &prm)
                     "Newton's restitution coefficient of every wheel contact (-), in "
                     "[0, 1]. Default 0: plastic impact, the usual choice for "
                     "finite-element contact.");
+  prm.declare_entry(
+      "Damping ratio",
+      "0.02",
+      Patterns::Double(),
+      "Rayleigh damping ratio zeta (-), in [0, 1), of a transient run when "
+      "Time integration/Damping is not set: a0, a1 such that the first mode "
+      "dominated by vertical (Z) and the first dominated by horizontal (X "
+      "or Y) effective mass, computed with the zero-gap contacts closed, "
+      "have this ratio (both subdomains of HATI). 0: undamped. Default "
+      "0.02 (2 %, welded steel structure).");
   prm.declare_entry("Travel",
                     "braked",
                     Patterns::Selection("braked|free"),
@@ -231,6 +241,10 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   AssertThrow(wheel_restitution >= 0. && wheel_restitution <= 1.,
               ExcMessage(where + "Wheel restitution: expected a value in [0, 1], got " +
                          prm.get("Wheel restitution")));
+  damping_ratio = prm.get_double("Damping ratio");
+  AssertThrow(std::isfinite(damping_ratio) && damping_ratio >= 0. && damping_ratio < 1.,
+              ExcMessage(where + "Damping ratio: expected a value in [0, 1), got " +
+                         prm.get("Damping ratio")));
   travel = prm.get("Travel");
   crane_wheels = prm.get("Crane wheels");
   element_length = positive("Element length");

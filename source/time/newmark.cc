@@ -169,6 +169,7 @@ void RayleighDamping::parse_parameters(ParameterHandler &prm)
   const double zeta = prm.get_double("Damping ratio");
   const double f1 = prm.get_double("First frequency");
   const double f2 = prm.get_double("Second frequency");
+  given = a0 != 0. || a1 != 0. || zeta != 0. || f1 != 0. || f2 != 0.;
   if (zeta > 0.)
   {
     AssertThrow(a0 == 0. && a1 == 0.,

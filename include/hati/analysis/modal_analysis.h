@@ -25,13 +25,25 @@ struct ModalResult
   std::vector<std::array<double, 3>> effective_mass;
   /** Total mass per direction r_d.M r_d (kg); sum_k Gamma_kd^2 over all modes. */
   std::array<double, 3> total_mass{{0., 0., 0.}};
+  /** Closed contact rows (zero initial gap, with a free DoF), held bilaterally. */
+  unsigned int n_closed_contacts = 0;
+  /** Independent constraints among them = DoFs eliminated (-). */
+  unsigned int n_constraints = 0;
 };
 
 /**
  * The @p n_modes lowest modes of the generalized eigenproblem
- * `K phi = omega^2 M phi` (free DoFs; M the consistent mass if the system has
- * one, else the lumped diagonal). Rigid-body modes, if the model has any,
- * come out with frequency 0.
+ * `K phi = omega^2 M phi` (doc/theory.md 7.1; free DoFs; M the consistent
+ * mass if the system has one, else the lumped diagonal). Rigid-body modes,
+ * if the model has any, come out with frequency 0.
+ *
+ * With @p close_contacts, every contact row with a zero initial gap (the
+ * one-sided contacts that touch, both rows of a two-sided contact without
+ * clearance) is a bilateral constraint `L_k U = 0` (doc/theory.md 7.3, as in
+ * the static analysis); contacts with a positive gap stay open. The
+ * constraints are eliminated, `U = T q` with one slave DoF per independent
+ * row: the eigenproblem `T^T K T q = omega^2 T^T M T q` is solved and the
+ * modes are returned as `phi = T q` (they satisfy `L_k phi = 0`).
  *
  * Uses ARPACK (shift-invert Lanczos, one Amesos_Klu factorisation of
  * `K - sigma M`) when its constraint `2 n_modes + 1 < ncv <= n_free` can be
@@ -40,9 +52,14 @@ struct ModalResult
  * or an exception is thrown.
  *
  * @param system the discrete system (stiffness, mass, fixed DoFs, influence).
- * @param n_modes number of modes wanted (-), at most the number of free DoFs.
+ * @param n_modes number of modes wanted (-), at most the number of free DoFs
+ *        (less the eliminated ones).
+ * @param close_contacts hold the zero-gap contacts closed (true) or ignore
+ *        every contact (false).
  */
-ModalResult compute_modes(const DiscreteSystem &system, const unsigned int n_modes);
+ModalResult compute_modes(const DiscreteSystem &system,
+                          const unsigned int n_modes,
+                          const bool close_contacts = true);
 } // namespace hati
 
 #endif

@@ -56,8 +56,17 @@ public:
     double wheel_restitution = 0.;
     /** "braked" (crane wheels fixed along X, trolley tied along Y) or "free". */
     std::string travel = "braked";
+<<<<<<< HEAD
     /** "contacts" (on the runway rails) or "pinned" (held in X, Y, Z: paper case). */
     std::string crane_wheels = "contacts";
+=======
+    /**
+     * Rayleigh damping ratio (-) at the first vertical and the first
+     * horizontal mode, used when Time integration/Damping is not set; 0:
+     * undamped.
+     */
+    double damping_ratio = 0.02;
+>>>>>>> crane-modal
     /** Element lengths outside and inside the explicit zones (m). */
     double element_length = 1., explicit_element_length = 0.25;
     /** Length of girder / end carriage around each wheel meshed finely (m). */
@@ -73,6 +82,8 @@ public:
 
   explicit BridgeCrane(const Parameters &parameters);
   std::string description() const override;
+  /** Model/Bridge crane/Damping ratio (-). */
+  double default_damping_ratio() const override { return crane.damping_ratio; }
   /**
    * `mass_bridge`, `mass_trolley` (kg) and `static_wheel_loads` (wheel
    * contact name -> vertical static force, N) from @p static_contact_forces.

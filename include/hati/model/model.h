@@ -151,6 +151,15 @@ public:
   virtual std::vector<std::string> wheel_contacts() const { return {}; }
 
   /**
+   * Damping ratio (-) of the Rayleigh damping a transient run of this model
+   * gets when `Time integration/Damping` is not set: reached at the first
+   * vertically and the first horizontally dominated modes with the zero-gap
+   * contacts closed (doc/theory.md 4.4, default_rayleigh_damping()). 0 (the
+   * default): no damping unless the user gives it.
+   */
+  virtual double default_damping_ratio() const { return 0.; }
+
+  /**
    * Header of `section_forces.csv`, or an empty string if the model writes
    * no section forces (the default).
    */

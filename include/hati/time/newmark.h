@@ -78,6 +78,11 @@ struct RayleighDamping
   double a0 = 0.;
   /** Stiffness-proportional coefficient a1 (s). */
   double a1 = 0.;
+  /**
+   * Whether an entry of the subsection is non-zero (the user set the
+   * damping; a model's default damping is then not applied).
+   */
+  bool given = false;
 };
 
 /**
