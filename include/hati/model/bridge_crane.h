@@ -56,17 +56,14 @@ public:
     double wheel_restitution = 0.;
     /** "braked" (crane wheels fixed along X, trolley tied along Y) or "free". */
     std::string travel = "braked";
-<<<<<<< HEAD
     /** "contacts" (on the runway rails) or "pinned" (held in X, Y, Z: paper case). */
     std::string crane_wheels = "contacts";
-=======
     /**
      * Rayleigh damping ratio (-) at the first vertical and the first
      * horizontal mode, used when Time integration/Damping is not set; 0:
      * undamped.
      */
     double damping_ratio = 0.02;
->>>>>>> crane-modal
     /** Element lengths outside and inside the explicit zones (m). */
     double element_length = 1., explicit_element_length = 0.25;
     /** Length of girder / end carriage around each wheel meshed finely (m). */
