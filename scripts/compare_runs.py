@@ -3,10 +3,13 @@
 
 Prints, per contact name of contacts.csv:
 - the contact-loss episodes of both runs: maximal intervals without contact
-  impulse after the first contact (start = first row without impulse,
-  end = first row with impulse again; an episode still open at the end of
-  the run ends with "open"), matched by order, with their differences;
-- the peak contact force of both runs and its difference;
+  impulse after the first contact (start = first step without impulse,
+  end = first step with impulse again; an episode still open at the end of
+  the run ends with "open"), matched by order, with their differences; from
+  contact_episodes.csv (every step) when both runs wrote it, else from the
+  rows of contacts.csv;
+- the peak contact force of both runs (summary.json, every step, or
+  contacts.csv) and its difference;
 and the wall times of both runs (summary.json) and the speed-up of B over A.
 With --monitor COLUMN (a history.csv column, e.g. trolley_wheel_1.uz) it also
 draws COLUMN of both runs against time, full length and a zoom (--zoom
@@ -54,6 +57,24 @@ def contact_table(run):
     return {n: c[c["contact"] == n] for n in names}
 
 
+def step_episodes(run, min_duration):
+    """Contact-loss episodes at the step resolution (contact_episodes.csv),
+    per contact name, or None if the run did not write the file."""
+    path = os.path.join(run, "contact_episodes.csv")
+    if not os.path.exists(path):
+        return None
+    result = {}
+    with open(path) as f:
+        next(f)
+        for line in f:
+            name, start, end, _ = line.rstrip("\n").split(",")
+            start = float(start)
+            end = float(end) if end else None
+            if end is None or end - start >= min_duration:
+                result.setdefault(name, []).append((start, end))
+    return result
+
+
 def summary(run):
     with open(os.path.join(run, "summary.json")) as f:
         return json.load(f)
@@ -75,6 +96,9 @@ def main():
     a = p.parse_args()
     ca, cb = contact_table(a.run_a), contact_table(a.run_b)
     sa, sb = summary(a.run_a), summary(a.run_b)
+    xa, xb = step_episodes(a.run_a, a.min_duration), step_episodes(a.run_b, a.min_duration)
+    if (xa is None) != (xb is None):
+        xa = xb = None  # compare like with like: both from contacts.csv
     print("A: %s (%s)\nB: %s (%s)" % (a.run_a, sa.get("method"), a.run_b, sb.get("method")))
     worst_time, worst_force = 0.0, 0.0
     first_episode = None
@@ -82,9 +106,15 @@ def main():
         if name not in cb:
             print("contact %s: only in A" % name)
             continue
-        ea = episodes(ca[name]["time"], ca[name]["impulse"], a.min_duration)
-        eb = episodes(cb[name]["time"], cb[name]["impulse"], a.min_duration)
-        fa, fb = np.max(ca[name]["force"]), np.max(cb[name]["force"])
+        ea = (xa.get(name, []) if xa is not None else
+              episodes(ca[name]["time"], ca[name]["impulse"], a.min_duration))
+        eb = (xb.get(name, []) if xb is not None else
+              episodes(cb[name]["time"], cb[name]["impulse"], a.min_duration))
+        # peak force at the step resolution when summary.json has it
+        fa = sa.get("contacts", {}).get(name, {}).get("peak_impact_force",
+                                                      np.max(ca[name]["force"]))
+        fb = sb.get("contacts", {}).get(name, {}).get("peak_impact_force",
+                                                      np.max(cb[name]["force"]))
         print("\ncontact %s: %d contact-loss episodes in A, %d in B; peak force A %.6g N, "
               "B %.6g N (%+.2f %%)" % (name, len(ea), len(eb), fa, fb,
                                        100 * (fb - fa) / fa if fa else 0.0))
