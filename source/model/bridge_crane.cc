@@ -191,15 +191,20 @@ void BridgeCrane::Parameters::declare_parameters(ParameterHandler &prm)
                     "ones with the Flange clearance); pinned: they are held in X, Y and "
                     "Z (no crane wheel contact: the paper's case, where only the trolley "
                     "wheels can lift off).");
+  prm.declare_entry("Explicit element length",
+                    "0.5",
+                    Patterns::Double(),
+                    "Largest element length inside the explicit zones around the wheels "
+                    "(m), > 0. Default 0.5 m: half the Element length, so that the zone "
+                    "has a node between the wheel and the interface on each side. With "
+                    "the stiffness part of the Rayleigh damping the explicit critical "
+                    "step falls about with the square of this length (A7).");
   prm.declare_entry("Element length",
                     "1",
                     Patterns::Double(),
-                    "Largest element length outside the explicit zones (m), > 0.");
-  prm.declare_entry("Explicit element length",
-                    "0.25",
-                    Patterns::Double(),
-                    "Largest element length inside the explicit zones and in the trolley "
-                    "frame (m), > 0.");
+                    "Largest element length outside the explicit zones and in the "
+                    "trolley frame (m), > 0. Default 1 m: 20 elements over a 20 m "
+                    "girder, enough for the envelope of its section forces.");
   prm.declare_entry("Explicit zone length",
                     "1",
                     Patterns::Double(),

@@ -65,7 +65,7 @@ public:
      */
     double damping_ratio = 0.02;
     /** Element lengths outside and inside the explicit zones (m). */
-    double element_length = 1., explicit_element_length = 0.25;
+    double element_length = 1., explicit_element_length = 0.5;
     /** Length of girder / end carriage around each wheel meshed finely (m). */
     double explicit_zone_length = 1.;
 
