@@ -55,6 +55,28 @@ void check_finite(const Vector<double> &u, const double t)
   }
 }
 
+/**
+ * The difference between gravity with the lumped mass, as CD-Lagrange
+ * applies it, and with the consistent mass of @p s (N), in the numbering of
+ * a system of @p n DoFs through @p global (nullptr: the same numbering).
+ */
+Vector<double>
+lumped_gravity_correction(const DiscreteSystem &s,
+                          const std::vector<types::global_dof_index> *global,
+                          const unsigned int n)
+{
+  Vector<double> c(n);
+  const unsigned int ns = s.n_dofs();
+  for (unsigned int d = 0; d < 3; ++d)
+    if (s.gravity[d] != 0. && s.mass_influence[d].size() == ns &&
+        s.influence[d].size() == ns)
+      for (unsigned int i = 0; i < ns; ++i)
+        c[global ? (*global)[i] : i] +=
+            s.gravity[d] *
+            (s.lumped_mass[i] * s.influence[d][i] - s.mass_influence[d][i]);
+  return c;
+}
+
 /** Progress lines at most every @p interval seconds of wall time. */
 class Progress
 {
@@ -208,10 +230,33 @@ void Simulation::run()
     return run_static();
   if (analysis_parameters.type == "modal")
     return run_modal();
+  if (time_parameters.method == "HATI")
+  {
+    // the subdomains (their initial state is copied below)
+    decomposition = std::make_unique<Decomposition>();
+    if (decomposition_parameters.boxes.empty() &&
+        decomposition_parameters.members.empty())
+      decomposition_parameters = model->default_decomposition();
+    decompose(*model, common_parameters, decomposition_parameters, *decomposition);
+    for (auto &part : decomposition->parts)
+      add_base_excitation(part.system, acceleration);
+  }
   if (analysis_parameters.initial_state == "static")
   {
     std::cout << "  initial state: static equilibrium under the constant loads"
               << std::endl;
+    // under the loads the integrators apply: CD-Lagrange (and the explicit
+    // subdomain of HATI) applies gravity with the lumped mass, so that its
+    // first steps start at rest (doc/theory.md 1.1)
+    const Vector<double> correction =
+        time_parameters.method == "CD-Lagrange"
+            ? lumped_gravity_correction(system, nullptr, system.n_dofs())
+        : time_parameters.method == "HATI"
+            ? lumped_gravity_correction(decomposition->parts[0].system,
+                                        &decomposition->parts[0].global_dofs,
+                                        system.n_dofs())
+            : Vector<double>(system.n_dofs());
+    system.constant_force += correction;
     std::vector<double> forces;
     solve_static(system,
                  0.,
@@ -219,11 +264,20 @@ void Simulation::run()
                  newmark_parameters.linear_solver,
                  true,
                  &forces);
+    system.constant_force -= correction;
     system.initial_velocity = 0.;
     const std::string entry = report_static_contact_forces(forces);
     if (!entry.empty())
       initial_state_summary.emplace_back("static_contact_forces", entry);
   }
+  if (decomposition)
+    for (auto &part : decomposition->parts)
+      for (unsigned int i = 0; i < part.global_dofs.size(); ++i)
+      {
+        part.system.initial_displacement[i] =
+            system.initial_displacement[part.global_dofs[i]];
+        part.system.initial_velocity[i] = system.initial_velocity[part.global_dofs[i]];
+      }
   for (const auto &entry :
        apply_default_damping(*model, system, time_parameters.method, damping))
     initial_state_summary.push_back(entry);
@@ -232,25 +286,6 @@ void Simulation::run()
               ExcMessage("Time integration/Damping: Rayleigh damping is applied by the "
                          "CD-Lagrange and Newmark integrators only; remove it for "
                          "Method = event-driven."));
-  if (time_parameters.method == "HATI")
-  {
-    // the subdomains, with the initial state just set (static or given)
-    decomposition = std::make_unique<Decomposition>();
-    if (decomposition_parameters.boxes.empty() &&
-        decomposition_parameters.members.empty())
-      decomposition_parameters = model->default_decomposition();
-    decompose(*model, common_parameters, decomposition_parameters, *decomposition);
-    for (auto &part : decomposition->parts)
-    {
-      add_base_excitation(part.system, acceleration);
-      for (unsigned int i = 0; i < part.global_dofs.size(); ++i)
-      {
-        part.system.initial_displacement[i] =
-            system.initial_displacement[part.global_dofs[i]];
-        part.system.initial_velocity[i] = system.initial_velocity[part.global_dofs[i]];
-      }
-    }
-  }
   if (time_parameters.method == "event-driven")
     run_event_driven();
   else if (time_parameters.method == "Newmark")

@@ -23,7 +23,12 @@ ContactStatistics::ContactStatistics(const std::vector<ContactRow> &contacts,
       groups.back().name = c.name;
     }
   }
-  group_force.assign(groups.size(), 0.);
+  group_impulse.assign(groups.size(), 0.);
+  // a group of bilateral rows (two-sided without clearance) never separates
+  always_closed.assign(groups.size(), 1);
+  for (unsigned int k = 0; k < contacts.size(); ++k)
+    if (!contacts[k].bilateral)
+      always_closed[group_of_row[k]] = 0;
   pushing.assign(groups.size(), 0);
   pushed_once.assign(groups.size(), 0);
   // touching in the initial state: pushing before the first step
@@ -36,20 +41,37 @@ void ContactStatistics::add_step(const double time,
                                  const double dt,
                                  const std::vector<double> &impulses)
 {
-  std::fill(group_force.begin(), group_force.end(), 0.);
+  ++n_steps;
+  std::fill(group_impulse.begin(), group_impulse.end(), 0.);
   for (unsigned int k = 0; k < impulses.size(); ++k)
   {
     const double l = contacts[k].bilateral ? std::abs(impulses[k]) : impulses[k];
     if (l > 0.)
-      group_force[group_of_row[k]] += l;
+      group_impulse[group_of_row[k]] += l;
   }
   for (unsigned int g = 0; g < groups.size(); ++g)
   {
     Entry &e = groups[g];
-    const bool push = group_force[g] > 0.;
+    // the first step from a state at rest on closed contacts also carries
+    // the reaction of the initial half step (A1): not a peak
+    const bool count_peak = n_steps > 1 || !pushed_once[g];
+    if (always_closed[g])
+    {
+      if (!count_peak)
+        continue;
+      e.peak_impulse = std::max(e.peak_impulse, group_impulse[g]);
+      if (group_impulse[g] / dt > e.peak_force)
+      {
+        e.peak_force = group_impulse[g] / dt;
+        e.peak_force_time = time;
+      }
+      continue;
+    }
+    const bool push = group_impulse[g] > 0.;
     if (push)
     {
-      const double force = group_force[g] / dt;
+      const double force = count_peak ? group_impulse[g] / dt : 0.;
+      e.peak_impulse = std::max(e.peak_impulse, count_peak ? group_impulse[g] : 0.);
       if (force > e.peak_force)
       {
         e.peak_force = force;
@@ -85,6 +107,7 @@ std::string ContactStatistics::json(const std::vector<std::string> &names) const
     s << (first ? "" : ", ") << json_string(e.name) << ": {\"n_impacts\": " << e.n_impacts
       << ", \"peak_impact_force\": " << json_number(e.peak_force)
       << ", \"peak_force_time\": " << json_number(e.peak_force_time)
+      << ", \"peak_impulse\": " << json_number(e.peak_impulse)
       << ", \"uplift_time\": " << json_number(e.uplift_time)
       << ", \"n_contact_loss_episodes\": " << e.episodes.size() << '}';
     first = false;

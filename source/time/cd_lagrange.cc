@@ -355,22 +355,6 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
         coupled_with[l].push_back(k);
       }
     }
-
-  // contacts closed at t = 0 (a static state on its supports): the contact
-  // law (A4)-(A5) on the initial half step, so that V_{1/2} does not enter
-  // them and the first step carries one step of reaction, not an impact;
-  // V_{-1/2} mirrors V_{1/2} about V_0 with the same contact force
-  if (nc > 0)
-  {
-    Vector<double> g(*V), v_half(*V);
-    g -= *V_prev; // dt M^-1 G_0
-    *V_prev = v0;
-    apply_contacts();
-    for (unsigned int i = 0; i < n; ++i)
-      (*V_prev)[i] = (*V)[i] - g[i] - 2. * ((*V)[i] - v_half[i]);
-    lambda.assign(nc, 0.);
-    contact_work = 0.;
-  }
 }
 
 void CDLagrange::step()

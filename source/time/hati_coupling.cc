@@ -120,7 +120,8 @@ HATICoupling::HATICoupling(const Decomposition &decomposition,
     rows_E.push_back(e);
     rows_I.push_back(i);
   }
-  for (auto *v : {&lambda_n, &lambda_m, &v_end, &increment_sum, &increment_weighted})
+  for (auto *v :
+       {&lambda_n, &lambda_m, &delta_lambda, &v_end, &increment_sum, &increment_weighted})
     v->reinit(n_gamma);
   link_force.reinit(decomposition.parts[1].system.n_dofs());
   global_U.reinit(n_global_dofs);
@@ -352,14 +353,13 @@ void HATICoupling::initial_multiplier()
   }
 }
 
-void HATICoupling::micro_steps(const Vector<double> &lambda_end,
-                               const bool full_multiplier)
+void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass)
 {
   const unsigned int n_gamma = rows_E.size();
   const double dt = explicit_integrator.time_step();
   increment_sum = 0.;
   increment_weighted = 0.;
-  const bool record_damping = !reach_dofs.empty() && !full_multiplier;
+  const bool record_damping = !reach_dofs.empty() && pass;
   const auto &contacts = decomposition.parts[0].system.contacts;
   const unsigned int nrc = reach_contacts.size();
   if (record_contacts)
@@ -399,8 +399,7 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end,
     const double w0 = 1. - double(j) / m, w1 = double(j) / m;
     for (unsigned int k = 0; k < n_gamma; ++k)
     {
-      const double lambda =
-          w0 * lambda_n[k] + (full_multiplier ? w1 * lambda_end[k] : 0.);
+      const double lambda = w0 * lambda_n[k] + w1 * lambda_end[k];
       if (lambda != 0.)
         explicit_integrator.add_force(rows_E[k], lambda);
     }
@@ -453,7 +452,7 @@ void HATICoupling::step()
   contact_record.clear();
   if (record_contacts)
     explicit_integrator.save(snapshot);
-  micro_steps(lambda_m, false);
+  micro_steps(lambda_n, true);
   seconds[0] += seconds_since(start);
 
   // (G3') Lambda_{n+m} from the velocity continuity at t_{n+m}, with the
@@ -492,12 +491,20 @@ void HATICoupling::step()
   for (unsigned int k = 0; k < n_gamma; ++k)
     free_jump[k] = rows_I[k].apply(implicit.new_velocity());
   for (unsigned int k = 0; k < n_gamma; ++k)
-    lambda_m[k] = -(v_end[k] + free_jump[k]);
-  ramp->H.solve(lambda_m);
+    delta_lambda[k] = -(v_end[k] + free_jump[k]);
+  // the pass ran with the guess Lambda_{n+m} = Lambda_n, whose implicit
+  // link part is H_I Lambda_n; the correction solves
+  // H dLambda = -(C_E V_pass + C_I V_free + H_I Lambda_n)
+  Vector<double> implicit_guess(n_gamma);
+  H_I.vmult(implicit_guess, lambda_n);
+  delta_lambda -= implicit_guess;
+  ramp->H.solve(delta_lambda);
+  lambda_m = lambda_n;
+  lambda_m += delta_lambda;
   seconds[2] += seconds_since(start);
 
   start = Clock::now();
-  if (!(same_active_set && superpose(*ramp, lambda_m)))
+  if (!(same_active_set && superpose(*ramp, delta_lambda)))
   {
     // the active set changed within the macro step: redo the micro steps
     // with the full multiplier and correct Lambda_{n+m} until the macro-end
@@ -510,7 +517,7 @@ void HATICoupling::step()
       explicit_integrator.restore(snapshot);
       record_contacts = true;
       contact_record.clear();
-      micro_steps(lambda_m, true);
+      micro_steps(lambda_m, false);
       Vector<double> implicit_part(n_gamma);
       H_I.vmult(implicit_part, lambda_m);
       double norm = 0., scale = 0.;

@@ -23,7 +23,11 @@ namespace hati
  * first step, so a crane starting from its static state on its wheels has
  * no impact at t = 0. The time out of contact (`uplift_time`) sums the
  * steps without push after the first push; a contact-loss episode runs from
- * the first step without push to the first step with push again.
+ * the first step without push to the first step with push again. A group
+ * of bilateral rows (two-sided without clearance) never separates. The
+ * first step of a contact closed in the initial state is left out of the
+ * peaks: the central-difference start (A1, V_{1/2} from the free
+ * acceleration) makes it carry the reaction of half a step more.
  */
 class ContactStatistics
 {
@@ -35,6 +39,12 @@ public:
     unsigned int n_impacts = 0;
     /** Largest contact force sum(lambda) / dt (N) and its time (s). */
     double peak_force = 0., peak_force_time = 0.;
+    /**
+     * Largest impulse of one step (N s): the dt-independent measure of a
+     * plastic impact, which the event-capturing scheme resolves in one step
+     * (its force impulse / dt grows as dt falls).
+     */
+    double peak_impulse = 0.;
     /** Total time without push after the first push (s). */
     double uplift_time = 0.;
     /** Contact-loss episodes (start, end) in s; end < 0: still open. */
@@ -69,7 +79,9 @@ private:
   const std::vector<ContactRow> &contacts;
   std::vector<unsigned int> group_of_row;
   std::vector<Entry> groups;
-  std::vector<double> group_force;
+  std::vector<double> group_impulse;
+  unsigned long n_steps = 0;
+  std::vector<char> always_closed;
   std::vector<char> pushing, pushed_once;
 };
 } // namespace hati

@@ -185,9 +185,15 @@ public:
   std::function<void(const ContactSample &)> after_micro_step;
 
 private:
-  /** The m micro steps from the current explicit state with Lambda_j given by
-   *  the known part and @p lambda_end (the full multiplier when redoing). */
-  void micro_steps(const Vector<double> &lambda_end, const bool full_multiplier);
+  /**
+   * The m micro steps from the current explicit state with
+   * `Lambda_j = (1 - j/m) Lambda_n + (j/m) lambda_end`: the pass with the
+   * guess `lambda_end = Lambda_n` (@p pass: record what the superposition
+   * needs), or a redo with the full multiplier.
+   */
+  void micro_steps(const Vector<double> &lambda_end, const bool pass);
+  /** Lambda_{n+m} - Lambda_n of the current macro step (N). */
+  Vector<double> delta_lambda;
   /** The explicit response to unit ramps, the interface matrix (set-up). */
   void precompute_ramp_response();
   /** Lambda_0 from the acceleration continuity at t = 0. */
