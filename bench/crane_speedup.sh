@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Speed-up of HATI over the fully explicit run on the default bridge crane
+# (parameter_files/bridge_crane_hati.prm and bridge_crane_full_explicit.prm:
+# Northridge Rinaldi 228 along X and UP along Z, static start on the
+# wheels, 2 % Rayleigh damping), END_TIME seconds of earthquake (default 10).
+# Prints the wall time of both runs and the speed-up, where the time of the
+# coupled run goes (explicit micro steps, implicit steps, interface: from
+# summary.json), and, per wheel, the contact-loss episodes of both runs with
+# the largest differences of their start and end times, the time out of
+# contact and the peak impulse (scripts/compare_runs.py, episodes at the
+# step resolution from contact_episodes.csv). It also draws the paper's
+# Fig. 9 (tw1.uz, full explicit vs HATI, with a zoom) as crane_fig9.png.
+# Goal (issue #6): speed-up >= 5 (aim 10), contact-loss times within 2 ms,
+# peak forces within 5 %.
+# Usage: bench/crane_speedup.sh [END_TIME [build directory]]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+end_time=${1:-10}
+build=${2:-build}
+[ -x "$build/hati" ] || ./scripts/setup.sh hati
+out=output/bench_crane
+mkdir -p "$out"
+for run in full_explicit hati; do
+  echo "== bridge_crane_$run.prm, $end_time s"
+  "$build/hati" "parameter_files/bridge_crane_$run.prm" \
+    --set "Time integration/End time=$end_time" \
+    --set "Output/Output interval=0" \
+    --set "Output/Output directory=$out/$run" | grep -E "dt_crit|HATI|done|steps of"
+done
+/usr/bin/python3 - "$out" <<'PY'
+import json, os, sys
+out = sys.argv[1]
+s = {r: json.load(open(os.path.join(out, r, "summary.json"))) for r in ("full_explicit", "hati")}
+e, h = s["full_explicit"], s["hati"]
+print("\n%-16s %10s %12s %12s %10s" % ("run", "dt (s)", "DoFs", "stepping (s)", "speed-up"))
+print("%-16s %10.3g %12d %12.2f %10s" % ("full explicit", e["dt"], e["n_dofs"],
+                                          e["stepping_wall_time"], "1"))
+print("%-16s %10.3g %5d E+%4d I %12.2f %10.2f" % (
+    "HATI m=%d" % h["time_step_ratio"], h["micro_dt"], h["n_dofs_explicit"],
+    h["n_dofs_implicit"], h["stepping_wall_time"],
+    e["stepping_wall_time"] / h["stepping_wall_time"]))
+total = h["wall_time_explicit"] + h["wall_time_implicit"] + h["wall_time_interface"]
+print("HATI time: explicit micro steps %.2f s (%.0f %%), implicit steps %.2f s (%.0f %%), "
+      "interface %.2f s (%.0f %%); redone macro steps %d of %d, ramp active sets %d"
+      % (h["wall_time_explicit"], 100 * h["wall_time_explicit"] / total,
+         h["wall_time_implicit"], 100 * h["wall_time_implicit"] / total,
+         h["wall_time_interface"], 100 * h["wall_time_interface"] / total,
+         h["redone_macro_steps"], h["n_steps"], h["ramp_patterns"]))
+print("\n%-18s %8s %8s %14s %14s %14s %14s" % ("wheel", "impacts", "", "uplift (s)", "",
+                                             "peak imp. (Ns)", ""))
+worst_imp = 0.0
+for name, we in e["wheels"].items():
+    wh = h["wheels"][name]
+    d = abs(wh["peak_impulse"] - we["peak_impulse"]) / we["peak_impulse"] if we["peak_impulse"] else 0
+    worst_imp = max(worst_imp, d)
+    print("%-18s %8d %8d %14.5f %14.5f %14.5g %14.5g" % (
+        name, we["n_impacts"], wh["n_impacts"], we["uplift_time"], wh["uplift_time"],
+        we["peak_impulse"], wh["peak_impulse"]))
+print("largest difference of the wheels' peak impulse: %.2f %%" % (100 * worst_imp))
+PY
+/usr/bin/python3 scripts/compare_runs.py "$out/full_explicit" "$out/hati" --monitor tw1.uz \
+  --png "$out/crane_fig9.png" --min-duration 0.001 | tail -4
