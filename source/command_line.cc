@@ -108,7 +108,28 @@ int run_command_line(int argc, char **argv)
                 ExcMessage("parameter file '" + file + "' does not exist"));
     const std::string extension = std::filesystem::path(file).extension().string();
     if (extension == ".json" || extension == ".xml")
-      prm.parse_input(file);
+    {
+      // Boost's parser errors name "<unspecified file>(line)": name the file
+      try
+      {
+        prm.parse_input(file);
+      }
+      catch (const std::exception &e)
+      {
+        std::string message = one_line_message(e);
+        const std::string unnamed = "<unspecified file>(";
+        for (auto at = message.find(unnamed); at != std::string::npos;
+             at = message.find(unnamed))
+        {
+          const auto close = message.find(')', at);
+          message.replace(
+              at,
+              close - at + 1,
+              "line " + message.substr(at + unnamed.size(), close - at - unnamed.size()));
+        }
+        AssertThrow(false, ExcMessage("parameter file '" + file + "': " + message));
+      }
+    }
     else
     {
       // .prm: accept a UTF-8 byte-order mark (editors on Windows write one)

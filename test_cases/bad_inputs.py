@@ -20,6 +20,14 @@ with open(table) as f:
     cases.read_file(f)
 
 
+def available_gb():
+    with open("/proc/meminfo") as f:
+        for line in f:
+            if line.startswith("MemAvailable:"):
+                return float(line.split()[1]) * 1024 / 1e9
+    return 0.0
+
+
 def lines(case, key):
     return [l.strip() for l in case.get(key, "").splitlines() if l.strip()]
 
@@ -28,6 +36,10 @@ ctx.check_true("the table holds cases", len(cases.sections()) >= 30,
                "(%d cases in %s)" % (len(cases.sections()), table))
 for index, name in enumerate(cases.sections()):
     case = cases[name]
+    if "skip above GB" in case and available_gb() > float(case["skip above GB"]):
+        print("skip %s: %.0f GB available, more than %s" % (name, available_gb(),
+                                                          case["skip above GB"]))
+        continue
     work = os.path.join(ctx.work, "case%02d" % index)
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
