@@ -24,7 +24,11 @@ for case in history vtu; do
       --set "Output/Output directory=$work/$case" > "$work/log-$case-$i" 2>&1 ||
       { cat "$work/log-$case-$i"; exit 1; }
     /usr/bin/python3 -c "import json; print(json.load(open('$work/$case/summary.json'))['wall_time'])" >> "$work/wall-$case"
-    sed -n 's/.*(output \([^ ]*\) s in \([0-9]*\) calls).*/\1 \2/p' "$work/log-$case-$i" >> "$work/output-$case"
+    # output time per step: "done: ... (output X s in N calls)", or (before
+    # the change) the TimerOutput row "| output | N | Xs |"
+    { sed -n 's/.*(output \([^ ]*\) s in \([0-9]*\) calls).*/\1 \2/p' "$work/log-$case-$i"
+      sed -n 's/^| output *| *\([0-9]*\) | *\([0-9.e+-]*\)s.*/\2 \1/p' "$work/log-$case-$i"
+    } | head -1 >> "$work/output-$case"
   done
   /usr/bin/python3 - "$case" "$work/wall-$case" "$work/output-$case" <<'PY'
 import statistics, sys

@@ -176,8 +176,9 @@ void RunDirectory::begin()
   AssertThrow(fd >= 0,
               ExcMessage("cannot create the lock file " + lock_path + ": " +
                          system_error_text(errno)));
-  if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno != ENOLCK && errno != EOPNOTSUPP)
   {
+    // (a file system without locks, ENOLCK/EOPNOTSUPP: run without the lock)
     const int error = errno;
     ::close(fd);
     AssertThrow(
