@@ -4,8 +4,10 @@
 
 #include <boost/program_options.hpp>
 
+#include <hati/output/run_directory.h>
 #include <hati/simulation.h>
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -15,38 +17,6 @@ namespace hati
 {
 namespace
 {
-/** The message of an exception on one line, without deal.II's banner. */
-std::string one_line(const std::exception &e)
-{
-  std::string text;
-  if (const auto *d = dynamic_cast<const ExceptionBase *>(&e))
-  {
-    std::ostringstream s;
-    d->print_info(s);
-    text = s.str();
-  }
-  else
-    text = e.what();
-  std::string r;
-  bool space = false;
-  for (const char c : text)
-  {
-    if (std::isspace(static_cast<unsigned char>(c)))
-      space = !r.empty();
-    else
-    {
-      if (space)
-        r += ' ';
-      r += c;
-      space = false;
-    }
-  }
-  const std::string prefix = "Additional information: ";
-  if (r.compare(0, prefix.size(), prefix) == 0)
-    r = r.substr(prefix.size());
-  return r;
-}
-
 /** Apply one `--set "Subsection/Entry=value"` override. */
 void apply_override(ParameterHandler &prm, const std::string &assignment)
 {
@@ -103,7 +73,9 @@ int run_command_line(int argc, char **argv)
       "parameter-file", po::value<std::string>(), "the .prm file to run");
   po::positional_options_description positional;
   positional.add("parameter-file", 1);
+  ignore_broken_pipes();
 
+  std::unique_ptr<Simulation> simulation;
   try
   {
     po::variables_map vm;
@@ -136,7 +108,28 @@ int run_command_line(int argc, char **argv)
                 ExcMessage("parameter file '" + file + "' does not exist"));
     const std::string extension = std::filesystem::path(file).extension().string();
     if (extension == ".json" || extension == ".xml")
-      prm.parse_input(file);
+    {
+      // Boost's parser errors name "<unspecified file>(line)": name the file
+      try
+      {
+        prm.parse_input(file);
+      }
+      catch (const std::exception &e)
+      {
+        std::string message = one_line_message(e);
+        const std::string unnamed = "<unspecified file>(";
+        for (auto at = message.find(unnamed); at != std::string::npos;
+             at = message.find(unnamed))
+        {
+          const auto close = message.find(')', at);
+          message.replace(
+              at,
+              close - at + 1,
+              "line " + message.substr(at + unnamed.size(), close - at - unnamed.size()));
+        }
+        AssertThrow(false, ExcMessage("parameter file '" + file + "': " + message));
+      }
+    }
     else
     {
       // .prm: accept a UTF-8 byte-order mark (editors on Windows write one)
@@ -155,13 +148,25 @@ int run_command_line(int argc, char **argv)
       for (const auto &s : vm["set"].as<std::vector<std::string>>())
         apply_override(prm, s);
 
-    Simulation simulation(prm, file);
-    simulation.run();
+    simulation = std::make_unique<Simulation>(prm, file);
+    simulation->run();
+    if (stop_requested())
+    {
+      std::cerr << "hati: interrupted by "
+                << (stop_signal() == SIGINT ? "SIGINT" : "SIGTERM")
+                << " after a complete step; the outputs are flushed and summary.json "
+                   "says \"status\": \"interrupted\""
+                << std::endl;
+      return 128 + stop_signal();
+    }
     return 0;
   }
   catch (const std::exception &e)
   {
-    std::cerr << "hati: error: " << one_line(e) << std::endl;
+    const std::string message = one_line_message(e);
+    if (simulation)
+      simulation->record_failure(message);
+    std::cerr << "hati: error: " << message << std::endl;
     return 1;
   }
 }

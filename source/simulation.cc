@@ -10,6 +10,8 @@
 #include <hati/loading/base_excitation.h>
 #include <hati/output/contact_statistics.h>
 #include <hati/output/output_writer.h>
+#include <hati/output/run_directory.h>
+#include <hati/output/wall_clock.h>
 #include <hati/simulation.h>
 #include <hati/time/cd_lagrange.h>
 #include <hati/time/event_driven.h>
@@ -170,26 +172,19 @@ Simulation::Simulation(ParameterHandler &prm, const std::string &parameter_file)
   output_directory = output_parameters.directory;
   if (output_directory.empty())
     output_directory = "output/" + std::filesystem::path(parameter_file).stem().string();
-  std::filesystem::create_directories(output_directory);
-  // remove what an earlier run wrote here, so that the directory never mixes
-  // two runs (files of other programs are left alone)
-  for (const auto &entry : std::filesystem::directory_iterator(output_directory))
-  {
-    const std::string name = entry.path().filename().string();
-    const bool vtu =
-        name.rfind("solution-", 0) == 0 && entry.path().extension() == ".vtu";
-    const bool mode = name.rfind("mode-", 0) == 0 && entry.path().extension() == ".vtu";
-    if (vtu || mode || name == "solution.pvd" || name == "modes.pvd" ||
-        name == "history.csv" || name == "contacts.csv" || name == "energy.csv" ||
-        name == "summary.json" || name == "modes.csv" || name == "section_forces.csv" ||
-        name == "static.csv")
-      std::filesystem::remove(entry.path());
-  }
-  std::ofstream used(output_directory + "/parameters.prm");
+  // the directory is not touched before the analysis begins (RunDirectory)
+  std::ostringstream used;
   prm.print_parameters(used, ParameterHandler::PRM);
+  run_directory = std::make_unique<RunDirectory>(output_directory, used.str());
 }
 
 Simulation::~Simulation() = default;
+
+void Simulation::record_failure(const std::string &message) noexcept
+{
+  if (run_directory)
+    run_directory->fail(message);
+}
 
 void Simulation::run()
 {
@@ -349,7 +344,7 @@ void Simulation::run_transient(Integrator &integrator,
 {
   constexpr bool explicit_scheme = std::is_same_v<Integrator, CDLagrange>;
   const double dt = integrator.time_step(), T = time_parameters.end_time;
-  OutputWriter writer(output_directory, system, *model);
+  OutputWriter writer(*run_directory, system, *model);
 
   const unsigned long n_steps = std::llround(std::ceil(T / dt - 1e-9));
   const unsigned long every_history =
@@ -360,9 +355,10 @@ void Simulation::run_transient(Integrator &integrator,
   std::cout << "  " << n_steps << " steps of " << dt << " s to t = " << T << " s"
             << std::endl;
 
+  WallClock output_clock; // a TimerOutput section costs more than a row
   auto write = [&](const unsigned long step)
   {
-    TimerOutput::Scope scope(timer, "output");
+    const WallClock::Scope scope(output_clock);
     const OutputState s = output_state(integrator);
     check_finite(*s.displacement, s.time);
     if (step % every_history == 0 || step == n_steps)
@@ -428,6 +424,8 @@ void Simulation::run_transient(Integrator &integrator,
         progress.print(integrator.time(), step);
         writer.flush();
       }
+      if (stop_requested()) // SIGINT/SIGTERM: stop after a complete step
+        break;
     }
   }
   writer.flush();
@@ -436,7 +434,7 @@ void Simulation::run_transient(Integrator &integrator,
   const double wall = progress.wall_time();
   // time of the steps alone: the stepping loop minus the output inside it
   auto times = timer.get_summary_data(TimerOutput::total_wall_time);
-  const double stepping = times["time stepping"] - times["output"];
+  const double stepping = times["time stepping"] - output_clock.seconds();
   summary.insert(
       summary.end(), initial_state_summary.begin(), initial_state_summary.end());
   for (const auto &entry : model->summary_entries(static_contact_forces))
@@ -491,7 +489,8 @@ void Simulation::run_transient(Integrator &integrator,
     statistics.print_table(std::cout);
   }
   write_summary(output_directory + "/summary.json", summary);
-  std::cout << "  done: " << n_steps << " steps in " << wall << " s; ";
+  std::cout << "  done: " << n_steps << " steps in " << wall << " s (output "
+            << output_clock.seconds() << " s in " << output_clock.calls() << " calls); ";
   if (!system.contacts.empty())
     std::cout << "impacts: " << writer.n_impacts()
               << ", max penetration: " << writer.max_penetration() << " m, ";
@@ -593,7 +592,7 @@ void Simulation::run_event_driven()
 
   timer.enter_subsection("setup");
   EventDriven integrator(system, time_parameters);
-  OutputWriter writer(output_directory, system, *model);
+  OutputWriter writer(*run_directory, system, *model);
   timer.leave_subsection();
   std::cout << "  event-driven (CVODE, root finding): sampling every " << sample
             << " s to t = " << T << " s" << std::endl;
@@ -630,6 +629,8 @@ void Simulation::run_event_driven()
         progress.print(integrator.time(), i);
         writer.flush();
       }
+      if (stop_requested()) // SIGINT/SIGTERM: stop after a complete sample
+        break;
     }
   }
   writer.flush();

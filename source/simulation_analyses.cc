@@ -5,10 +5,13 @@
 
 #include <hati/analysis/modal_analysis.h>
 #include <hati/analysis/static_analysis.h>
+#include <hati/output/csv_file.h>
 #include <hati/output/output_writer.h>
+#include <hati/output/run_directory.h>
 #include <hati/simulation.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -30,7 +33,7 @@ void Simulation::run_static()
     solve_static(system, 0., U, newmark_parameters.linear_solver, false, &forces);
   }
   const std::string contact_entry = report_static_contact_forces(forces);
-  OutputWriter writer(output_directory, system, *model);
+  OutputWriter writer(*run_directory, system, *model);
   OutputState s;
   s.time = 0.;
   s.displacement = &U;
@@ -131,9 +134,10 @@ void Simulation::run_modal()
     r = compute_modes(system, analysis_parameters.n_modes);
   }
   TimerOutput::Scope scope(timer, "output");
-  std::ofstream csv(output_directory + "/modes.csv");
+  run_directory->begin();
+  std::ofstream csv(run_directory->create("modes.csv"));
   AssertThrow(csv, ExcMessage("cannot write " + output_directory + "/modes.csv"));
-  csv << std::setprecision(15);
+  use_shortest_numbers(csv);
   csv << "mode,frequency,period,participation_x,participation_y,participation_z,"
          "effective_mass_x,effective_mass_y,effective_mass_z,effective_mass_ratio_x,"
          "effective_mass_ratio_y,effective_mass_ratio_z\n";
@@ -166,13 +170,19 @@ void Simulation::run_modal()
 
     char name[64];
     std::snprintf(name, sizeof(name), "mode-%03u.vtu", k + 1);
-    std::ofstream out(output_directory + "/" + name);
+    std::ofstream out(run_directory->create(name));
     model->write_vtu(out, {{"displacement", &r.modes[k]}}, k + 1, k + 1);
+    AssertThrow(out.flush(),
+                ExcMessage("cannot write " + output_directory + "/" + name + ": " +
+                           system_error_text(errno)));
     files.emplace_back(k + 1, name);
   }
-  csv.flush();
-  std::ofstream pvd(output_directory + "/modes.pvd");
+  csv.close();
+  AssertThrow(csv, ExcMessage("cannot write " + output_directory + "/modes.csv"));
+  std::ostringstream pvd;
   DataOutBase::write_pvd_record(pvd, files);
+  run_directory->create(temporary_name("modes.pvd"));
+  write_file_atomically(run_directory->create("modes.pvd"), pvd.str());
 
   std::ostringstream list;
   list << '[';

@@ -23,6 +23,8 @@ namespace hati
 {
 using namespace dealii;
 
+class RunDirectory;
+
 /**
  * One run: reads the parameters, builds the model's discrete system, runs
  * the chosen time integration with its outputs, prints a summary.
@@ -42,6 +44,12 @@ public:
 
   /** Run the time integration and write every output. */
   void run();
+
+  /**
+   * After run() threw: `summary.json` says `"status": "failed"` with
+   * @p message if the run had begun writing its outputs (RunDirectory::fail()).
+   */
+  void record_failure(const std::string &message) noexcept;
 
 private:
   void run_cd_lagrange();
@@ -70,6 +78,8 @@ private:
   /** The explicit and implicit subdomains of Method = HATI. */
   std::unique_ptr<Decomposition> decomposition;
   std::string output_directory;
+  /** The output directory, locked and cleaned when the analysis begins. */
+  std::unique_ptr<RunDirectory> run_directory;
   std::string parameter_file;
 
   /**

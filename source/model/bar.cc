@@ -6,6 +6,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <hati/model/bar.h>
+#include <hati/model/memory_estimate.h>
 
 #include <cmath>
 #include <sstream>
@@ -70,6 +71,9 @@ void Bar::build(const CommonModelParameters &common, DiscreteSystem &system)
 {
   if (triangulation.n_active_cells() == 0)
   {
+    // refuse before allocating: n + 1 DoFs, 3 nonzeros per row
+    const double n = parameters.n_elements;
+    check_memory_estimate("Model/Bar/Number of elements", n, n + 1., 3. * (n + 1.));
     GridGenerator::subdivided_hyper_cube(
         triangulation, parameters.n_elements, 0., parameters.length);
     dof_handler.reinit(triangulation);

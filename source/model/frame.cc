@@ -7,6 +7,7 @@
 
 #include <hati/model/frame.h>
 #include <hati/model/gmsh_frame_reader.h>
+#include <hati/model/memory_estimate.h>
 
 #include <cmath>
 #include <iomanip>
@@ -569,6 +570,15 @@ void Frame::create_mesh()
   std::vector<std::pair<unsigned int, unsigned int>> cell_member; // (member, element)
   std::vector<unsigned int> cell_start; // first vertex of a cell
   std::vector<double> cell_position;    // along the member
+  {
+    // refuse before allocating: 6 DoFs per vertex, 3 blocks of 6 x 6 per row
+    double n_cells = 0.;
+    for (const auto &member : P.members)
+      n_cells += member.n_elements;
+    const double n_vertices = n_cells + P.members.size();
+    check_memory_estimate(
+        "Model/Frame/Members", n_cells, 6. * n_vertices, 108. * n_vertices);
+  }
   for (unsigned int m = 0; m < P.members.size(); ++m)
   {
     const auto &member = P.members[m];

@@ -1,7 +1,9 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
 
 #include <hati/model/gmsh_frame_reader.h>
 
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -23,7 +25,10 @@ public:
   std::string line()
   {
     std::string l;
-    AssertThrow(std::getline(in, l), ExcMessage(where() + "unexpected end of file"));
+    AssertThrow(std::getline(in, l),
+                ExcMessage(where() +
+                           "the file ends early: it is truncated (an incomplete copy or "
+                           "export?)"));
     ++number;
     if (!l.empty() && l.back() == '\r')
       l.pop_back();
@@ -53,6 +58,20 @@ public:
                 ExcMessage(where() + "expected at least " + std::to_string(n) +
                            " numbers, got '" + l + "'"));
     return v;
+  }
+
+  /**
+   * Check that @p x, read as the number of @p what, is a count: an integer
+   * from 0 to 1e9 (a negative or huge count means a corrupt file).
+   */
+  long count(const double x, const std::string &what) const
+  {
+    AssertThrow(x >= 0. && x <= 1e9 && x == std::floor(x),
+                ExcMessage(where() + "invalid number of " + what + " " +
+                           Utilities::to_string(x) +
+                           " (negative, fractional or above 1e9: the file is corrupt "
+                           "or truncated)"));
+    return static_cast<long>(x);
   }
 
   std::string where() const
@@ -92,8 +111,8 @@ GmshFrame read_gmsh_frame(const std::string &filename)
     }
     else if (l == "$PhysicalNames")
     {
-      const unsigned int n = r.numbers(1)[0];
-      for (unsigned int i = 0; i < n; ++i)
+      const long n = r.count(r.numbers(1)[0], "physical names");
+      for (long i = 0; i < n; ++i)
       {
         const std::string t = r.line();
         std::istringstream s(t);
@@ -113,7 +132,7 @@ GmshFrame read_gmsh_frame(const std::string &filename)
     {
       const auto counts = r.numbers(4);
       for (unsigned int dim = 0; dim < 4; ++dim)
-        for (unsigned int i = 0; i < counts[dim]; ++i)
+        for (long i = 0; i < r.count(counts[dim], "entities"); ++i)
         {
           const auto v = r.numbers(dim == 0 ? 5 : 8);
           // point: tag x y z nphys phys...; others: tag 6 bounds nphys phys...
@@ -129,7 +148,7 @@ GmshFrame read_gmsh_frame(const std::string &filename)
     {
       if (version < 4.)
       {
-        const long n = r.numbers(1)[0];
+        const long n = r.count(r.numbers(1)[0], "nodes");
         for (long i = 0; i < n; ++i)
         {
           const auto v = r.numbers(4);
@@ -139,15 +158,16 @@ GmshFrame read_gmsh_frame(const std::string &filename)
       else
       {
         const auto h = r.numbers(4);
-        for (long b = 0; b < long(h[0]); ++b)
+        for (long b = 0; b < r.count(h[0], "node blocks"); ++b)
         {
           const auto block = r.numbers(4); // dim entity parametric n
+          const long n = r.count(block[3], "nodes in a block");
           AssertThrow(block[2] == 0,
                       ExcMessage(r.where() + "parametric nodes are not supported"));
           std::vector<long> tags;
-          for (long i = 0; i < long(block[3]); ++i)
+          for (long i = 0; i < n; ++i)
             tags.push_back(long(r.numbers(1)[0]));
-          for (long i = 0; i < long(block[3]); ++i)
+          for (long i = 0; i < n; ++i)
           {
             const auto x = r.numbers(3);
             node_coordinates[tags[i]] = Point<3>(x[0], x[1], x[2]);
@@ -170,7 +190,7 @@ GmshFrame read_gmsh_frame(const std::string &filename)
       };
       if (version < 4.)
       {
-        const long n = r.numbers(1)[0];
+        const long n = r.count(r.numbers(1)[0], "elements");
         for (long i = 0; i < n; ++i)
         {
           const auto v = r.numbers(3); // id type ntags tags... nodes...
@@ -187,12 +207,15 @@ GmshFrame read_gmsh_frame(const std::string &filename)
       else
       {
         const auto h = r.numbers(4);
-        for (long b = 0; b < long(h[0]); ++b)
+        for (long b = 0; b < r.count(h[0], "element blocks"); ++b)
         {
           const auto block = r.numbers(4); // dim entity type n
           const int dim = block[0], entity = block[1], type = block[2];
+          AssertThrow(dim >= 0 && dim < 4,
+                      ExcMessage(r.where() + "invalid entity dimension " +
+                                 Utilities::to_string(block[0])));
           const auto &physicals = entity_physicals[dim][entity];
-          for (long i = 0; i < long(block[3]); ++i)
+          for (long i = 0; i < r.count(block[3], "elements in a block"); ++i)
           {
             const auto v = r.numbers(2);
             if ((type == 1 && v.size() >= 3) || (type == 15 && v.size() >= 2))

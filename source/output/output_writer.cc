@@ -4,10 +4,11 @@
 #include <hati/output/output_writer.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <iomanip>
+#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -15,26 +16,22 @@ namespace hati
 {
 namespace
 {
-std::ofstream open(const std::string &name)
-{
-  std::ofstream f(name);
-  AssertThrow(f, ExcMessage("cannot open output file " + name + " for writing"));
-  f << std::setprecision(15);
-  return f;
-}
+/** Flush the CSV files at least this often (s of wall time). */
+constexpr double flush_interval = 2.;
+/** ... and when their buffers hold this many bytes. */
+constexpr std::size_t flush_size = 1 << 20;
 } // namespace
 
-OutputWriter::OutputWriter(const std::string &directory,
+OutputWriter::OutputWriter(RunDirectory &run,
                            const DiscreteSystem &system,
                            const Model &model)
-    : dir(directory), system(system), model(model)
+    : run(run), dir(run.path()), system(system), model(model),
+      last_flush(std::chrono::steady_clock::now())
 {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  AssertThrow(
-      !ec, ExcMessage("cannot create the output directory " + dir + ": " + ec.message()));
+  run.begin();
+  use_shortest_numbers(section_rows);
 
-  history = open(dir + "/history.csv");
+  history.open(run.create("history.csv"));
   history << "time";
   for (const auto &m : system.monitors)
   {
@@ -45,7 +42,7 @@ OutputWriter::OutputWriter(const std::string &directory,
   }
   history << '\n';
 
-  contacts = open(dir + "/contacts.csv");
+  contacts.open(run.create("contacts.csv"));
   contacts << "time,contact,gap,normal_velocity,impulse,force,active\n";
   for (const auto &c : system.contacts)
   {
@@ -57,7 +54,7 @@ OutputWriter::OutputWriter(const std::string &directory,
   group_was_pushing.assign(contact_names.size(), false);
   group_pushing.assign(contact_names.size(), false);
 
-  energy = open(dir + "/energy.csv");
+  energy.open(run.create("energy.csv"));
   energy << "time,kinetic,internal,external_work,contact_work,dissipated,interface_work,"
             "total,balance_drift,kinetic_explicit,kinetic_implicit,internal_explicit,"
             "internal_implicit\n";
@@ -65,9 +62,10 @@ OutputWriter::OutputWriter(const std::string &directory,
   const std::string header = model.section_forces_header();
   if (!header.empty())
   {
-    section_forces = open(dir + "/section_forces.csv");
+    section_forces.open(run.create("section_forces.csv"));
     section_forces << header << '\n';
   }
+  flush();
 }
 
 void OutputWriter::write_history(const OutputState &s)
@@ -82,9 +80,14 @@ void OutputWriter::write_history(const OutputState &s)
   }
   history << '\n';
   if (section_forces.is_open())
-    model.write_section_forces(section_forces, s.time, *s.displacement);
+  {
+    section_rows.str("");
+    model.write_section_forces(section_rows, s.time, *s.displacement);
+    section_forces << section_rows.str();
+  }
   if (s.contact_rows)
     write_contacts(s);
+  flush_if_due();
 }
 
 void OutputWriter::write_contacts(const OutputState &s)
@@ -92,9 +95,13 @@ void OutputWriter::write_contacts(const OutputState &s)
   if (s.gaps.size() != system.contacts.size() || system.contacts.empty())
     return; // no contact state (implicit or static analyses)
   const unsigned int ng = contact_names.size();
-  std::vector<double> gap(ng, std::numeric_limits<double>::max()), vn(ng, 0.),
-      imp(ng, 0.);
-  std::vector<unsigned int> n_rows(ng, 0), n_active(ng, 0);
+  auto &gap = group_gap, &vn = group_velocity, &imp = group_impulse;
+  auto &n_rows = group_rows, &n_active = group_active;
+  gap.assign(ng, std::numeric_limits<double>::max());
+  vn.assign(ng, 0.);
+  imp.assign(ng, 0.);
+  n_rows.assign(ng, 0);
+  n_active.assign(ng, 0);
   for (unsigned int k = 0; k < s.gaps.size(); ++k)
   {
     const unsigned int g = contact_group[k];
@@ -109,6 +116,7 @@ void OutputWriter::write_contacts(const OutputState &s)
              << vn[g] / n_rows[g] << ',' << imp[g] << ','
              << (s.impulse_duration > 0. ? imp[g] / s.impulse_duration : 0.) << ','
              << n_active[g] << '\n';
+  flush_if_due();
 }
 
 void OutputWriter::track_contacts(const std::vector<double> &gaps,
@@ -150,6 +158,7 @@ void OutputWriter::write_energy(const double time, const Energies &e)
          << total << ',' << last_drift << ',' << e.kinetic_explicit << ','
          << e.kinetic_implicit << ',' << e.internal_explicit << ',' << e.internal_implicit
          << '\n';
+  flush_if_due();
 }
 
 void OutputWriter::write_vtu(const OutputState &s)
@@ -173,8 +182,11 @@ void OutputWriter::write_vtu(const OutputState &s)
                 "solution-%05u.vtu",
                 static_cast<unsigned int>(vtu_files.size()));
   {
-    std::ofstream out(dir + "/" + name);
-    AssertThrow(out, ExcMessage("cannot write " + dir + "/" + name));
+    const std::string path = run.create(name);
+    std::ofstream out(path);
+    AssertThrow(out,
+                ExcMessage("cannot write the output file " + path + ": " +
+                           system_error_text(errno)));
     model.write_vtu(out,
                     {{"displacement", s.displacement},
                      {"velocity", s.velocity},
@@ -182,29 +194,48 @@ void OutputWriter::write_vtu(const OutputState &s)
                      {"contact_status", &status}},
                     s.time,
                     vtu_files.size());
+    out.close();
+    AssertThrow(out,
+                ExcMessage("cannot write the output file " + path + ": " +
+                           system_error_text(errno)));
   }
+  // the index names complete snapshots only, and is replaced atomically
   vtu_files.emplace_back(s.time, name);
-  std::ofstream pvd(dir + "/solution.pvd");
+  std::ostringstream pvd;
   DataOutBase::write_pvd_record(pvd, vtu_files);
+  run.create(temporary_name("solution.pvd"));
+  write_file_atomically(run.create("solution.pvd"), pvd.str());
   flush();
+}
+
+void OutputWriter::flush_if_due()
+{
+  const auto now = std::chrono::steady_clock::now();
+  if (history.buffered() + contacts.buffered() + energy.buffered() +
+              section_forces.buffered() >=
+          flush_size ||
+      std::chrono::duration<double>(now - last_flush).count() >= flush_interval)
+    flush();
 }
 
 void OutputWriter::flush()
 {
+  std::error_code ec;
+  AssertThrow(std::filesystem::is_directory(dir, ec),
+              ExcMessage("the output directory " + dir +
+                         " has vanished (deleted or unmounted during the run)"));
   history.flush();
   contacts.flush();
   energy.flush();
-  if (section_forces.is_open())
-    section_forces.flush();
+  section_forces.flush();
+  last_flush = std::chrono::steady_clock::now();
 }
 
 std::string json_number(const double x)
 {
   if (!std::isfinite(x))
     return "null";
-  std::ostringstream s;
-  s << std::setprecision(15) << x;
-  return s.str();
+  return shortest_number(x);
 }
 
 std::string json_string(const std::string &x)
@@ -222,12 +253,21 @@ std::string json_string(const std::string &x)
 void write_summary(const std::string &filename,
                    const std::vector<std::pair<std::string, std::string>> &entries)
 {
-  std::ofstream out(filename);
-  AssertThrow(out, ExcMessage("cannot write " + filename));
-  out << "{\n";
-  for (unsigned int i = 0; i < entries.size(); ++i)
-    out << "  \"" << entries[i].first << "\": " << entries[i].second
-        << (i + 1 < entries.size() ? ",\n" : "\n");
-  out << "}\n";
+  auto all = entries;
+  if (stop_requested())
+  {
+    all.emplace_back("status", json_string("interrupted"));
+    for (const auto &[key, value] : entries)
+      if (key == "end_time")
+        all.emplace_back("time_reached", value);
+  }
+  else
+    all.emplace_back("status", json_string("completed"));
+  std::string out = "{\n";
+  for (unsigned int i = 0; i < all.size(); ++i)
+    out += "  \"" + all[i].first + "\": " + all[i].second +
+           (i + 1 < all.size() ? ",\n" : "\n");
+  out += "}\n";
+  write_file_atomically(filename, out);
 }
 } // namespace hati

@@ -5,11 +5,14 @@
 
 #include <hati/model/discrete_system.h>
 #include <hati/model/model.h>
+#include <hati/output/csv_file.h>
+#include <hati/output/run_directory.h>
 #include <hati/parameters/run_parameters.h>
 #include <hati/time/energies.h>
 
-#include <fstream>
+#include <chrono>
 #include <map>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -41,8 +44,7 @@ struct OutputState
 };
 
 /**
- * Writes every output file of a run into one directory, flushing as it goes
- * (doc/user_guide.md):
+ * Writes every output file of a run into its RunDirectory (doc/user_guide.md):
  * `history.csv` (monitor points), `contacts.csv` (one row per contact name
  * and output time: smallest gap, mean normal velocity, summed impulse, mean
  * force = impulse / duration, number of active rows), `energy.csv`,
@@ -50,13 +52,21 @@ struct OutputState
  * writes section forces, and `summary.json` at the end.
  * It also counts impacts (a contact name going from no impulse to a
  * positive impulse) and the largest penetration.
+ *
+ * The CSV rows are formatted into buffers (CsvFile, shortest round-trip
+ * numbers) and the files are flushed together, at every VTU snapshot, when
+ * the buffers hold 1 MiB and at least every 2 s of wall time: every CSV
+ * ends on a complete line at every instant. `solution.pvd` is replaced
+ * atomically after its snapshot is complete.
  */
 class OutputWriter
 {
 public:
-  OutputWriter(const std::string &directory,
-               const DiscreteSystem &system,
-               const Model &model);
+  /**
+   * Begin the run in @p run (RunDirectory::begin(): nothing is written
+   * before) and open the CSV files with their headers.
+   */
+  OutputWriter(RunDirectory &run, const DiscreteSystem &system, const Model &model);
 
   /** Rows of history.csv and contacts.csv at @p state.time. */
   void write_history(const OutputState &state);
@@ -72,7 +82,11 @@ public:
    */
   void track_contacts(const std::vector<double> &gaps,
                       const std::vector<double> &impulses);
-  /** Flush every open file. */
+  /**
+   * Write every buffered row to its file, checking the writes and that the
+   * directory still exists; throws a one-line message naming the file and
+   * the system error.
+   */
   void flush();
 
   unsigned int n_impacts() const { return impacts; }
@@ -82,10 +96,20 @@ public:
   const std::string &directory() const { return dir; }
 
 private:
+  /** flush() when the buffers are large or 2 s have passed since the last one. */
+  void flush_if_due();
+
+  RunDirectory &run;
   const std::string dir;
   const DiscreteSystem &system;
   const Model &model;
-  std::ofstream history, contacts, energy, section_forces;
+  CsvFile history, contacts, energy, section_forces;
+  /** Rows of Model::write_section_forces() before they go to section_forces. */
+  std::ostringstream section_rows;
+  /** Scratch of write_contacts() per contact name. */
+  std::vector<double> group_gap, group_velocity, group_impulse;
+  std::vector<unsigned int> group_rows, group_active;
+  std::chrono::steady_clock::time_point last_flush;
   std::vector<std::string> contact_names;
   std::vector<unsigned int> contact_group;
   std::vector<bool> group_was_pushing, group_pushing;
@@ -96,12 +120,18 @@ private:
   std::vector<std::pair<double, std::string>> vtu_files;
 };
 
-/** A number as a JSON value (null if not finite), 15 significant digits. */
+/** A number as a JSON value (null if not finite), shortest round-trip text. */
 std::string json_number(const double x);
 /** A string as a quoted JSON value. */
 std::string json_string(const std::string &x);
 
-/** Write `summary.json` (numbers and strings given as pre-formatted JSON values). */
+/**
+ * Write `summary.json` atomically (write_file_atomically()); the numbers and
+ * strings are given as pre-formatted JSON values. The entry `status` is
+ * added at the end: `"completed"`, or `"interrupted"` after SIGINT/SIGTERM
+ * (stop_requested()), then with `time_reached` (s), the value of the entry
+ * `end_time`.
+ */
 void write_summary(const std::string &filename,
                    const std::vector<std::pair<std::string, std::string>> &entries);
 } // namespace hati

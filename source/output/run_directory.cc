@@ -1,0 +1,253 @@
+#include <deal.II/base/exceptions.h>
+
+#include <hati/output/run_directory.h>
+
+#include <cctype>
+#include <cerrno>
+#include <csignal>
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/file.h>
+#include <system_error>
+#include <unistd.h>
+
+namespace hati
+{
+using namespace dealii;
+
+namespace
+{
+volatile std::sig_atomic_t stop_signal_number = 0;
+
+extern "C" void on_stop_signal(int signal)
+{
+  if (stop_signal_number != 0)
+  {
+    // a second Ctrl-C: stop at once
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+    return;
+  }
+  stop_signal_number = signal;
+}
+
+void install_stop_handlers()
+{
+  struct sigaction action = {};
+  action.sa_handler = on_stop_signal;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESTART;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+/** Write all of @p size bytes at @p data to @p fd; false (errno set) if that fails. */
+bool write_all(const int fd, const char *data, std::size_t size)
+{
+  while (size > 0)
+  {
+    const ssize_t n = ::write(fd, data, size);
+    if (n < 0 && errno == EINTR)
+      continue;
+    if (n <= 0)
+    {
+      if (n == 0)
+        errno = ENOSPC;
+      return false;
+    }
+    data += n;
+    size -= n;
+  }
+  return true;
+}
+
+/** A JSON string value (quotes, backslashes and control characters escaped). */
+std::string quoted(const std::string &text)
+{
+  std::string r = "\"";
+  for (const char c : text)
+    if (c == '"' || c == '\\')
+      (r += '\\') += c;
+    else if (static_cast<unsigned char>(c) < 0x20)
+      r += ' ';
+    else
+      r += c;
+  return r + '"';
+}
+
+const char *const lock_name = ".hati.lock";
+const char *const manifest_name = ".hati-manifest";
+} // namespace
+
+std::string system_error_text(const int error)
+{
+  return std::generic_category().message(error);
+}
+
+bool stop_requested() { return stop_signal_number != 0; }
+
+int stop_signal() { return stop_signal_number; }
+
+void ignore_broken_pipes() { std::signal(SIGPIPE, SIG_IGN); }
+
+std::string one_line_message(const std::exception &e)
+{
+  std::string text;
+  if (const auto *d = dynamic_cast<const ExceptionBase *>(&e))
+  {
+    std::ostringstream s;
+    d->print_info(s);
+    text = s.str();
+  }
+  else
+    text = e.what();
+  std::string r;
+  bool space = false;
+  for (const char c : text)
+  {
+    if (std::isspace(static_cast<unsigned char>(c)))
+      space = !r.empty();
+    else
+    {
+      if (space)
+        r += ' ';
+      r += c;
+      space = false;
+    }
+  }
+  const std::string prefix = "Additional information: ";
+  if (r.compare(0, prefix.size(), prefix) == 0)
+    r = r.substr(prefix.size());
+  return r;
+}
+
+std::string temporary_name(const std::string &name)
+{
+  const std::filesystem::path p(name);
+  return (p.parent_path() / ("." + p.filename().string() + ".tmp")).string();
+}
+
+void write_file_atomically(const std::string &filename, const std::string &content)
+{
+  const std::string temporary = temporary_name(filename);
+  const int fd =
+      ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  AssertThrow(fd >= 0,
+              ExcMessage("cannot write the output file " + filename + ": " +
+                         system_error_text(errno)));
+  const bool written = write_all(fd, content.data(), content.size());
+  const int error = errno;
+  const bool closed = ::close(fd) == 0;
+  if (!written || !closed || std::rename(temporary.c_str(), filename.c_str()) != 0)
+  {
+    const int e = !written ? error : errno;
+    ::unlink(temporary.c_str());
+    AssertThrow(false,
+                ExcMessage("cannot write the output file " + filename + ": " +
+                           system_error_text(e)));
+  }
+}
+
+RunDirectory::RunDirectory(const std::string &path, const std::string &parameters)
+    : dir(path), parameters(parameters)
+{
+}
+
+RunDirectory::~RunDirectory()
+{
+  if (manifest_fd >= 0)
+    ::close(manifest_fd);
+  if (lock_fd >= 0)
+    ::close(lock_fd); // releases the flock
+}
+
+void RunDirectory::begin()
+{
+  if (begun())
+    return;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  AssertThrow(
+      !ec, ExcMessage("cannot create the output directory " + dir + ": " + ec.message()));
+  const std::string lock_path = dir + "/" + lock_name;
+  const int fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  AssertThrow(fd >= 0,
+              ExcMessage("cannot create the lock file " + lock_path + ": " +
+                         system_error_text(errno)));
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno != ENOLCK && errno != EOPNOTSUPP)
+  {
+    // (a file system without locks, ENOLCK/EOPNOTSUPP: run without the lock)
+    const int error = errno;
+    ::close(fd);
+    AssertThrow(
+        false,
+        ExcMessage(error == EWOULDBLOCK
+                       ? "the output directory " + dir +
+                             " is in use by another hati run (it holds " + lock_path +
+                             "); wait for it to end or set another "
+                             "Output/Output directory"
+                       : "cannot lock " + lock_path + ": " + system_error_text(error)));
+  }
+  lock_fd = fd;
+
+  // delete exactly the files the previous run listed, nothing else
+  const std::string manifest = dir + "/" + manifest_name;
+  {
+    std::ifstream previous(manifest);
+    std::string name;
+    while (std::getline(previous, name))
+    {
+      if (name.empty() || name == "." || name == ".." ||
+          name.find('/') != std::string::npos || name == lock_name ||
+          name == manifest_name)
+        continue;
+      const std::string file = dir + "/" + name;
+      if (std::filesystem::is_regular_file(std::filesystem::symlink_status(file, ec)))
+        AssertThrow(std::filesystem::remove(file, ec) || !ec,
+                    ExcMessage("cannot delete " + file +
+                               " (a file of the previous run): " + ec.message()));
+    }
+  }
+  manifest_fd =
+      ::open(manifest.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0644);
+  AssertThrow(manifest_fd >= 0,
+              ExcMessage("cannot write " + manifest + ": " + system_error_text(errno)));
+
+  for (const std::string name : {"parameters.prm", "summary.json"})
+    create(temporary_name(name));
+  write_file_atomically(create("parameters.prm"), parameters);
+  write_file_atomically(create("summary.json"), "{\n  \"status\": \"running\"\n}\n");
+  install_stop_handlers();
+}
+
+std::string RunDirectory::create(const std::string &name)
+{
+  Assert(begun(), ExcInternalError());
+  if (registered.insert(name).second)
+  {
+    const std::string line = name + '\n';
+    AssertThrow(write_all(manifest_fd, line.data(), line.size()),
+                ExcMessage("cannot write " + dir + "/" + manifest_name + ": " +
+                           system_error_text(errno)));
+  }
+  return dir + "/" + name;
+}
+
+void RunDirectory::fail(const std::string &message) noexcept
+{
+  if (!begun())
+    return;
+  try
+  {
+    write_file_atomically(
+        dir + "/summary.json",
+        "{\n  \"status\": \"failed\",\n  \"message\": " + quoted(message) + "\n}\n");
+  }
+  catch (...)
+  {
+    // the message is printed on stderr anyway
+  }
+}
+} // namespace hati

@@ -1,0 +1,265 @@
+#!/usr/bin/python3
+"""Runs that never lose results (issue #7): fault tests of the output
+directory.
+- a run that fails before its first step leaves the previous results
+  byte for byte;
+- the next run deletes exactly the files of the previous run's manifest: a
+  user's solution-00042.vtu and notes.txt survive, stale snapshots go;
+- SIGTERM and SIGINT mid-run: exit 143 / 130, history.csv and energy.csv
+  with the same number of complete rows, "status": "interrupted" and
+  time_reached in summary.json;
+- SIGKILL at four instants: every CSV ends on a complete line with the
+  header's number of fields, solution.pvd parses and names complete VTU
+  files;
+- a second concurrent run into the same directory is refused in one line;
+- a run failing mid-run writes "status": "failed" with the message;
+- a closed standard output (SIGPIPE) does not stop the run;
+- a folder deleted during the run and a full disk (a 1 MiB tmpfs, if this
+  process may mount one; skipped with a message otherwise) end the run with
+  a non-zero exit and one line naming the file and the system error."""
+import hashlib
+import json
+import os
+import shutil
+import signal
+import subprocess
+import time
+import xml.etree.ElementTree as ET
+
+from hati_test import Context
+
+ctx = Context()
+bar = ctx.prm("bar_impact_1d.prm")
+# a run of minutes: 2e7 steps of 1 us, a history row every 10 steps
+LONG = ["Time integration/End time=20", "Output/History interval=1e-5",
+        "Output/Output interval=0"]
+
+
+def command(out, sets=(), prm=bar):
+    cmd = [ctx.hati, prm, "--set", "Output/Output directory=" + out]
+    for s in sets:
+        cmd += ["--set", s]
+    return cmd
+
+
+def run(out, sets=(), prm=bar):
+    return subprocess.run(command(out, sets, prm), capture_output=True, text=True,
+                          timeout=600)
+
+
+def start(out, sets=(), prm=bar):
+    return subprocess.Popen(command(out, sets, prm), stdout=subprocess.DEVNULL,
+                            stderr=subprocess.PIPE, text=True)
+
+
+def summary(out):
+    with open(os.path.join(out, "summary.json")) as f:
+        return json.load(f)
+
+
+def wait_running(out, rows=3, timeout=120):
+    """Wait until the run writes into out and history.csv has rows."""
+    t0 = time.time()
+    while time.time() - t0 < timeout:
+        try:
+            if summary(out).get("status") == "running":
+                with open(os.path.join(out, "history.csv")) as f:
+                    if sum(1 for _ in f) > rows:
+                        return True
+        except (OSError, ValueError):
+            pass
+        time.sleep(0.05)
+    return False
+
+
+def digest(out):
+    r = {}
+    for name in sorted(os.listdir(out)):
+        path = os.path.join(out, name)
+        if os.path.isfile(path):
+            with open(path, "rb") as f:
+                r[name] = hashlib.sha256(f.read()).hexdigest()
+    return r
+
+
+def csv_complete(path):
+    """(rows, whether every line is complete with the header's field count)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if not data.endswith(b"\n"):
+        return 0, False
+    lines = data.decode().splitlines()
+    n = lines[0].count(",")
+    return len(lines) - 1, all(l.count(",") == n for l in lines)
+
+
+def one_line_error(p, *fragments):
+    err = p.stderr.strip() if isinstance(p.stderr, str) else p.stderr.read().strip()
+    lines = err.splitlines()
+    return (p.returncode not in (0,) and p.returncode > 0 and len(lines) == 1
+            and lines[0].startswith("hati: error:") and all(f in err for f in fragments)), err
+
+
+# --- a failed run keeps the previous results ---
+out = os.path.join(ctx.work, "keep")
+shutil.rmtree(out, ignore_errors=True)
+p = run(out, ["Output/Output interval=1e-4"])  # 21 snapshots, 00000 to 00020
+ctx.check_true("a first run completes", p.returncode == 0, p.stderr)
+before = digest(out)
+ctx.check_true("it wrote snapshots and a manifest",
+               "solution-00020.vtu" in before and ".hati-manifest" in before)
+p = run(out, ["Time integration/Time step=3e-6"])
+ok, err = one_line_error(p, "stability limit")
+ctx.check_true("a run refused before its first step fails in one line", ok, err)
+ctx.check_true("... and leaves every previous file as it was", digest(out) == before,
+               "(%d files)" % len(before))
+
+# --- only the files of the previous run are deleted ---
+for name, text in (("solution-00042.vtu", "user's own file"), ("notes.txt", "notes")):
+    with open(os.path.join(out, name), "w") as f:
+        f.write(text)
+p = run(out, ["Output/Output interval=0"])
+ctx.check_true("a second run completes", p.returncode == 0, p.stderr)
+with open(os.path.join(out, "solution-00042.vtu")) as f:
+    ctx.check_true("a user's solution-00042.vtu survives", f.read() == "user's own file")
+ctx.check_true("a user's notes.txt survives", os.path.exists(os.path.join(out, "notes.txt")))
+left = [n for n in os.listdir(out) if n.startswith("solution")]
+ctx.check_true("the previous run's snapshots and solution.pvd are deleted",
+               left == ["solution-00042.vtu"], str(sorted(left)))
+ctx.check_true("summary.json says completed", summary(out).get("status") == "completed")
+
+# --- SIGTERM / SIGINT: complete, equal CSVs and "interrupted" ---
+for sig, code in ((signal.SIGTERM, 143), (signal.SIGINT, 130)):
+    name = signal.Signals(sig).name
+    out = os.path.join(ctx.work, name.lower())
+    shutil.rmtree(out, ignore_errors=True)
+    proc = start(out, LONG)
+    running = wait_running(out, rows=50)
+    time.sleep(0.3)
+    proc.send_signal(sig)
+    try:
+        proc.wait(timeout=30)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.wait()
+    err = proc.stderr.read().strip()
+    ctx.check_true("%s: exit %d" % (name, code), running and proc.returncode == code,
+                   "(exit %s) %s" % (proc.returncode, err))
+    ctx.check_true("%s: one line on stderr saying interrupted" % name,
+                   len(err.splitlines()) == 1 and "interrupted" in err, err)
+    nh, okh = csv_complete(os.path.join(out, "history.csv"))
+    ne, oke = csv_complete(os.path.join(out, "energy.csv"))
+    ctx.check_true("%s: history.csv and energy.csv complete, %d and %d rows" % (name, nh, ne),
+                   okh and oke and nh == ne and nh > 50)
+    s = summary(out)
+    ctx.check_true("%s: summary.json status interrupted" % name,
+                   s.get("status") == "interrupted", str(s.get("status")))
+    if "time_reached" in s:
+        with open(os.path.join(out, "history.csv")) as f:
+            last = float(f.read().splitlines()[-1].split(",")[0])
+        # rows every 1e-5 s: the last row is at most one interval before
+        ctx.check("%s: time_reached - last history time (s)" % name,
+                  s["time_reached"] - last, 0.5e-5, abs_tol=0.5e-5 + 1e-12)
+    else:
+        ctx.check_true("%s: summary.json has time_reached" % name, False)
+
+# --- SIGKILL: complete lines and a valid PVD at any instant ---
+out = os.path.join(ctx.work, "sigkill")
+for attempt, delay in enumerate((0.0, 0.37, 0.81, 1.53)):
+    shutil.rmtree(out, ignore_errors=True)
+    proc = start(out, ["Time integration/End time=20", "Output/History interval=0",
+                       "Output/Output interval=1e-5"])
+    wait_running(out, rows=1)
+    time.sleep(delay)
+    proc.kill()
+    proc.wait()
+    bad = []
+    for name in ("history.csv", "contacts.csv", "energy.csv"):
+        n, ok = csv_complete(os.path.join(out, name))
+        if not ok:
+            bad.append(name)
+    try:
+        root = ET.parse(os.path.join(out, "solution.pvd")).getroot()
+        files = [d.get("file") for d in root.iter("DataSet")]
+        for f in files:
+            ET.parse(os.path.join(out, f))  # complete XML
+        pvd = "%d snapshots" % len(files)
+    except (OSError, ET.ParseError) as e:
+        bad.append("solution.pvd: %s" % e)
+        pvd = ""
+    ctx.check_true("SIGKILL %d (after %.2f s): CSVs on complete lines, valid PVD (%s)"
+                   % (attempt + 1, delay, pvd), not bad, str(bad))
+
+# --- a second concurrent run is refused ---
+out = os.path.join(ctx.work, "concurrent")
+shutil.rmtree(out, ignore_errors=True)
+first = start(out, LONG)
+wait_running(out)
+p = run(out, LONG)
+ok, err = one_line_error(p, "in use by another hati run", out)
+ctx.check_true("a second run into the same directory is refused in one line", ok, err)
+ctx.check_true("... and the first run's summary.json still says running",
+               summary(out).get("status") == "running")
+first.send_signal(signal.SIGTERM)
+first.wait(timeout=30)
+ctx.check_true("the first run then stops cleanly", first.returncode == 143,
+               "(exit %s)" % first.returncode)
+
+# --- a failure mid-run: "status": "failed" with the message ---
+out = os.path.join(ctx.work, "failed")
+shutil.rmtree(out, ignore_errors=True)
+p = run(out, ["Time integration/Method=event-driven",
+              "Time integration/Maximum number of events=5"], prm=ctx.prm("bouncing_ball.prm"))
+ok, err = one_line_error(p, "Maximum number of events")
+s = summary(out)
+ctx.check_true("a run failing mid-run: one line", ok, err)
+ctx.check_true("... summary.json says failed, with the message",
+               s.get("status") == "failed" and "Maximum number of events" in s.get("message", ""),
+               str(s))
+
+# --- SIGPIPE: a closed standard output does not stop the run ---
+out = os.path.join(ctx.work, "sigpipe")
+shutil.rmtree(out, ignore_errors=True)
+proc = subprocess.Popen(command(out, ["Output/Output interval=0"]), stdout=subprocess.PIPE,
+                        stderr=subprocess.DEVNULL)
+proc.stdout.readline()
+proc.stdout.close()
+proc.wait(timeout=600)
+ctx.check_true("standard output closed after one line: the run completes",
+               proc.returncode == 0 and summary(out).get("status") == "completed",
+               "(exit %s)" % proc.returncode)
+
+# --- the output folder vanishes during the run ---
+out = os.path.join(ctx.work, "vanished")
+shutil.rmtree(out, ignore_errors=True)
+proc = start(out, LONG)
+wait_running(out)
+shutil.rmtree(out)
+try:
+    proc.wait(timeout=60)
+except subprocess.TimeoutExpired:
+    proc.kill()
+    proc.wait()
+ok, err = one_line_error(proc, "vanished", out)
+ctx.check_true("a deleted output folder ends the run with one line", ok,
+               "(exit %s) %s" % (proc.returncode, err))
+
+# --- a full disk ---
+disk = os.path.join(ctx.work, "tmpfs")
+os.makedirs(disk, exist_ok=True)
+subprocess.run(["umount", disk], capture_output=True)
+mount = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=1m", "tmpfs", disk],
+                       capture_output=True, text=True)
+if mount.returncode != 0:
+    print("skip the full-disk test: cannot mount a tmpfs here (%s)" % mount.stderr.strip())
+else:
+    try:
+        out = os.path.join(disk, "out")
+        p = run(out, ["Time integration/End time=0.2", "Output/History interval=0",
+                      "Output/Output interval=0"])
+        ok, err = one_line_error(p, "No space left on device", out)
+        ctx.check_true("a full disk: non-zero exit, one line naming the file and the error",
+                       ok, "(exit %d) %s" % (p.returncode, err))
+    finally:
+        subprocess.run(["umount", disk], capture_output=True)
+ctx.finish()
