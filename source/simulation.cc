@@ -484,8 +484,11 @@ void Simulation::run_transient(Integrator &integrator,
     const auto wheels = model->wheel_contacts();
     if (!wheels.empty())
       summary.emplace_back("wheels", statistics.json(wheels));
-    std::ofstream episodes(output_directory + "/contact_episodes.csv");
+    const std::string episodes_file = run_directory->create("contact_episodes.csv");
+    std::ofstream episodes(episodes_file);
     statistics.write_episodes(episodes);
+    episodes.close();
+    AssertThrow(episodes, ExcMessage("cannot write " + episodes_file));
     statistics.print_table(std::cout);
   }
   write_summary(output_directory + "/summary.json", summary);
