@@ -87,10 +87,10 @@ Accelerogram Accelerogram::read(const std::string &filename,
       if (!s)
         npts = -1;
     }
-    AssertThrow(npts > 0 && dt > 0.,
+    AssertThrow(npts > 0 && dt > 0. && std::isfinite(dt),
                 ExcMessage(where(filename, 4) +
                            "expected 'NPTS= n, DT= dt SEC' or 'n dt NPTS, DT' with n > 0 "
-                           "and dt > 0, got '" +
+                           "and finite dt > 0, got '" +
                            line + "'"));
     while (std::getline(in, line))
     {

@@ -13,6 +13,9 @@ namespace
 {
 const std::string where = "Model/Bridge crane/";
 
+/** Largest number of elements of one member (-), as for Model/Type = frame. */
+constexpr double max_elements_per_member = 1e7;
+
 /** Height above the girder axes at which the trolley frame is drawn (m). */
 constexpr double trolley_height = 0.5;
 
@@ -270,6 +273,19 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   z << where << "Explicit zone length: " << explicit_zone_length
     << " m is longer than a girder (Span = " << span << " m)";
   AssertThrow(explicit_zone_length <= span, ExcMessage(z.str()));
+  // the longest member (a girder or an end carriage) divided by the shortest
+  // element: at most max_elements_per_member elements (an element length in
+  // the wrong unit would otherwise exhaust the memory or overflow the count)
+  const double longest = std::max(span, end_carriage_wheelbase),
+               shortest = std::min(element_length, explicit_element_length);
+  if (!(longest / shortest <= max_elements_per_member))
+  {
+    std::ostringstream e;
+    e << where << "Element length, Explicit element length: " << shortest
+      << " m gives more than " << max_elements_per_member
+      << " elements along a member of " << longest << " m; use longer elements";
+    AssertThrow(false, ExcMessage(e.str()));
+  }
   // check the sections now (one-line errors naming the entry)
   section_area(girder_section, "Girder section");
   section_area(end_carriage_section, "End carriage section");

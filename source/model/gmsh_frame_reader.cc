@@ -1,10 +1,10 @@
 #include <deal.II/base/exceptions.h>
-#include <deal.II/base/utilities.h>
 
 #include <hati/model/gmsh_frame_reader.h>
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -12,6 +12,11 @@ namespace hati
 {
 namespace
 {
+/** Largest node tag, element count or entry count accepted (-). */
+constexpr long max_count = 1000000000000L;
+/** Largest physical or entity tag (they are `int` in Gmsh). */
+constexpr long max_tag = std::numeric_limits<int>::max();
+
 /** Line-by-line reader that knows where it is, for the error messages. */
 class Reader
 {
@@ -25,10 +30,7 @@ public:
   std::string line()
   {
     std::string l;
-    AssertThrow(std::getline(in, l),
-                ExcMessage(where() +
-                           "the file ends early: it is truncated (an incomplete copy or "
-                           "export?)"));
+    AssertThrow(std::getline(in, l), ExcMessage(where() + "unexpected end of file"));
     ++number;
     if (!l.empty() && l.back() == '\r')
       l.pop_back();
@@ -61,16 +63,20 @@ public:
   }
 
   /**
-   * Check that @p x, read as the number of @p what, is a count: an integer
-   * from 0 to 1e9 (a negative or huge count means a corrupt file).
+   * @p x (a number read from the current line) as an integer from @p lo to
+   * @p hi; an error naming the line and @p what otherwise (a fraction, a
+   * value out of range or not finite).
    */
-  long count(const double x, const std::string &what) const
+  long
+  integer(const double x, const long lo, const long hi, const std::string &what) const
   {
-    AssertThrow(x >= 0. && x <= 1e9 && x == std::floor(x),
-                ExcMessage(where() + "invalid number of " + what + " " +
-                           Utilities::to_string(x) +
-                           " (negative, fractional or above 1e9: the file is corrupt "
-                           "or truncated)"));
+    if (!(x == std::floor(x) && x >= double(lo) && x <= double(hi)))
+    {
+      std::ostringstream s;
+      s << where() << what << " must be an integer from " << lo << " to " << hi
+        << ", got " << x;
+      AssertThrow(false, ExcMessage(s.str()));
+    }
     return static_cast<long>(x);
   }
 
@@ -111,7 +117,8 @@ GmshFrame read_gmsh_frame(const std::string &filename)
     }
     else if (l == "$PhysicalNames")
     {
-      const long n = r.count(r.numbers(1)[0], "physical names");
+      const long n =
+          r.integer(r.numbers(1)[0], 0, max_count, "the number of physical names");
       for (long i = 0; i < n; ++i)
       {
         const std::string t = r.line();
@@ -132,41 +139,49 @@ GmshFrame read_gmsh_frame(const std::string &filename)
     {
       const auto counts = r.numbers(4);
       for (unsigned int dim = 0; dim < 4; ++dim)
-        for (long i = 0; i < r.count(counts[dim], "entities"); ++i)
+      {
+        const long n = r.integer(counts[dim], 0, max_count, "the number of entities");
+        for (long i = 0; i < n; ++i)
         {
           const auto v = r.numbers(dim == 0 ? 5 : 8);
           // point: tag x y z nphys phys...; others: tag 6 bounds nphys phys...
-          const unsigned int first = dim == 0 ? 4 : 7;
-          const unsigned int np = v[first];
+          const std::size_t first = dim == 0 ? 4 : 7;
+          const int tag = r.integer(v[0], -max_tag, max_tag, "the entity tag");
+          const long np =
+              r.integer(v[first], 0, max_count, "the number of physical tags");
           AssertThrow(v.size() >= first + 1 + np,
                       ExcMessage(r.where() + "truncated entity line"));
-          for (unsigned int k = 0; k < np; ++k)
-            entity_physicals[dim][int(v[0])].push_back(int(v[first + 1 + k]));
+          for (long k = 0; k < np; ++k)
+            entity_physicals[dim][tag].push_back(
+                r.integer(v[first + 1 + k], -max_tag, max_tag, "a physical tag"));
         }
+      }
     }
     else if (l == "$Nodes")
     {
       if (version < 4.)
       {
-        const long n = r.count(r.numbers(1)[0], "nodes");
+        const long n = r.integer(r.numbers(1)[0], 0, max_count, "the number of nodes");
         for (long i = 0; i < n; ++i)
         {
           const auto v = r.numbers(4);
-          node_coordinates[long(v[0])] = Point<3>(v[1], v[2], v[3]);
+          node_coordinates[r.integer(v[0], 0, max_count, "the node tag")] =
+              Point<3>(v[1], v[2], v[3]);
         }
       }
       else
       {
         const auto h = r.numbers(4);
-        for (long b = 0; b < r.count(h[0], "node blocks"); ++b)
+        const long n_blocks = r.integer(h[0], 0, max_count, "the number of node blocks");
+        for (long b = 0; b < n_blocks; ++b)
         {
           const auto block = r.numbers(4); // dim entity parametric n
-          const long n = r.count(block[3], "nodes in a block");
           AssertThrow(block[2] == 0,
                       ExcMessage(r.where() + "parametric nodes are not supported"));
+          const long n = r.integer(block[3], 0, max_count, "the number of nodes");
           std::vector<long> tags;
           for (long i = 0; i < n; ++i)
-            tags.push_back(long(r.numbers(1)[0]));
+            tags.push_back(r.integer(r.numbers(1)[0], 0, max_count, "the node tag"));
           for (long i = 0; i < n; ++i)
           {
             const auto x = r.numbers(3);
@@ -180,42 +195,49 @@ GmshFrame read_gmsh_frame(const std::string &filename)
       auto add =
           [&](const int type, const std::vector<int> &physicals, const double *nodes)
       {
+        const long a = r.integer(nodes[0], 0, max_count, "the element's node tag");
+        const long b =
+            type == 1 ? r.integer(nodes[1], 0, max_count, "the element's node tag") : a;
         for (const int p : physicals)
         {
           if (type == 1)
-            lines[p].emplace_back(long(nodes[0]), long(nodes[1]));
+            lines[p].emplace_back(a, b);
           else if (type == 15)
-            named_node_tag[long(nodes[0])] = p;
+            named_node_tag[a] = p;
         }
       };
       if (version < 4.)
       {
-        const long n = r.count(r.numbers(1)[0], "elements");
+        const long n = r.integer(r.numbers(1)[0], 0, max_count, "the number of elements");
         for (long i = 0; i < n; ++i)
         {
           const auto v = r.numbers(3); // id type ntags tags... nodes...
-          const int type = v[1];
-          const unsigned int ntags = v[2];
-          const unsigned int nn = type == 1 ? 2 : (type == 15 ? 1 : 0);
+          const int type = r.integer(v[1], -max_tag, max_tag, "the element type");
+          const long ntags = r.integer(v[2], 0, max_count, "the number of tags");
+          const std::size_t nn = type == 1 ? 2 : (type == 15 ? 1 : 0);
           AssertThrow(v.size() >= 3 + ntags + nn,
                       ExcMessage(r.where() + "truncated element"));
           if (nn == 0 || ntags == 0 || v[3] == 0) // no physical group
             continue;
-          add(type, {int(v[3])}, &v[3 + ntags]);
+          add(type,
+              {int(r.integer(v[3], -max_tag, max_tag, "the physical tag"))},
+              &v[3 + ntags]);
         }
       }
       else
       {
         const auto h = r.numbers(4);
-        for (long b = 0; b < r.count(h[0], "element blocks"); ++b)
+        const long n_blocks =
+            r.integer(h[0], 0, max_count, "the number of element blocks");
+        for (long b = 0; b < n_blocks; ++b)
         {
           const auto block = r.numbers(4); // dim entity type n
-          const int dim = block[0], entity = block[1], type = block[2];
-          AssertThrow(dim >= 0 && dim < 4,
-                      ExcMessage(r.where() + "invalid entity dimension " +
-                                 Utilities::to_string(block[0])));
+          const int dim = r.integer(block[0], 0, 3, "the entity dimension"),
+                    entity = r.integer(block[1], -max_tag, max_tag, "the entity tag"),
+                    type = r.integer(block[2], -max_tag, max_tag, "the element type");
+          const long n = r.integer(block[3], 0, max_count, "the number of elements");
           const auto &physicals = entity_physicals[dim][entity];
-          for (long i = 0; i < r.count(block[3], "elements in a block"); ++i)
+          for (long i = 0; i < n; ++i)
           {
             const auto v = r.numbers(2);
             if ((type == 1 && v.size() >= 3) || (type == 15 && v.size() >= 2))
