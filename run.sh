@@ -1,14 +1,26 @@
 #!/usr/bin/env bash
 # ./run.sh [file.prm] [hati options]: set up (Debian packages, Release build)
-# and run a parameter file, by default the main example. For the bouncing
-# ball it also draws bouncing_ball.png (numerical vs analytical solution).
+# and run a parameter file, by default the main example: the bridge crane
+# under the Northridge earthquake with HATI (parameter_files/bridge_crane_hati.prm,
+# about a minute on 2 cores). For a crane it then draws crane.png (trolley
+# wheel Z displacements, paper Fig. 8, and the wheel forces); for the
+# bouncing ball bouncing_ball.png (numerical vs analytical solution).
 set -euo pipefail
 cd "$(dirname "$0")"
 ./scripts/setup.sh hati
-prm="${1:-parameter_files/bouncing_ball.prm}"
+prm="${1:-parameter_files/bridge_crane_hati.prm}"
 [ $# -gt 0 ] && shift
 ./build/hati "$prm" "$@"
 name=$(basename "$prm" .prm)
+out="output/$name"
+for a in "$@"; do
+  case "$a" in Output/Output\ directory=*) out="${a#Output/Output directory=}" ;; esac
+done
 if [ "$name" = bouncing_ball ]; then
-  /usr/bin/python3 scripts/plot_bouncing_ball.py "output/$name" bouncing_ball.png
+  /usr/bin/python3 scripts/plot_bouncing_ball.py "$out" bouncing_ball.png
+elif grep -q "bridge crane" "$prm" && [ -f "$out/history.csv" ] && [ -f "$out/contacts.csv" ]; then
+  /usr/bin/python3 scripts/plot_crane.py "$out"
+  echo "outputs in $out/: solution.pvd (ParaView: displacement, contact_status,"
+  echo "  subdomain), history.csv, contacts.csv, contact_episodes.csv,"
+  echo "  section_forces.csv, energy.csv, summary.json, crane.png"
 fi

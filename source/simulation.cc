@@ -491,6 +491,7 @@ void Simulation::run_transient(Integrator &integrator,
     AssertThrow(episodes, ExcMessage("cannot write " + episodes_file));
     statistics.print_table(std::cout);
   }
+  std::cout << model->results_table();
   write_summary(output_directory + "/summary.json", summary);
   std::cout << "  done: " << n_steps << " steps in " << wall << " s (output "
             << output_clock.seconds() << " s in " << output_clock.calls() << " calls); ";

@@ -8,11 +8,12 @@ supports (K alone is singular along Z).
   supported beam (statically determinate, so exact): sum = (W + P) g to
   1e-8 relative, the lever rule for the point mass to 1e-8;
 - Initial state = static, CD-Lagrange: the same forces in summary.json, and
-  the beam starts at rest on its supports: the mass node moves by less than
-  2 % of its static deflection, a residual of O(h^2) (the ratio of two
-  meshes is checked) from the consistent static against the lumped
-  explicit gravity load (a start from the undeformed state swings by about
-  twice the static deflection, also checked), the
+  the beam starts at rest on its supports: the static state is solved under
+  the lumped gravity load CD-Lagrange applies, so the mass node moves by
+  less than 1e-3 of its static deflection; that state differs from the
+  consistent static one by O(h^2) (the ratio of two meshes is checked)
+  (a start from the undeformed state swings by about twice the static
+  deflection, also checked), the
   time-averaged contact forces are the static ones to 1 %;
 - a contact that would pull (the supports at x = 0 and x = a, with the
   weight beyond) is refused with a one-line error naming it; contacts with a
@@ -50,19 +51,25 @@ ctx.check("transient: static right force in summary (N)", s["static_contact_forc
           R_right, rel=1e-8)
 h = read_csv(out + "/history.csv")
 c = read_csv(out + "/contacts.csv")
-ctx.check("transient: initial u_m = static deflection (m)", h["muz"][0], u_static, rel=1e-10)
+# the transient (CD-Lagrange) starts from the static state under the load it
+# applies, gravity with the lumped mass M_lumped r g (free fall exact), whose
+# element moments differ from the consistent M r g of the static analysis
+# by O(h^2): the initial deflection differs from the static one by O(h^2)
+# (0.5 % here, 4 times less on a mesh twice as fine) and the beam then stays
+# at rest (before, it swung by that difference about the static state)
+ctx.check("transient: initial u_m = static deflection (m), O(h^2)", h["muz"][0], u_static,
+          rel=0.01)
 swing = np.max(np.abs(h["muz"] - h["muz"][0]))
-# the static state balances the consistent gravity load M r g; CD-Lagrange
-# loads the lumped one M_lumped r g (free fall exact), whose element moments
-# differ by O(h^2): a residual swing of O(h^2) (1 % here), 4 times smaller
-# on a mesh twice as fine
-ctx.check("transient: max |u_m(t) - u_m(0)| / |u_static|", swing / abs(u_static), 0.0, abs_tol=0.02)
-out, _ = ctx.run(prm, "transient_fine",
-                 ["Model/Frame/Members=left_part: a, m, rect, steel, 4; "
-                  "right_part: m, b, rect, steel, 12", "Time integration/Time step=2e-6"])
+ctx.check("transient: max |u_m(t) - u_m(0)| / |u_static| (at rest)", swing / abs(u_static), 0.0,
+          abs_tol=1e-3)
+fine = ["Model/Frame/Members=left_part: a, m, rect, steel, 4; "
+        "right_part: m, b, rect, steel, 12"]
+out, _ = ctx.run(prm, "transient_fine", fine + ["Time integration/Time step=2e-6"])
 hf = read_csv(out + "/history.csv")
-swing_fine = np.max(np.abs(hf["muz"] - hf["muz"][0]))
-ctx.check("transient: residual swing ratio h / (h/2), O(h^2)", swing / swing_fine, 4.0, abs_tol=0.5)
+out, _ = ctx.run(prm, "static_fine", fine + ["Analysis/Type=static"])
+u_static_fine = read_csv(out + "/history.csv")["muz"][0]
+ctx.check("transient: initial deflection difference ratio h / (h/2), O(h^2)",
+          abs(h["muz"][0] - u_static) / abs(hf["muz"][0] - u_static_fine), 4.0, abs_tol=0.5)
 for name, R in (("left", R_left), ("right", R_right)):
     mean = c["impulse"][c["contact"] == name].sum() / T
     ctx.check("transient: time-averaged %s force (N)" % name, mean, R, rel=0.01)

@@ -75,33 +75,36 @@ double section_area(const std::string &text, const std::string &entry)
 
 void BridgeCrane::Parameters::declare_parameters(ParameterHandler &prm)
 {
-  // defaults: a 20 t, 20 m span double-girder crane, /work/shared/notes/crane-data.md
+  // defaults: a 20 t, 20 m span double-girder crane, doc/crane_data.md
   prm.declare_entry("Span",
                     "20",
                     Patterns::Double(),
                     "Distance between the runway rails (m, along Y), > 0. Default: the "
-                    "20 t / 20 m reference crane (crane-data.md section 0; spans "
+                    "20 t / 20 m reference crane (doc/crane_data.md section 0; spans "
                     "10.5-31.5 m in 3 m steps).");
-  prm.declare_entry("Girder spacing",
-                    "2",
-                    Patterns::Double(),
-                    "Distance between the two girders = trolley rail gauge (m, along X), "
-                    "> 0 and < End carriage wheelbase. Default 2 m: trolley gauges are "
-                    "1.4-2.5 m, classic 20/5 t crabs about 2 m (crane-data.md section 4, "
-                    "estimate).");
-  prm.declare_entry("End carriage wheelbase",
-                    "3.5",
-                    Patterns::Double(),
-                    "Distance between the two wheels of an end carriage (m, along X), > "
-                    "Girder spacing. Default 3.5 m: anti-skew rule wheelbase >= span/7 "
-                    "(2.9 m) and the IS 800 25 t / 16 m example (crane-data.md section "
-                    "3).");
-  prm.declare_entry("Trolley wheelbase",
-                    "1.8",
-                    Patterns::Double(),
-                    "Distance between the trolley's two wheels on one girder (m, along "
-                    "Y), > 0. Default 1.8 m (range 1.2-2.5 m, crane-data.md section 4, "
-                    "estimate).");
+  prm.declare_entry(
+      "Girder spacing",
+      "2",
+      Patterns::Double(),
+      "Distance between the two girders = trolley rail gauge (m, along X), "
+      "> 0 and < End carriage wheelbase. Default 2 m: trolley gauges are "
+      "1.4-2.5 m, classic 20/5 t crabs about 2 m (doc/crane_data.md section 4, "
+      "estimate).");
+  prm.declare_entry(
+      "End carriage wheelbase",
+      "3.5",
+      Patterns::Double(),
+      "Distance between the two wheels of an end carriage (m, along X), > "
+      "Girder spacing. Default 3.5 m: anti-skew rule wheelbase >= span/7 "
+      "(2.9 m) and the IS 800 25 t / 16 m example (doc/crane_data.md section "
+      "3).");
+  prm.declare_entry(
+      "Trolley wheelbase",
+      "1.8",
+      Patterns::Double(),
+      "Distance between the trolley's two wheels on one girder (m, along "
+      "Y), > 0. Default 1.8 m (range 1.2-2.5 m, doc/crane_data.md section 4, "
+      "estimate).");
   prm.declare_entry("Trolley position",
                     "0.5",
                     Patterns::Double(),
@@ -115,14 +118,15 @@ void BridgeCrane::Parameters::declare_parameters(ParameterHandler &prm)
                     "Section of each girder, Model/Frame/Sections syntax after the name "
                     "(m). Default: welded box 1.10 m deep (L/h = 18), flanges 460 x 13 "
                     "mm, webs 6 mm: A = 248 cm^2, I_vertical = 4.8e-3 m^4 "
-                    "(crane-data.md section 1, estimate meeting the L/800 deflection "
+                    "(doc/crane_data.md section 1, estimate meeting the L/800 deflection "
                     "limit).");
-  prm.declare_entry("End carriage section",
-                    "box, 0.3, 0.5, 0.008, 0.012",
-                    Patterns::Anything(),
-                    "Section of each end carriage, Model/Frame/Sections syntax (m). "
-                    "Default: box 0.5 m high, 0.3 m wide, 8/12 mm plates (crane-data.md "
-                    "section 3, estimate).");
+  prm.declare_entry(
+      "End carriage section",
+      "box, 0.3, 0.5, 0.008, 0.012",
+      Patterns::Anything(),
+      "Section of each end carriage, Model/Frame/Sections syntax (m). "
+      "Default: box 0.5 m high, 0.3 m wide, 8/12 mm plates (doc/crane_data.md "
+      "section 3, estimate).");
   prm.declare_entry("Trolley section",
                     "box, 0.2, 0.3, 0.008, 0.010",
                     Patterns::Anything(),
@@ -134,34 +138,35 @@ void BridgeCrane::Parameters::declare_parameters(ParameterHandler &prm)
                     Patterns::List(Patterns::Double(), 3, 3, ","),
                     "E (Pa), nu (-), rho (kg/m^3) of every member. Default: structural "
                     "steel.");
-  prm.declare_entry("Rail mass per metre",
-                    "25",
-                    Patterns::Double(),
-                    "Mass of the trolley rail on each girder (kg/m), >= 0, lumped on the "
-                    "girder nodes. Default 25 kg/m (light rail or 50 x 50 bar, 20-40 "
-                    "kg/m, crane-data.md section 2). Diaphragms, walkway, drives (about "
-                    "+50 % of the plates) are not in the default model: add them here "
-                    "or to rho.");
+  prm.declare_entry(
+      "Rail mass per metre",
+      "25",
+      Patterns::Double(),
+      "Mass of the trolley rail on each girder (kg/m), >= 0, lumped on the "
+      "girder nodes. Default 25 kg/m (light rail or 50 x 50 bar, 20-40 "
+      "kg/m, doc/crane_data.md section 2). Diaphragms, walkway, drives (about "
+      "+50 % of the plates) are not in the default model: add them here "
+      "or to rho.");
   prm.declare_entry(
       "Trolley mass",
       "3000",
       Patterns::Double(),
       "Trolley (crab) machinery (kg), >= 0, a quarter on each trolley wheel "
       "node. Default 3 t: European compact double-rail crab for 20 t, 2-4 t "
-      "(crane-data.md section 4; a classic open-winch crab is 6-8 t).");
+      "(doc/crane_data.md section 4; a classic open-winch crab is 6-8 t).");
   prm.declare_entry("Hoist mass",
                     "20350",
                     Patterns::Double(),
                     "Lifted load and hook block (kg), >= 0, rigidly at the trolley's "
                     "centre (no rope pendulum). Default: the rated 20 t plus a 0.35 t "
-                    "hook block (crane-data.md section 0).");
+                    "hook block (doc/crane_data.md section 0).");
   prm.declare_entry("Flange clearance",
                     "0.02",
                     Patterns::Double(),
                     "Total lateral play of a wheel between its flanges (m), >= 0, for "
                     "the crane and the trolley wheels (two-sided contacts, +-c/2). "
                     "Default 20 mm: CMAA practice 19-25 mm for bridge wheels, 15-30 mm "
-                    "in Europe (crane-data.md section 5).");
+                    "in Europe (doc/crane_data.md section 5).");
   prm.declare_entry("Wheel restitution",
                     "0",
                     Patterns::Double(),
@@ -508,6 +513,7 @@ Frame::Parameters BridgeCrane::Parameters::frame() const
       contact(tw + "_travel", wn, rn, ey, 0., true);
   }
   f.monitor_nodes = {"hoist", "tw1", "tw2", "tw3", "tw4", "cw1", "cw2", "cw3", "cw4"};
+  f.section_force_members = {"girder_1", "girder_2"};
   return f;
 }
 
@@ -573,6 +579,8 @@ std::vector<std::pair<std::string, std::string>> BridgeCrane::summary_entries(
   std::vector<std::pair<std::string, std::string>> entries = {
       {"mass_bridge", json_number(crane.mass_bridge())},
       {"mass_trolley", json_number(crane.mass_trolley())}};
+  for (const auto &e : Frame::summary_entries(static_contact_forces))
+    entries.push_back(e);
   if (!static_contact_forces.empty())
   {
     std::ostringstream s;

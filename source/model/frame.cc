@@ -8,6 +8,7 @@
 #include <hati/model/frame.h>
 #include <hati/model/gmsh_frame_reader.h>
 #include <hati/model/memory_estimate.h>
+#include <hati/output/output_writer.h>
 
 #include <cmath>
 #include <iomanip>
@@ -1000,6 +1001,14 @@ void Frame::write_section_forces(std::ostream &out,
         const auto s = cell_section_forces(cell, u);
         for (unsigned int end = 0; end < 2; ++end)
         {
+          // envelope of N, My, Mz (components 0, 4, 5 of each end)
+          const unsigned int component[3] = {0, 4, 5};
+          for (unsigned int e = 0; e < 3; ++e)
+          {
+            const double v = std::abs(s[6 * end + component[e]]);
+            if (v > envelope[e].value)
+              envelope[e] = {v, cell.position + end * cell.length, time, name};
+          }
           out << time << ',' << name << ',' << cell.element << ','
               << cell.position + end * cell.length;
           for (unsigned int k = 0; k < 6; ++k)
@@ -1007,6 +1016,38 @@ void Frame::write_section_forces(std::ostream &out,
           out << '\n';
         }
       }
+}
+
+std::vector<std::pair<std::string, std::string>>
+Frame::summary_entries(const std::map<std::string, double> &) const
+{
+  if (parameters.section_force_members.empty())
+    return {};
+  std::ostringstream s;
+  const char *names[3] = {"N", "My", "Mz"};
+  s << '{';
+  for (unsigned int e = 0; e < 3; ++e)
+    s << (e ? ", " : "") << '"' << names[e]
+      << "\": {\"max_abs\": " << json_number(envelope[e].value)
+      << ", \"member\": " << json_string(envelope[e].member)
+      << ", \"x\": " << json_number(envelope[e].x)
+      << ", \"time\": " << json_number(envelope[e].time) << '}';
+  s << '}';
+  return {{"section_force_envelope", s.str()}};
+}
+
+std::string Frame::results_table() const
+{
+  if (parameters.section_force_members.empty())
+    return "";
+  std::ostringstream s;
+  const char *names[3] = {"max |N|  (N)  ", "max |My| (N m)", "max |Mz| (N m)"};
+  s << "  section forces of the members written to section_forces.csv (at its rows):\n";
+  for (unsigned int e = 0; e < 3; ++e)
+    s << "    " << names[e] << std::setw(16) << envelope[e].value << "  in "
+      << envelope[e].member << " at x = " << envelope[e].x
+      << " m, t = " << envelope[e].time << " s\n";
+  return s.str();
 }
 
 std::string Frame::description() const

@@ -119,11 +119,27 @@ public:
   std::vector<Point<3>> cell_centres() const override;
   std::vector<std::string> cell_members() const override;
   std::string section_forces_header() const override;
+  /**
+   * `section_force_envelope`: the largest |N| (N), |My|, |Mz| (N m) among
+   * the section forces written so far, with the member, the position along
+   * it (m) and the time (s).
+   */
+  std::vector<std::pair<std::string, std::string>> summary_entries(
+      const std::map<std::string, double> &static_contact_forces) const override;
+  /** The envelope of the section forces as table lines. */
+  std::string results_table() const override;
   void write_section_forces(std::ostream &out,
                             const double time,
                             const Vector<double> &U) const override;
 
 private:
+  /** Envelope of the written section forces: N, My, Mz (write_section_forces()). */
+  struct EnvelopeEntry
+  {
+    double value = 0., x = 0., time = 0.;
+    std::string member;
+  };
+  mutable std::array<EnvelopeEntry, 3> envelope;
   /** Per active cell: its member, its index along the member, its rotation. */
   struct CellInfo
   {

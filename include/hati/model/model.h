@@ -160,6 +160,12 @@ public:
   virtual double default_damping_ratio() const { return 0.; }
 
   /**
+   * Lines of results for the table printed at the end of a transient run
+   * (e.g. the envelope of section forces); empty by default.
+   */
+  virtual std::string results_table() const { return ""; }
+
+  /**
    * Header of `section_forces.csv`, or an empty string if the model writes
    * no section forces (the default).
    */

@@ -87,10 +87,15 @@ private:
  *
  * The interface work (G5) is each side's own discrete work of the
  * interface forces, so that Energies::total() is constant to round-off.
- * Contacts within reach of the ramp response (its nonzero DoFs) that are
- * active in a macro step make the coupling redo the micro steps with the
- * now-known multipliers and correct Lambda_{n+m} until the macro-end
- * continuity holds (interface_iterations()).
+ * Contacts within reach of the ramp response (its nonzero DoFs): the pass
+ * runs with the guess `Lambda_{n+m} = Lambda_n`; while their pushing set
+ * (impulse > 0, and bilateral rows) stays the same over the pass, the
+ * correction is superposed with the ramp response computed for that set
+ * (contacts of the set bilateral; cached per set) after checking that the
+ * LCP of every micro step keeps the set; otherwise the micro steps are
+ * redone with the now-known multipliers and Lambda_{n+m} corrected until
+ * the macro-end continuity holds (doc/theory.md 9.6; redone_macro_steps(),
+ * interface_iterations(), ramp_patterns()).
  */
 class HATICoupling
 {
