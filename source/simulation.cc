@@ -214,6 +214,7 @@ void Simulation::run()
       { return (*record)(t) + (step ? step(t) : 0.); };
     }
   add_base_excitation(system, acceleration);
+  ground_acceleration = acceleration;
   if (!common_parameters.excited_members.empty())
   {
     std::cout << "  base excitation on the members:";
@@ -356,6 +357,42 @@ void Simulation::run_transient(Integrator &integrator,
             << std::endl;
 
   WallClock output_clock; // a TimerOutput section costs more than a row
+  // absolute accelerations of the monitor points (m/s^2): the relative
+  // velocity differenced between two history rows plus the ground
+  // acceleration at the middle of the interval
+  std::vector<std::pair<double, double>> peak_acceleration(system.monitors.size());
+  std::vector<std::vector<double>> last_velocity(system.monitors.size());
+  double last_time = 0.;
+  bool have_last = false;
+  auto track_acceleration = [&](const OutputState &s)
+  {
+    for (unsigned int k = 0; k < system.monitors.size(); ++k)
+    {
+      const auto &m = system.monitors[k];
+      std::vector<double> &last = last_velocity[k];
+      last.resize(m.dofs.size());
+      double a2 = 0.;
+      for (unsigned int i = 0; i < m.dofs.size(); ++i)
+      {
+        const double v = (*s.velocity)[m.dofs[i]];
+        if (have_last && s.time > last_time)
+        {
+          const unsigned int d = m.labels[i] == "x" ? 0 : m.labels[i] == "y" ? 1 : 2;
+          const double a =
+              (v - last[i]) / (s.time - last_time) +
+              (ground_acceleration[d] ? ground_acceleration[d](0.5 * (s.time + last_time))
+                                      : 0.);
+          a2 += a * a;
+        }
+        last[i] = v;
+      }
+      if (std::sqrt(a2) > peak_acceleration[k].first)
+        peak_acceleration[k] = {std::sqrt(a2), s.time};
+    }
+    last_time = s.time;
+    have_last = true;
+  };
+
   auto write = [&](const unsigned long step)
   {
     const WallClock::Scope scope(output_clock);
@@ -363,6 +400,7 @@ void Simulation::run_transient(Integrator &integrator,
     check_finite(*s.displacement, s.time);
     if (step % every_history == 0 || step == n_steps)
     {
+      track_acceleration(s);
       writer.write_history(s);
       writer.write_energy(s.time, integrator.energies());
     }
@@ -492,6 +530,24 @@ void Simulation::run_transient(Integrator &integrator,
     statistics.print_table(std::cout);
   }
   std::cout << model->results_table();
+  if (!system.monitors.empty())
+  {
+    std::ostringstream json;
+    json << '{';
+    std::cout << "  largest absolute acceleration of the monitor points (m/s^2, between "
+                 "history rows):\n";
+    for (unsigned int k = 0; k < system.monitors.size(); ++k)
+    {
+      json << (k ? ", " : "") << json_string(system.monitors[k].name)
+           << ": {\"value\": " << json_number(peak_acceleration[k].first)
+           << ", \"time\": " << json_number(peak_acceleration[k].second) << '}';
+      std::cout << "    " << std::setw(12) << system.monitors[k].name << std::setw(14)
+                << peak_acceleration[k].first << " at t = " << peak_acceleration[k].second
+                << " s\n";
+    }
+    json << '}';
+    summary.emplace_back("max_absolute_acceleration", json.str());
+  }
   write_summary(output_directory + "/summary.json", summary);
   std::cout << "  done: " << n_steps << " steps in " << wall << " s (output "
             << output_clock.seconds() << " s in " << output_clock.calls() << " calls); ";

@@ -102,4 +102,11 @@ orders = [np.log(errors[i] / errors[i + 1]) / np.log(steps[i] / steps[i + 1]) fo
 for i, p in enumerate(orders):
     ctx.check("convergence order %d" % (i + 1), p, 1.0, abs_tol=0.35)
 
+# summary.json max_absolute_acceleration: in free flight before the first
+# impact (t = 0.4516 s) the velocity differences between history rows give
+# the gravity exactly (CD-Lagrange is exact for a constant acceleration)
+out, _ = ctx.run(ctx.prm("bouncing_ball.prm"), "free_flight", ["Time integration/End time=0.4"])
+a = read_summary(out)["max_absolute_acceleration"]["ball"]["value"]
+ctx.check("free flight: max absolute acceleration (m/s^2) = g", a, 9.81, rel=1e-9)
+
 ctx.finish()

@@ -12,6 +12,8 @@
 #include <hati/time/hati_coupling.h>
 #include <hati/time/newmark.h>
 
+#include <array>
+#include <functional>
 #include <map>
 #include <memory>
 #include <ostream>
@@ -91,6 +93,9 @@ private:
   std::string report_static_contact_forces(const std::vector<double> &forces);
   /** Static contact forces per contact name (N), filled by the above. */
   std::map<std::string, double> static_contact_forces;
+  /** Ground acceleration per direction (m/s^2; empty: none), for absolute accelerations.
+   */
+  std::array<std::function<double(double)>, 3> ground_acceleration;
   /** summary.json entries of the static initial state (transient runs). */
   std::vector<std::pair<std::string, std::string>> initial_state_summary;
 };
