@@ -57,28 +57,6 @@ void check_finite(const Vector<double> &u, const double t)
   }
 }
 
-/**
- * The difference between gravity with the lumped mass, as CD-Lagrange
- * applies it, and with the consistent mass of @p s (N), in the numbering of
- * a system of @p n DoFs through @p global (nullptr: the same numbering).
- */
-Vector<double>
-lumped_gravity_correction(const DiscreteSystem &s,
-                          const std::vector<types::global_dof_index> *global,
-                          const unsigned int n)
-{
-  Vector<double> c(n);
-  const unsigned int ns = s.n_dofs();
-  for (unsigned int d = 0; d < 3; ++d)
-    if (s.gravity[d] != 0. && s.mass_influence[d].size() == ns &&
-        s.influence[d].size() == ns)
-      for (unsigned int i = 0; i < ns; ++i)
-        c[global ? (*global)[i] : i] +=
-            s.gravity[d] *
-            (s.lumped_mass[i] * s.influence[d][i] - s.mass_influence[d][i]);
-  return c;
-}
-
 /** Progress lines at most every @p interval seconds of wall time. */
 class Progress
 {
@@ -244,14 +222,16 @@ void Simulation::run()
     // under the loads the integrators apply: CD-Lagrange (and the explicit
     // subdomain of HATI) applies gravity with the lumped mass, so that its
     // first steps start at rest (doc/theory.md 1.1)
-    const Vector<double> correction =
-        time_parameters.method == "CD-Lagrange"
-            ? lumped_gravity_correction(system, nullptr, system.n_dofs())
-        : time_parameters.method == "HATI"
-            ? lumped_gravity_correction(decomposition->parts[0].system,
-                                        &decomposition->parts[0].global_dofs,
-                                        system.n_dofs())
-            : Vector<double>(system.n_dofs());
+    Vector<double> correction(system.n_dofs());
+    if (time_parameters.method == "CD-Lagrange")
+      correction = system.lumped_gravity_correction();
+    else if (time_parameters.method == "HATI")
+    {
+      const auto &E = decomposition->parts[0];
+      const Vector<double> c = E.system.lumped_gravity_correction();
+      for (unsigned int i = 0; i < c.size(); ++i)
+        correction[E.global_dofs[i]] += c[i];
+    }
     system.constant_force += correction;
     std::vector<double> forces;
     solve_static(system,

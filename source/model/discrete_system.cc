@@ -146,4 +146,15 @@ double element_omega_squared(const FullMatrix<double> &element_stiffness,
     lmax = std::max(lmax, eigenvalues[i]);
   return lmax;
 }
+Vector<double> DiscreteSystem::lumped_gravity_correction() const
+{
+  const unsigned int n = n_dofs();
+  Vector<double> c(n);
+  for (unsigned int d = 0; d < 3; ++d)
+    if (gravity[d] != 0. && mass_influence[d].size() == n && influence[d].size() == n)
+      for (unsigned int i = 0; i < n; ++i)
+        c[i] += gravity[d] * (lumped_mass[i] * influence[d][i] - mass_influence[d][i]);
+  return c;
+}
+
 } // namespace hati

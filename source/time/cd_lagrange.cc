@@ -268,12 +268,7 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
   // base excitation): -M_lumped r a instead of the consistent M r a of the
   // system, so that a rigid motion (free flight) is exact with CD.
   force = system.constant_force;
-  for (unsigned int d = 0; d < 3; ++d)
-    if (system.gravity[d] != 0. && system.mass_influence[d].size() == n &&
-        system.influence[d].size() == n)
-      for (unsigned int i = 0; i < n; ++i)
-        force[i] += system.gravity[d] * (system.lumped_mass[i] * system.influence[d][i] -
-                                         system.mass_influence[d][i]);
+  force += system.lumped_gravity_correction();
   dt_minv_force.reinit(n);
   for (unsigned int i = 0; i < n; ++i)
     dt_minv_force[i] = dt_minv[i] * force[i];

@@ -163,6 +163,14 @@ public:
   void fill_default_mass_influence();
 
   /**
+   * Gravity with the lumped mass minus gravity with the consistent mass,
+   * `g (M_lumped r - M r)` (N): what CD-Lagrange adds to constant_force so
+   * that a rigid motion (free flight) is exact, and what a static state
+   * for it must carry.
+   */
+  Vector<double> lumped_gravity_correction() const;
+
+  /**
    * Gravity (m/s^2) included in constant_force as `sum_d g_d
    * mass_influence[d]`; an integrator with a lumped mass swaps that part for
    * `M_lumped influence[d] g_d` (free fall exact). Zero if the model puts no
