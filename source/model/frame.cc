@@ -656,6 +656,10 @@ void Frame::create_mesh()
           ExcMessage("Model/Frame/Members: member '" + member.name +
                      "': its section orientation vector is parallel to the member"));
     }
+    const FrameSection &section = P.sections.at(member.section);
+    const FrameMaterial &material = P.materials.at(member.material);
+    info.stiffness = local_stiffness(info.length, section, material);
+    info.mass = local_consistent_mass(info.length, section, material);
     cells.push_back(info);
   }
 
@@ -901,19 +905,16 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
 std::array<double, 12> Frame::cell_section_forces(const CellInfo &cell,
                                                   const Vector<double> &U) const
 {
-  const auto &member = parameters.members[cell.member];
-  const FrameSection &section = parameters.sections.at(member.section);
-  const FrameMaterial &material = parameters.materials.at(member.material);
   Vector<double> ug(12), f(12), span(12), r(12);
   for (unsigned int i = 0; i < 12; ++i)
     ug[i] = U[cell.dofs[i]];
-  local_stiffness(cell.length, section, material).vmult(f, to_local(ug, cell.rotation));
+  cell.stiffness.vmult(f, to_local(ug, cell.rotation));
   // end forces f = k u - F_gravity, F_gravity = m r g in local axes: the
   // element's own weight is a span load (fixed-end forces)
   const Tensor<1, 3> g = cell.rotation * gravity;
   for (unsigned int d = 0; d < 3; ++d)
     r[d] = r[6 + d] = g[d];
-  local_consistent_mass(cell.length, section, material).vmult(span, r);
+  cell.mass.vmult(span, r);
   f -= span;
   return section_forces(f);
 }

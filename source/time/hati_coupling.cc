@@ -77,6 +77,20 @@ void SparseColumns::add_column(const Vector<double> &v)
   start.push_back(row.size());
 }
 
+SparseColumns::SparseColumns(const FullMatrix<double> &matrix)
+{
+  for (unsigned int k = 0; k < matrix.n(); ++k)
+  {
+    for (unsigned int i = 0; i < matrix.m(); ++i)
+      if (matrix(i, k) != 0.)
+      {
+        row.push_back(i);
+        value.push_back(matrix(i, k));
+      }
+    start.push_back(row.size());
+  }
+}
+
 void SparseColumns::add_multiply(Vector<double> &y, const Vector<double> &x) const
 {
   for (unsigned int k = 0; k + 1 < start.size(); ++k)
@@ -229,11 +243,12 @@ void HATICoupling::compute_ramp(const std::vector<bool> &active_set,
   r.H_E.reinit(n_gamma, n_gamma);
   r.load_work.assign(shapes.size(),
                      std::vector<Vector<double>>(m, Vector<double>(n_gamma)));
-  r.impulse.assign(m + 1, FullMatrix<double>(nrc, n_gamma));
-  r.gap.assign(m + 1, FullMatrix<double>(nrc, n_gamma));
-  r.normal_velocity.assign(m + 2, FullMatrix<double>(nrc, n_gamma));
-  r.velocity_reach.assign(with_damping ? m + 1 : 0, FullMatrix<double>(nR, n_gamma));
-  r.damping_reach.assign(with_damping ? m + 1 : 0, FullMatrix<double>(nR, n_gamma));
+  // filled as dense per micro step, stored sparse
+  std::vector<FullMatrix<double>> impulse(m + 1, FullMatrix<double>(nrc, n_gamma)),
+      gap(m + 1, FullMatrix<double>(nrc, n_gamma)),
+      normal_velocity(m + 2, FullMatrix<double>(nrc, n_gamma)),
+      velocity_reach(with_damping ? m + 1 : 0, FullMatrix<double>(nR, n_gamma)),
+      damping_reach(with_damping ? m + 1 : 0, FullMatrix<double>(nR, n_gamma));
   for (unsigned int l = 0; l < n_gamma; ++l)
   {
     for (auto *v : ramp.linear_state())
@@ -252,10 +267,10 @@ void HATICoupling::compute_ramp(const std::vector<bool> &active_set,
         r.increment_weighted(k, l) += (2. * j - 1.) / (2. * m) * du;
       }
       for (unsigned int c = 0; c < nrc; ++c)
-        r.normal_velocity[j](c, l) = system.contacts[reach_contacts[c]].apply(V);
+        normal_velocity[j](c, l) = system.contacts[reach_contacts[c]].apply(V);
       if (with_damping)
         for (unsigned int i = 0; i < nR; ++i)
-          r.velocity_reach[j](i, l) = V[reach_dofs[i]];
+          velocity_reach[j](i, l) = V[reach_dofs[i]];
       ramp.predict();
       ramp.free_velocity(false);
       ramp.add_force(rows_E[l], double(j) / m); // unit ramp (j/m) e_l
@@ -266,24 +281,36 @@ void HATICoupling::compute_ramp(const std::vector<bool> &active_set,
       for (unsigned int c = 0; c < nrc; ++c)
       {
         const auto &row = system.contacts[reach_contacts[c]];
-        r.impulse[j](c, l) = with_contacts ? ramp.impulses()[reach_contacts[c]] : 0.;
-        r.gap[j](c, l) = row.apply(ramp.displacement());
+        impulse[j](c, l) = with_contacts ? ramp.impulses()[reach_contacts[c]] : 0.;
+        gap[j](c, l) = row.apply(ramp.displacement());
       }
       if (with_damping)
       {
         const Vector<double> &d = *ramp.linear_state()[3];
         for (unsigned int i = 0; i < nR; ++i)
-          r.damping_reach[j](i, l) = d[reach_dofs[i]];
+          damping_reach[j](i, l) = d[reach_dofs[i]];
       }
     }
     for (unsigned int c = 0; c < nrc; ++c)
-      r.normal_velocity[m + 1](c, l) =
+      normal_velocity[m + 1](c, l) =
           system.contacts[reach_contacts[c]].apply(ramp.velocity());
     const auto state = ramp.linear_state();
     for (unsigned int s = 0; s < state.size(); ++s)
       r.state[s].add_column(*state[s]);
   }
   ramp.prescribe_active_set(nullptr);
+  const auto store =
+      [](const std::vector<FullMatrix<double>> &dense, std::vector<SparseColumns> &sparse)
+  {
+    sparse.clear();
+    for (const auto &matrix : dense)
+      sparse.emplace_back(matrix);
+  };
+  store(impulse, r.impulse);
+  store(gap, r.gap);
+  store(normal_velocity, r.normal_velocity);
+  store(velocity_reach, r.velocity_reach);
+  store(damping_reach, r.damping_reach);
 
   // (G3') H = C_E V_ramp + gamma DT C_I M_eff^-1 C_I^T, factorised once
   r.H.reinit(n_gamma, n_gamma);
@@ -415,8 +442,9 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
     }
     if (record_contacts)
     {
-      take_sample();
-      contact_record.push_back(sample);
+      if (n_recorded == contact_record.size())
+        contact_record.emplace_back();
+      take_sample(contact_record[n_recorded++]);
       for (unsigned int c = 0; c < nrc; ++c)
       {
         const unsigned int k = reach_contacts[c];
@@ -426,7 +454,7 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
     }
     else if (after_micro_step)
     {
-      take_sample();
+      take_sample(sample);
       after_micro_step(sample);
     }
   }
@@ -449,7 +477,7 @@ void HATICoupling::step()
   // contacts within reach of the ramp response, keep the state to redo them
   start = Clock::now();
   record_contacts = contacts_in_reach;
-  contact_record.clear();
+  n_recorded = 0;
   if (record_contacts)
     explicit_integrator.save(snapshot);
   micro_steps(lambda_n, true);
@@ -516,7 +544,7 @@ void HATICoupling::step()
     {
       explicit_integrator.restore(snapshot);
       record_contacts = true;
-      contact_record.clear();
+      n_recorded = 0;
       micro_steps(lambda_m, false);
       Vector<double> implicit_part(n_gamma);
       H_I.vmult(implicit_part, lambda_m);
@@ -545,8 +573,8 @@ void HATICoupling::step()
     }
     max_iterations = std::max(max_iterations, iterations + 1);
     if (after_micro_step)
-      for (const auto &recorded : contact_record)
-        after_micro_step(recorded);
+      for (unsigned int j = 0; j < n_recorded; ++j)
+        after_micro_step(contact_record[j]);
   }
   record_contacts = false;
   seconds[0] += seconds_since(start);
@@ -667,7 +695,7 @@ bool HATICoupling::superpose(const RampResponse &r, const Vector<double> &lambda
     for (unsigned int c = 0; c < nrc; ++c)
       explicit_integrator.set_contact_state(
           reach_contacts[c], total_gap[m * nrc + c], total_impulse[m * nrc + c]);
-    for (unsigned int j = 1; j <= m && j <= contact_record.size(); ++j)
+    for (unsigned int j = 1; j <= m && j <= n_recorded; ++j)
     {
       ContactSample &s = contact_record[j - 1];
       for (unsigned int c = 0; c < nrc; ++c)
@@ -702,22 +730,22 @@ bool HATICoupling::superpose(const RampResponse &r, const Vector<double> &lambda
   if (!reach_dofs.empty())
     explicit_integrator.add_dissipated(ramp_dissipation(r, lambda));
   if (after_micro_step)
-    for (const auto &recorded : contact_record)
-      after_micro_step(recorded);
+    for (unsigned int j = 0; j < n_recorded; ++j)
+      after_micro_step(contact_record[j]);
   return true;
 }
 
-void HATICoupling::take_sample()
+void HATICoupling::take_sample(ContactSample &s) const
 {
-  sample.time = explicit_integrator.time();
-  sample.gaps = explicit_integrator.gaps();
-  sample.impulses = explicit_integrator.impulses();
-  sample.active = explicit_integrator.active();
+  s.time = explicit_integrator.time();
+  s.gaps = explicit_integrator.gaps();
+  s.impulses = explicit_integrator.impulses();
+  s.active = explicit_integrator.active();
   const auto &contacts = decomposition.parts[0].system.contacts;
   const Vector<double> &V = explicit_integrator.velocity();
-  sample.normal_velocities.resize(contacts.size());
+  s.normal_velocities.resize(contacts.size());
   for (unsigned int k = 0; k < contacts.size(); ++k)
-    sample.normal_velocities[k] = contacts[k].apply(V);
+    s.normal_velocities[k] = contacts[k].apply(V);
 }
 
 double HATICoupling::ramp_dissipation(const RampResponse &ramp,

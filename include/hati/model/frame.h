@@ -150,6 +150,8 @@ private:
     double position = 0.;
     Tensor<2, 3> rotation;
     std::array<types::global_dof_index, 12> dofs;
+    /** Local stiffness and consistent mass (section forces at every history row). */
+    FullMatrix<double> stiffness, mass;
   };
 
   /**

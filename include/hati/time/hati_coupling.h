@@ -49,8 +49,17 @@ class SparseColumns
 public:
   /** Append the column @p v (its nonzero entries). */
   void add_column(const Vector<double> &v);
+  /** The nonzero entries of @p matrix, column by column. */
+  explicit SparseColumns(const FullMatrix<double> &matrix);
+  SparseColumns() = default;
   /** y += sum_k column_k x_k. */
   void add_multiply(Vector<double> &y, const Vector<double> &x) const;
+  /** y = sum_k column_k x_k (@p y keeps its size). */
+  void vmult(Vector<double> &y, const Vector<double> &x) const
+  {
+    y = 0.;
+    add_multiply(y, x);
+  }
   /** Rows with an entry in any column. */
   std::vector<unsigned int> rows() const;
 
@@ -229,8 +238,10 @@ private:
     std::vector<SparseColumns> state;
     FullMatrix<double> increment_sum, increment_weighted, H_E;
     std::vector<std::vector<Vector<double>>> load_work;
-    std::vector<FullMatrix<double>> velocity_reach, damping_reach;
-    std::vector<FullMatrix<double>> impulse, gap, normal_velocity;
+    // per micro step, sparse: the response spreads at the wave speed and
+    // stays within the connected part of the subdomain
+    std::vector<SparseColumns> velocity_reach, damping_reach;
+    std::vector<SparseColumns> impulse, gap, normal_velocity;
     LAPACKFullMatrix<double> H;
   };
   /**
@@ -268,10 +279,12 @@ private:
   // per macro step with contacts in reach: whether one was active, and the
   // contact state of every micro step (replayed to after_micro_step)
   bool record_contacts = false;
+  // (a pool: its first n_recorded entries, reused without allocation)
   std::vector<ContactSample> contact_record;
+  unsigned int n_recorded = 0;
   ContactSample sample;
-  /** Fill `sample` from the explicit integrator. */
-  void take_sample();
+  /** Fill @p sample from the explicit integrator. */
+  void take_sample(ContactSample &sample) const;
 
   // per macro step: C_E V integer velocity at j = m, interface increments
   Vector<double> v_end, increment_sum, increment_weighted;
