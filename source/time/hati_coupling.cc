@@ -99,6 +99,22 @@ void SparseColumns::add_multiply(Vector<double> &y, const Vector<double> &x) con
         y[row[e]] += value[e] * x[k];
 }
 
+SparseRowPair::SparseRowPair(const FullMatrix<double> &A, const FullMatrix<double> &B)
+{
+  AssertThrow(A.m() == B.m() && A.n() == B.n(), ExcInternalError());
+  for (unsigned int i = 0; i < A.m(); ++i)
+  {
+    for (unsigned int k = 0; k < A.n(); ++k)
+      if (A(i, k) != 0. || B(i, k) != 0.)
+      {
+        column.push_back(k);
+        value_a.push_back(A(i, k));
+        value_b.push_back(B(i, k));
+      }
+    start.push_back(column.size());
+  }
+}
+
 std::vector<unsigned int> SparseColumns::rows() const
 {
   std::vector<unsigned int> r(row);
@@ -238,8 +254,8 @@ void HATICoupling::compute_ramp(const std::vector<bool> &active_set,
   ramp.prescribe_active_set(with_contacts ? &prescribed : nullptr);
 
   r.state.assign(ramp.linear_state().size(), SparseColumns());
-  r.increment_sum.reinit(n_gamma, n_gamma);
-  r.increment_weighted.reinit(n_gamma, n_gamma);
+  FullMatrix<double> increment_sum(n_gamma, n_gamma),
+      increment_weighted(n_gamma, n_gamma);
   r.H_E.reinit(n_gamma, n_gamma);
   r.load_work.assign(shapes.size(),
                      std::vector<Vector<double>>(m, Vector<double>(n_gamma)));
@@ -263,8 +279,8 @@ void HATICoupling::compute_ramp(const std::vector<bool> &active_set,
       for (unsigned int k = 0; k < n_gamma; ++k)
       {
         const double du = dt * rows_E[k].apply(V);
-        r.increment_sum(k, l) += du;
-        r.increment_weighted(k, l) += (2. * j - 1.) / (2. * m) * du;
+        increment_sum(k, l) += du;
+        increment_weighted(k, l) += (2. * j - 1.) / (2. * m) * du;
       }
       for (unsigned int c = 0; c < nrc; ++c)
         normal_velocity[j](c, l) = system.contacts[reach_contacts[c]].apply(V);
@@ -309,8 +325,12 @@ void HATICoupling::compute_ramp(const std::vector<bool> &active_set,
   store(impulse, r.impulse);
   store(gap, r.gap);
   store(normal_velocity, r.normal_velocity);
-  store(velocity_reach, r.velocity_reach);
-  store(damping_reach, r.damping_reach);
+  r.velocity_damping_reach.clear();
+  for (unsigned int j = 0; j < velocity_reach.size(); ++j)
+    r.velocity_damping_reach.emplace_back(velocity_reach[j], damping_reach[j]);
+  r.increment_sum = SparseColumns(increment_sum);
+  r.increment_weighted = SparseColumns(increment_weighted);
+  r.H_E_sparse = SparseColumns(r.H_E);
 
   // (G3') H = C_E V_ramp + gamma DT C_I M_eff^-1 C_I^T, factorised once
   r.H.reinit(n_gamma, n_gamma);
@@ -713,9 +733,9 @@ bool HATICoupling::superpose(const RampResponse &r, const Vector<double> &lambda
   const auto state = explicit_integrator.linear_state();
   for (unsigned int s = 0; s < state.size(); ++s)
     r.state[s].add_multiply(*state[s], lambda);
-  r.increment_sum.vmult_add(increment_sum, lambda);
-  r.increment_weighted.vmult_add(increment_weighted, lambda);
-  r.H_E.vmult_add(v_end, lambda);
+  r.increment_sum.add_multiply(increment_sum, lambda);
+  r.increment_weighted.add_multiply(increment_weighted, lambda);
+  r.H_E_sparse.add_multiply(v_end, lambda);
   // amplitudes at the micro-step times n dt, as the integrator takes them
   const unsigned long n0 = explicit_integrator.step_number() - m;
   double work = 0.;
@@ -757,19 +777,26 @@ double HATICoupling::ramp_dissipation(const RampResponse &ramp,
   // nonzero on the DoFs the ramp reaches only
   const Vector<double> &mass = decomposition.parts[0].system.lumped_mass;
   const unsigned int nR = reach_dofs.size();
-  Vector<double> a(nR), b_prev(nR), d_ramp(nR);
+  for (auto *v : {&ramp_velocity_reach, &ramp_damping_reach, &ramp_damping_prev})
+    if (v->size() != nR)
+      v->reinit(nR);
+  ramp_damping_prev = 0.;
   double sum = 0.;
+  double *const a = ramp_velocity_reach.data(), *const d_ramp = ramp_damping_reach.data(),
+                *const b_prev = ramp_damping_prev.data();
   for (unsigned int j = 1; j <= m; ++j)
   {
-    ramp.velocity_reach[j].vmult(a, lambda);
-    ramp.damping_reach[j].vmult(d_ramp, lambda);
+    ramp.velocity_damping_reach[j].vmult(lambda, a, d_ramp);
+    const double *const v_a = pass_velocity_reach[j].data(),
+                        *const d_a0 = pass_damping_reach[j - 1].data(),
+                        *const d_a1 = pass_damping_reach[j].data();
     for (unsigned int r = 0; r < nR; ++r)
     {
       const double D_r = b_prev[r] + d_ramp[r];
-      const double D_a = pass_damping_reach[j - 1][r] + pass_damping_reach[j][r];
-      sum += mass[reach_dofs[r]] * (pass_velocity_reach[j][r] * D_r + a[r] * (D_a + D_r));
+      const double D_a = d_a0[r] + d_a1[r];
+      sum += mass[reach_dofs[r]] * (v_a[r] * D_r + a[r] * (D_a + D_r));
+      b_prev[r] = d_ramp[r];
     }
-    b_prev = d_ramp;
   }
   return 0.5 * sum;
 }

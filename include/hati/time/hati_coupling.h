@@ -70,6 +70,41 @@ private:
 };
 
 /**
+ * Two matrices of the same shape stored row by row on the union of their
+ * nonzero entries (the ramp's velocities and damping forces on the reach
+ * at one micro step, G3' with A7): both products with one vector in one
+ * pass.
+ */
+class SparseRowPair
+{
+public:
+  /** The nonzero entries of @p A and @p B (same size). */
+  SparseRowPair(const FullMatrix<double> &A, const FullMatrix<double> &B);
+  SparseRowPair() = default;
+  /** a = A x, b = B x (a, b: as many entries as rows). */
+  void vmult(const Vector<double> &x, double *a, double *b) const
+  {
+    const unsigned int n = start.size() - 1;
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      double sa = 0., sb = 0.;
+      for (unsigned int e = start[i]; e < start[i + 1]; ++e)
+      {
+        const double xe = x[column[e]];
+        sa += value_a[e] * xe;
+        sb += value_b[e] * xe;
+      }
+      a[i] = sa;
+      b[i] = sb;
+    }
+  }
+
+private:
+  std::vector<unsigned int> start{0}, column;
+  std::vector<double> value_a, value_b;
+};
+
+/**
  * The heterogeneous asynchronous time integrator (paper (4)-(10),
  * Gravouil-Combescure; doc/theory.md section 9): the explicit subdomain
  * integrated by CD-Lagrange with the micro step dt, the implicit one by
@@ -236,11 +271,12 @@ private:
   struct RampResponse
   {
     std::vector<SparseColumns> state;
-    FullMatrix<double> increment_sum, increment_weighted, H_E;
+    FullMatrix<double> H_E;
+    SparseColumns increment_sum, increment_weighted, H_E_sparse;
     std::vector<std::vector<Vector<double>>> load_work;
     // per micro step, sparse: the response spreads at the wave speed and
     // stays within the connected part of the subdomain
-    std::vector<SparseColumns> velocity_reach, damping_reach;
+    std::vector<SparseRowPair> velocity_damping_reach;
     std::vector<SparseColumns> impulse, gap, normal_velocity;
     LAPACKFullMatrix<double> H;
   };
@@ -310,6 +346,7 @@ private:
   // micro step (|R| x n_G each) and those of the first pass.
   std::vector<unsigned int> reach_dofs;
   std::vector<Vector<double>> pass_velocity_reach, pass_damping_reach;
+  mutable Vector<double> ramp_velocity_reach, ramp_damping_reach, ramp_damping_prev;
   /** The dissipated energy of the ramp part @p r Lambda after the pass (G3', A7). */
   double ramp_dissipation(const RampResponse &r, const Vector<double> &lambda) const;
   mutable Vector<double> global_U, global_V;
