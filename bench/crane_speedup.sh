@@ -46,17 +46,23 @@ print("HATI time: explicit micro steps %.2f s (%.0f %%), implicit steps %.2f s (
          h["wall_time_implicit"], 100 * h["wall_time_implicit"] / total,
          h["wall_time_interface"], 100 * h["wall_time_interface"] / total,
          h["redone_macro_steps"], h["n_steps"], h["ramp_patterns"]))
-print("\n%-18s %8s %8s %14s %14s %14s %14s" % ("wheel", "impacts", "", "uplift (s)", "",
-                                             "peak imp. (Ns)", ""))
-worst_imp = 0.0
+print("\n%-16s %7s %4s %10s %10s %10s %10s %12s %12s" % (
+    "wheel", "impacts", "", "uplift (s)", "", "peak imp.", "(N s)", "peak mean", "force (N)"))
+worst_imp, worst_mean = 0.0, 0.0
 for name, we in e["wheels"].items():
     wh = h["wheels"][name]
     d = abs(wh["peak_impulse"] - we["peak_impulse"]) / we["peak_impulse"] if we["peak_impulse"] else 0
     worst_imp = max(worst_imp, d)
-    print("%-18s %8d %8d %14.5f %14.5f %14.5g %14.5g" % (
+    dm = (abs(wh["peak_mean_force"] - we["peak_mean_force"]) / we["peak_mean_force"]
+          if we.get("peak_mean_force") else 0)
+    worst_mean = max(worst_mean, dm)
+    print("%-16s %7d %4d %10.5f %10.5f %10.5g %10.5g %12.6g %12.6g" % (
         name, we["n_impacts"], wh["n_impacts"], we["uplift_time"], wh["uplift_time"],
-        we["peak_impulse"], wh["peak_impulse"]))
-print("largest difference of the wheels' peak impulse: %.2f %%" % (100 * worst_imp))
+        we["peak_impulse"], wh["peak_impulse"], we.get("peak_mean_force", 0),
+        wh.get("peak_mean_force", 0)))
+print("largest difference of the wheels' peak impulse (one step): %.2f %%" % (100 * worst_imp))
+print("largest difference of the wheels' peak mean force over %g s: %.2f %%"
+      % (h.get("contact_force_window", 0.0), 100 * worst_mean))
 
 def episodes(run):
     result = {}

@@ -392,7 +392,8 @@ void Simulation::run_transient(Integrator &integrator,
   std::vector<double> initial_gaps;
   for (const auto &c : system.contacts)
     initial_gaps.push_back(c.initial_gap + c.apply(system.initial_displacement));
-  ContactStatistics statistics(system.contacts, initial_gaps);
+  ContactStatistics statistics(
+      system.contacts, initial_gaps, output_parameters.contact_force_window);
 
   // HATI: contact statistics and contacts.csv rows at the micro steps
   unsigned long micro_step = 0;
@@ -499,6 +500,8 @@ void Simulation::run_transient(Integrator &integrator,
   if (!system.contacts.empty())
   {
     summary.emplace_back("contacts", statistics.json());
+    summary.emplace_back("contact_force_window",
+                         json_number(output_parameters.contact_force_window));
     const auto wheels = model->wheel_contacts();
     if (!wheels.empty())
       summary.emplace_back("wheels", statistics.json(wheels));

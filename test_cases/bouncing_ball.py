@@ -55,6 +55,13 @@ ctx.check("rest force m g (N)", np.mean(c["force"][rest]), m * g, rel=1e-9)
 s = read_summary(out)
 # discrete energy balance (doc/theory.md E1) holds to round-off
 ctx.check("energy balance relative error", s["energy_balance_relative"], 0.0, abs_tol=1e-10)
+# peak_mean_force: the largest impulse within Output/Contact force window
+# (1 ms = 10 steps) over the window; the first impact (the fastest) is one
+# step with the impulse m (1 + e) v1, up to O(g dt / v1) = 2e-4
+ctx.check("peak_mean_force over 1 ms (N) = m (1 + e) v1 / 1 ms",
+          s["contacts"]["ground"]["peak_mean_force"], m * (1 + e) * v1 / 1e-3, rel=1e-3)
+ctx.check("peak_mean_force time (s) = t1", s["contacts"]["ground"]["peak_mean_force_time"],
+          t1, abs_tol=4 * dt)
 ctx.check_true("max penetration bounded by dt v1", s["max_penetration"] <= dt * v1 * 1.01,
                "(%.3g m <= %.3g m)" % (s["max_penetration"], dt * v1))
 

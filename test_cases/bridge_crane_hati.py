@@ -20,7 +20,8 @@ and m = 20 (DT = 1.2e-4 s). Checked:
 - the time out of contact (uplift_time) agrees within 2 %;
 - the largest landing impulse (peak_impulse, N s: the plastic impact is
   resolved in one step, so the force impulse/dt depends on dt while the
-  impulse does not) agrees within 5 %;
+  impulse does not) agrees within 5 %, and so does the peak contact force
+  averaged over 1 ms (peak_mean_force);
 - the energy balance of both runs closes (relative error < 1e-9), and the
   coupled run keeps the interface velocities equal (< 1e-7 m/s: the macro
   steps redone around the impacts iterate to 1e-8 of the velocity scale)."""
@@ -76,4 +77,9 @@ for k in range(1, 5):
     ctx.check("%s: uplift_time (s)" % name, wh["uplift_time"], we["uplift_time"], rel=0.02)
     ctx.check("%s: peak_impulse (N s)" % name, wh["peak_impulse"], we["peak_impulse"],
               rel=0.05)
+    # the peak force averaged over Output/Contact force window (1 ms: 625
+    # explicit steps, 167 HATI micro steps) does not depend on dt (the issue
+    # asks 5 %)
+    ctx.check("%s: peak_mean_force over 1 ms (N)" % name, wh["peak_mean_force"],
+              we["peak_mean_force"], rel=0.05)
 ctx.finish()

@@ -9,8 +9,9 @@
 namespace hati
 {
 ContactStatistics::ContactStatistics(const std::vector<ContactRow> &contacts,
-                                     const std::vector<double> &initial_gaps)
-    : contacts(contacts)
+                                     const std::vector<double> &initial_gaps,
+                                     const double force_window)
+    : contacts(contacts), force_window(force_window)
 {
   for (const auto &c : contacts)
   {
@@ -35,6 +36,7 @@ ContactStatistics::ContactStatistics(const std::vector<ContactRow> &contacts,
   for (unsigned int k = 0; k < contacts.size() && k < initial_gaps.size(); ++k)
     if (initial_gaps[k] <= 0.)
       pushing[group_of_row[k]] = pushed_once[group_of_row[k]] = 1;
+  initially_closed = pushed_once;
 }
 
 void ContactStatistics::add_step(const double time,
@@ -48,6 +50,38 @@ void ContactStatistics::add_step(const double time,
     const double l = contacts[k].bilateral ? std::abs(impulses[k]) : impulses[k];
     if (l > 0.)
       group_impulse[group_of_row[k]] += l;
+  }
+  if (force_window > 0.)
+  {
+    if (n_window == 0)
+    {
+      n_window = std::max(1L, std::lround(force_window / dt));
+      window_impulses.assign(groups.size() * n_window, 0.);
+      window_sum.assign(groups.size(), 0.);
+    }
+    // ring position of this step; the sums are summed afresh once per turn
+    // of the ring so that round-off does not accumulate
+    const unsigned long slot = (n_steps - 1) % n_window;
+    for (unsigned int g = 0; g < groups.size(); ++g)
+    {
+      double &old = window_impulses[g * n_window + slot];
+      window_sum[g] += group_impulse[g] - old;
+      old = group_impulse[g];
+      if (slot == n_window - 1)
+      {
+        double s = 0.;
+        for (unsigned long i = 0; i < n_window; ++i)
+          s += window_impulses[g * n_window + i];
+        window_sum[g] = s;
+      }
+      const double mean_force = window_sum[g] / (n_window * dt);
+      if ((n_steps > n_window || !initially_closed[g]) &&
+          mean_force > groups[g].peak_mean_force)
+      {
+        groups[g].peak_mean_force = mean_force;
+        groups[g].peak_mean_force_time = time;
+      }
+    }
   }
   for (unsigned int g = 0; g < groups.size(); ++g)
   {
@@ -108,6 +142,8 @@ std::string ContactStatistics::json(const std::vector<std::string> &names) const
       << ", \"peak_impact_force\": " << json_number(e.peak_force)
       << ", \"peak_force_time\": " << json_number(e.peak_force_time)
       << ", \"peak_impulse\": " << json_number(e.peak_impulse)
+      << ", \"peak_mean_force\": " << json_number(e.peak_mean_force)
+      << ", \"peak_mean_force_time\": " << json_number(e.peak_mean_force_time)
       << ", \"uplift_time\": " << json_number(e.uplift_time)
       << ", \"n_contact_loss_episodes\": " << e.episodes.size() << '}';
     first = false;
@@ -135,12 +171,18 @@ void ContactStatistics::print_table(std::ostream &out) const
 {
   const auto flags = out.flags();
   const auto precision = out.precision();
-  out << "  contacts:        name   impacts  peak force (N)    at t (s)  time out of "
-         "contact (s)  loss episodes\n";
+  out << "  contacts:        name   impacts  peak force (N)    at t (s)  mean force (N)  "
+         "  at t "
+         "(s)  time out of contact (s)  loss episodes\n";
+  if (force_window > 0.)
+    out << "    (peak force: impulse of one step / dt; mean force: largest impulse "
+           "within "
+        << force_window << " s / " << force_window << " s)\n";
   for (const auto &e : groups)
     out << "    " << std::setw(24) << e.name << std::setw(10) << e.n_impacts
         << std::setw(16) << std::setprecision(6) << e.peak_force << std::setw(12)
-        << e.peak_force_time << std::setw(25) << e.uplift_time << std::setw(15)
+        << e.peak_force_time << std::setw(16) << e.peak_mean_force << std::setw(12)
+        << e.peak_mean_force_time << std::setw(25) << e.uplift_time << std::setw(15)
         << e.episodes.size() << '\n';
   out.flags(flags);
   out.precision(precision);

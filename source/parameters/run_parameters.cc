@@ -144,6 +144,16 @@ void OutputParameters::declare_parameters(ParameterHandler &prm)
                     Patterns::Double(0.),
                     "Simulated time between two rows of history.csv, contacts.csv and "
                     "energy.csv (s); 0: every time step.");
+  prm.declare_entry(
+      "Contact force window",
+      "0.001",
+      Patterns::Double(0.),
+      "Window of the mean contact force (s): summary.json gives per contact name "
+      "peak_mean_force (N), the largest impulse the contact takes within any interval "
+      "of this length divided by the length. Unlike peak_impact_force (the impulse "
+      "of one step / dt, which grows as dt falls because a plastic impact is resolved "
+      "in one step) it does not depend on the time step once the window spans many "
+      "steps: compare runs with different steps by it. 0: not computed.");
   prm.declare_entry("Progress interval",
                     "2",
                     Patterns::Double(0.),
@@ -157,6 +167,7 @@ void OutputParameters::parse_parameters(ParameterHandler &prm)
   directory = prm.get("Output directory");
   vtu_interval = prm.get_double("Output interval");
   history_interval = prm.get_double("History interval");
+  contact_force_window = prm.get_double("Contact force window");
   progress_interval = prm.get_double("Progress interval");
   prm.leave_subsection();
 }

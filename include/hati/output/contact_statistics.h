@@ -45,6 +45,12 @@ public:
      * (its force impulse / dt grows as dt falls).
      */
     double peak_impulse = 0.;
+    /**
+     * Largest mean contact force over the force window (N): the largest
+     * impulse within any window of that length, divided by the length, and
+     * the end of that window (s).
+     */
+    double peak_mean_force = 0., peak_mean_force_time = 0.;
     /** Total time without push after the first push (s). */
     double uplift_time = 0.;
     /** Contact-loss episodes (start, end) in s; end < 0: still open. */
@@ -54,9 +60,13 @@ public:
   /**
    * @param contacts the contact rows (grouped by name, in order of first appearance)
    * @param initial_gaps gap of each row in the initial state (m)
+   * @param force_window window of the mean contact force (s; 0: none);
+   *        the windows of a contact closed in the initial state count once
+   *        they no longer hold its first step
    */
   ContactStatistics(const std::vector<ContactRow> &contacts,
-                    const std::vector<double> &initial_gaps);
+                    const std::vector<double> &initial_gaps,
+                    const double force_window = 0.);
 
   /**
    * Account for one step of duration @p dt (s) ending at @p time (s) with
@@ -82,7 +92,11 @@ private:
   std::vector<double> group_impulse;
   unsigned long n_steps = 0;
   std::vector<char> always_closed;
-  std::vector<char> pushing, pushed_once;
+  std::vector<char> pushing, pushed_once, initially_closed;
+  // the mean force: the last n_window impulses of every group (a ring) and their sum
+  double force_window = 0.;
+  unsigned long n_window = 0;
+  std::vector<double> window_impulses, window_sum;
 };
 } // namespace hati
 
