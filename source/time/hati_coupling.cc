@@ -150,8 +150,15 @@ HATICoupling::HATICoupling(const Decomposition &decomposition,
     rows_E.push_back(e);
     rows_I.push_back(i);
   }
-  for (auto *v :
-       {&lambda_n, &lambda_m, &delta_lambda, &v_end, &increment_sum, &increment_weighted})
+  for (auto *v : {&lambda_n,
+                  &lambda_m,
+                  &delta_lambda,
+                  &v_end,
+                  &increment_sum,
+                  &increment_weighted,
+                  &free_jump,
+                  &implicit_guess,
+                  &u_old})
     v->reinit(n_gamma);
   link_force.reinit(decomposition.parts[1].system.n_dofs());
   global_U.reinit(n_global_dofs);
@@ -535,7 +542,6 @@ void HATICoupling::step()
     if (same_active_set)
       ramp = &ramp_for(pattern);
   }
-  Vector<double> free_jump(n_gamma);
   for (unsigned int k = 0; k < n_gamma; ++k)
     free_jump[k] = rows_I[k].apply(implicit.new_velocity());
   for (unsigned int k = 0; k < n_gamma; ++k)
@@ -543,7 +549,6 @@ void HATICoupling::step()
   // the pass ran with the guess Lambda_{n+m} = Lambda_n, whose implicit
   // link part is H_I Lambda_n; the correction solves
   // H dLambda = -(C_E V_pass + C_I V_free + H_I Lambda_n)
-  Vector<double> implicit_guess(n_gamma);
   H_I.vmult(implicit_guess, lambda_n);
   delta_lambda -= implicit_guess;
   ramp->H.solve(delta_lambda);
@@ -610,7 +615,6 @@ void HATICoupling::step()
   // (G4) the implicit link with Lambda_{n+m}, its interface work
   // 1/2 dU_I . C_I^T (Lambda_n + Lambda_{n+m}) and the continuity check
   start = Clock::now();
-  Vector<double> u_old(n_gamma);
   for (unsigned int k = 0; k < n_gamma; ++k)
     u_old[k] = rows_I[k].apply(implicit.displacement());
   if (!link_columns.empty())
@@ -649,7 +653,8 @@ bool HATICoupling::superpose(const RampResponse &r, const Vector<double> &lambda
     total_impulse.resize((m + 1) * nrc);
     total_gap.resize((m + 1) * nrc);
     total_normal.resize((m + 2) * nrc);
-    Vector<double> y(nrc);
+    Vector<double> &y = contact_work_vector;
+    y.reinit(nrc, true);
     double scale = 0.;
     for (unsigned int c = 0; c < nrc; ++c)
     {

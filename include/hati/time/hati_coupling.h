@@ -324,6 +324,8 @@ private:
 
   // per macro step: C_E V integer velocity at j = m, interface increments
   Vector<double> v_end, increment_sum, increment_weighted;
+  // work vectors of step() and superpose() (no allocation per macro step)
+  Vector<double> free_jump, implicit_guess, u_old, contact_work_vector;
 
   double interface_work = 0.;
   double max_jump = 0.;
