@@ -101,6 +101,10 @@ def main():
         xa = xb = None  # compare like with like: both from contacts.csv
     print("A: %s (%s)\nB: %s (%s)" % (a.run_a, sa.get("method"), a.run_b, sb.get("method")))
     worst_time, worst_force = 0.0, 0.0
+    # the crane's wheels (summary.json "wheels") apart from the lateral and
+    # travel contacts, whose flanges chatter
+    wheels = set(sa.get("wheels", {}))
+    wheel_time, wheel_force = 0.0, 0.0
     first_episode = None
     for name in ca:
         if name not in cb:
@@ -127,6 +131,8 @@ def main():
                   % (sa.get("contact_force_window", 0.0), ma, mb, 100 * (mb - ma) / ma))
             fa, fb = ma, mb
         worst_force = max(worst_force, abs(fb - fa) / fa if fa else 0.0)
+        if name in wheels:
+            wheel_force = max(wheel_force, abs(fb - fa) / fa if fa else 0.0)
         print("  %3s %12s %12s %12s %12s %11s %11s" % ("#", "start A", "end A", "start B",
                                                     "end B", "d start", "d end"))
         for k in range(max(len(ea), len(eb))):
@@ -137,6 +143,8 @@ def main():
             for d in (ds, de):
                 if d is not None:
                     worst_time = max(worst_time, abs(d))
+                    if name in wheels:
+                        wheel_time = max(wheel_time, abs(d))
             print("  %3d %12s %12s %12s %12s %11s %11s" % (
                 k + 1, fmt(sa_), fmt(ea_), fmt(sb_), fmt(eb_),
                 "-" if ds is None else "%+.2e" % ds, "-" if de is None else "%+.2e" % de))
@@ -146,6 +154,9 @@ def main():
                                                                    sb["wall_time"])
     print("\nlargest difference of episode start/end times: %.3e s; of peak forces: %.2f %%"
           % (worst_time, 100 * worst_force))
+    if wheels:
+        print("wheels only (summary.json \"wheels\"): largest difference of episode start/end "
+              "times %.3e s; of peak forces %.2f %%" % (wheel_time, 100 * wheel_force))
     print("wall time of the time stepping: A %.3f s, B %.3f s, speed-up of B over A %.2f"
           % (wa, wb, wa / wb if wb > 0 else float("nan")))
     if a.monitor:
