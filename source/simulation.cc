@@ -394,6 +394,7 @@ void Simulation::run_transient(Integrator &integrator,
     initial_gaps.push_back(c.initial_gap + c.apply(system.initial_displacement));
   ContactStatistics statistics(
       system.contacts, initial_gaps, output_parameters.contact_force_window);
+  writer.set_initial_contacts(initial_gaps);
 
   // HATI: contact statistics and contacts.csv rows at the micro steps
   unsigned long micro_step = 0;

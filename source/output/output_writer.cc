@@ -119,6 +119,13 @@ void OutputWriter::write_contacts(const OutputState &s)
   flush_if_due();
 }
 
+void OutputWriter::set_initial_contacts(const std::vector<double> &initial_gaps)
+{
+  for (unsigned int k = 0; k < initial_gaps.size() && k < contact_group.size(); ++k)
+    if (initial_gaps[k] <= 0.)
+      group_was_pushing[contact_group[k]] = true;
+}
+
 void OutputWriter::track_contacts(const std::vector<double> &gaps,
                                   const std::vector<double> &impulses)
 {

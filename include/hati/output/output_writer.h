@@ -83,6 +83,12 @@ public:
   void track_contacts(const std::vector<double> &gaps,
                       const std::vector<double> &impulses);
   /**
+   * The contacts touching in the initial state (@p initial_gaps <= 0, m)
+   * count as pushing before the first step: a start at rest on them is no
+   * impact (as in ContactStatistics).
+   */
+  void set_initial_contacts(const std::vector<double> &initial_gaps);
+  /**
    * Write every buffered row to its file, checking the writes and that the
    * directory still exists; throws a one-line message naming the file and
    * the system error.
