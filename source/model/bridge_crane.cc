@@ -533,10 +533,10 @@ DecompositionParameters BridgeCrane::default_decomposition() const
                z = 0.25 * trolley_height; // girders and end carriages lie at z = 0
   if (hz > 0.)
   {
-    // girder cells around the trolley wheels' rail nodes
+    // girder cells around the trolley wheels' rail nodes, and between
+    // them: one zone per girder (two interface nodes instead of four)
     for (const double x : {-a, a})
-      for (const double y : {y1, y2})
-        d.boxes.push_back({{x - eps, x + eps, y - hz - eps, y + hz + eps, -z, z}});
+      d.boxes.push_back({{x - eps, x + eps, y1 - hz - eps, y2 + hz + eps, -z, z}});
     // end carriage cells around the crane wheels (at the carriage ends),
     // when they are contacts
     for (const double y : crane.crane_wheels == "contacts" ? std::vector<double>{0., S}

@@ -91,8 +91,10 @@ public:
   /**
    * The trolley members and the cells of girder and end carriage whose
    * centres lie within half the `Explicit zone length` of a wheel (boxes
-   * around the wheels' rail nodes): the subdomain of Method = HATI when
-   * `Model/Decomposition` is empty.
+   * around the wheels' rail nodes), and the girder cells between the two
+   * trolley wheels on it (one zone per girder: two interface nodes instead
+   * of four, the interface problem G3' is 2/3 the size): the subdomain of
+   * Method = HATI when `Model/Decomposition` is empty.
    */
   DecompositionParameters default_decomposition() const override;
 
