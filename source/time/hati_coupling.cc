@@ -231,6 +231,10 @@ void HATICoupling::precompute_ramp_response()
       if (reach[i] || contacts_in_reach)
         reach_dofs.push_back(i);
     const unsigned int nR = reach_dofs.size();
+    reach_is_all = nR == system.n_dofs();
+    reach_mass.reinit(nR);
+    for (unsigned int r = 0; r < nR; ++r)
+      reach_mass[r] = system.lumped_mass[reach_dofs[r]];
     pass_velocity_reach.assign(m + 1, Vector<double>(nR));
     pass_damping_reach.assign(m + 1, Vector<double>(nR));
   }
@@ -425,16 +429,14 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
   if (record_damping)
   {
     const Vector<double> &d = *explicit_integrator.linear_state()[3];
-    for (unsigned int r = 0; r < reach_dofs.size(); ++r)
-      pass_damping_reach[0][r] = d[reach_dofs[r]];
+    gather_reach(d, pass_damping_reach[0]);
   }
   for (unsigned int j = 1; j <= m; ++j)
   {
     if (record_damping)
     {
       const Vector<double> &V = *explicit_integrator.linear_state()[1];
-      for (unsigned int r = 0; r < reach_dofs.size(); ++r)
-        pass_velocity_reach[j][r] = V[reach_dofs[r]];
+      gather_reach(V, pass_velocity_reach[j]);
     }
     // interface displacement increment of this step, dt C_E V_{j-1/2}
     const Vector<double> &V = *explicit_integrator.linear_state()[1];
@@ -464,8 +466,7 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
     if (record_damping)
     {
       const Vector<double> &d = *explicit_integrator.linear_state()[3];
-      for (unsigned int r = 0; r < reach_dofs.size(); ++r)
-        pass_damping_reach[j][r] = d[reach_dofs[r]];
+      gather_reach(d, pass_damping_reach[j]);
     }
     if (record_contacts)
     {
@@ -760,6 +761,15 @@ bool HATICoupling::superpose(const RampResponse &r, const Vector<double> &lambda
   return true;
 }
 
+void HATICoupling::gather_reach(const Vector<double> &source, Vector<double> &reach) const
+{
+  if (reach_is_all)
+    std::copy(source.begin(), source.begin() + reach.size(), reach.begin());
+  else
+    for (unsigned int r = 0; r < reach_dofs.size(); ++r)
+      reach[r] = source[reach_dofs[r]];
+}
+
 void HATICoupling::take_sample(ContactSample &s) const
 {
   s.time = explicit_integrator.time();
@@ -780,7 +790,7 @@ double HATICoupling::ramp_dissipation(const RampResponse &ramp,
   // pass; with v = v_a + v_r Lambda and d = d_a + d_r Lambda the rest is
   // 1/2 sum_j [v_a . M D_r + (v_r Lambda) . M (D_a + D_r)], D = d_{j-1} + d_j,
   // nonzero on the DoFs the ramp reaches only
-  const Vector<double> &mass = decomposition.parts[0].system.lumped_mass;
+  const double *const mass = reach_mass.data();
   const unsigned int nR = reach_dofs.size();
   for (auto *v : {&ramp_velocity_reach, &ramp_damping_reach, &ramp_damping_prev})
     if (v->size() != nR)
@@ -799,7 +809,7 @@ double HATICoupling::ramp_dissipation(const RampResponse &ramp,
     {
       const double D_r = b_prev[r] + d_ramp[r];
       const double D_a = d_a0[r] + d_a1[r];
-      sum += mass[reach_dofs[r]] * (v_a[r] * D_r + a[r] * (D_a + D_r));
+      sum += mass[r] * (v_a[r] * D_r + a[r] * (D_a + D_r));
       b_prev[r] = d_ramp[r];
     }
   }

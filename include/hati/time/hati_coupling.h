@@ -347,6 +347,12 @@ private:
   // reaches, the ramp's velocities V_{j-1/2} and damping forces d_j per
   // micro step (|R| x n_G each) and those of the first pass.
   std::vector<unsigned int> reach_dofs;
+  /** reach_dofs is every explicit DoF in order (contacts within reach). */
+  bool reach_is_all = false;
+  /** Lumped mass on the reach (kg). */
+  Vector<double> reach_mass;
+  /** @p reach = @p source on reach_dofs. */
+  void gather_reach(const Vector<double> &source, Vector<double> &reach) const;
   std::vector<Vector<double>> pass_velocity_reach, pass_damping_reach;
   mutable Vector<double> ramp_velocity_reach, ramp_damping_reach, ramp_damping_prev;
   /** The dissipated energy of the ramp part @p r Lambda after the pass (G3', A7). */
