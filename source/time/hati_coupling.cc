@@ -420,11 +420,15 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
   const bool record_damping = !reach_dofs.empty() && pass;
   const auto &contacts = decomposition.parts[0].system.contacts;
   const unsigned int nrc = reach_contacts.size();
+  // the normal velocities L V_{j-1/2} before each micro step: the first
+  // here, the others from the sample after the step before (take_sample)
   if (record_contacts)
     for (unsigned int c = 0; c < nrc; ++c)
     {
       pass_impulse[c] = explicit_integrator.impulses()[reach_contacts[c]];
       pass_gap[c] = explicit_integrator.gaps()[reach_contacts[c]];
+      pass_normal[nrc + c] =
+          contacts[reach_contacts[c]].apply(explicit_integrator.velocity());
     }
   if (record_damping)
   {
@@ -440,9 +444,6 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
     }
     // interface displacement increment of this step, dt C_E V_{j-1/2}
     const Vector<double> &V = *explicit_integrator.linear_state()[1];
-    if (record_contacts)
-      for (unsigned int c = 0; c < nrc; ++c)
-        pass_normal[j * nrc + c] = contacts[reach_contacts[c]].apply(V);
     for (unsigned int k = 0; k < n_gamma; ++k)
     {
       const double du = dt * rows_E[k].apply(V);
@@ -472,12 +473,14 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
     {
       if (n_recorded == contact_record.size())
         contact_record.emplace_back();
-      take_sample(contact_record[n_recorded++]);
+      const ContactSample &s = contact_record[n_recorded++];
+      take_sample(contact_record[n_recorded - 1]);
       for (unsigned int c = 0; c < nrc; ++c)
       {
         const unsigned int k = reach_contacts[c];
         pass_impulse[j * nrc + c] = explicit_integrator.impulses()[k];
         pass_gap[j * nrc + c] = explicit_integrator.gaps()[k];
+        pass_normal[(j + 1) * nrc + c] = s.normal_velocities[k];
       }
     }
     else if (after_micro_step)
@@ -486,10 +489,6 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
       after_micro_step(sample);
     }
   }
-  if (record_contacts)
-    for (unsigned int c = 0; c < nrc; ++c)
-      pass_normal[(m + 1) * nrc + c] =
-          contacts[reach_contacts[c]].apply(explicit_integrator.velocity());
 }
 
 void HATICoupling::step()
