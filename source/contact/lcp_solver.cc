@@ -3,6 +3,7 @@
 #include <hati/contact/lcp_solver.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -27,43 +28,61 @@ bool enumerate(const FullMatrix<double> &W,
   const double tol = 1e-12 * std::max(scale, 1e-300);
 
   // visit subsets by increasing size
-  std::vector<unsigned int> masks(1u << n);
-  for (unsigned int s = 0; s < masks.size(); ++s)
-    masks[s] = s;
-  std::stable_sort(masks.begin(),
-                   masks.end(),
-                   [](unsigned int a, unsigned int b)
-                   { return __builtin_popcount(a) < __builtin_popcount(b); });
+  // the active sets by size (smallest first), and the work matrices of
+  // each size: built once per thread, no allocation afterwards
+  static thread_local std::array<std::vector<unsigned int>, 13> sorted_masks;
+  static thread_local std::array<FullMatrix<double>, 13> Wss_of_size, inv_of_size;
+  static thread_local std::array<Vector<double>, 13> rhs_of_size, ls_of_size;
+  std::vector<unsigned int> &masks = sorted_masks[n];
+  if (masks.empty())
+  {
+    masks.resize(1u << n);
+    for (unsigned int s = 0; s < masks.size(); ++s)
+      masks[s] = s;
+    std::stable_sort(masks.begin(),
+                     masks.end(),
+                     [](unsigned int a, unsigned int b)
+                     { return __builtin_popcount(a) < __builtin_popcount(b); });
+  }
 
+  std::array<unsigned int, 12> set_entries;
   for (const unsigned int mask : masks)
   {
     if ((mask & bilateral_mask) != bilateral_mask)
       continue; // bilateral rows are always in the active set
-    std::vector<unsigned int> set;
+    unsigned int set_size = 0;
     for (unsigned int i = 0; i < n; ++i)
       if (mask & (1u << i))
-        set.push_back(i);
+        set_entries[set_size++] = i;
+    const auto set = [&](const unsigned int a) { return set_entries[a]; };
     lambda = 0.;
-    if (!set.empty())
+    if (set_size > 0)
     {
-      FullMatrix<double> Wss(set.size(), set.size());
-      Vector<double> rhs(set.size());
-      for (unsigned int a = 0; a < set.size(); ++a)
+      FullMatrix<double> &Wss = Wss_of_size[set_size];
+      Vector<double> &rhs = rhs_of_size[set_size];
+      if (Wss.m() != set_size)
       {
-        rhs[a] = -q[set[a]];
-        for (unsigned int b = 0; b < set.size(); ++b)
-          Wss(a, b) = W(set[a], set[b]);
+        Wss.reinit(set_size, set_size);
+        inv_of_size[set_size].reinit(set_size, set_size);
+        rhs.reinit(set_size);
+        ls_of_size[set_size].reinit(set_size);
+      }
+      for (unsigned int a = 0; a < set_size; ++a)
+      {
+        rhs[a] = -q[set(a)];
+        for (unsigned int b = 0; b < set_size; ++b)
+          Wss(a, b) = W(set(a), set(b));
       }
       // skip singular principal submatrices (redundant contacts)
       double wmax = 0.;
-      for (unsigned int a = 0; a < set.size(); ++a)
+      for (unsigned int a = 0; a < set_size; ++a)
         wmax = std::max(wmax, std::abs(Wss(a, a)));
       if (wmax == 0.)
         continue;
       const double det = Wss.determinant();
-      if (set.size() <= 3 && std::abs(det) < 1e-14 * std::pow(wmax, set.size()))
+      if (set_size <= 3 && std::abs(det) < 1e-14 * std::pow(wmax, set_size))
         continue;
-      FullMatrix<double> inv(set.size(), set.size());
+      FullMatrix<double> &inv = inv_of_size[set_size];
       try
       {
         inv.invert(Wss);
@@ -72,15 +91,15 @@ bool enumerate(const FullMatrix<double> &W,
       {
         continue;
       }
-      Vector<double> ls(set.size());
+      Vector<double> &ls = ls_of_size[set_size];
       inv.vmult(ls, rhs);
       bool ok = true;
-      for (unsigned int a = 0; a < set.size(); ++a)
+      for (unsigned int a = 0; a < set_size; ++a)
       {
-        const bool free_sign = (bilateral_mask >> set[a]) & 1u;
+        const bool free_sign = (bilateral_mask >> set(a)) & 1u;
         if (!std::isfinite(ls[a]) || (!free_sign && ls[a] < -tol / wmax))
           ok = false;
-        lambda[set[a]] = free_sign ? ls[a] : std::max(0., ls[a]);
+        lambda[set(a)] = free_sign ? ls[a] : std::max(0., ls[a]);
       }
       if (!ok)
         continue;
@@ -136,12 +155,23 @@ Vector<double> solve_lcp(const FullMatrix<double> &W,
                          const Vector<double> &q,
                          const std::vector<bool> &bilateral)
 {
+  Vector<double> lambda(q.size());
+  solve_lcp(W, q, bilateral, lambda);
+  return lambda;
+}
+
+void solve_lcp(const FullMatrix<double> &W,
+               const Vector<double> &q,
+               const std::vector<bool> &bilateral,
+               Vector<double> &lambda)
+{
   const bool has_bilateral =
       std::find(bilateral.begin(), bilateral.end(), true) != bilateral.end();
   const unsigned int n = q.size();
-  Vector<double> lambda(n);
+  if (lambda.size() != n)
+    lambda.reinit(n);
   if (n == 0)
-    return lambda;
+    return;
   for (unsigned int i = 0; i < n; ++i)
     AssertThrow(W(i, i) > 0.,
                 ExcMessage("contact LCP: a contact acts on degrees of freedom without "
@@ -149,7 +179,7 @@ Vector<double> solve_lcp(const FullMatrix<double> &W,
   if (n == 1)
   {
     lambda[0] = has_bilateral ? -q[0] / W(0, 0) : std::max(0., -q[0] / W(0, 0));
-    return lambda;
+    return;
   }
   const bool ok = (n <= 12) ? enumerate(W, q, bilateral, lambda)
                             : projected_gauss_seidel(W, q, bilateral, lambda);
@@ -160,6 +190,5 @@ Vector<double> solve_lcp(const FullMatrix<double> &W,
       << " coupled contacts (W not positive semi-definite, or PGS did not converge)";
     AssertThrow(false, ExcMessage(s.str()));
   }
-  return lambda;
 }
 } // namespace hati

@@ -533,8 +533,21 @@ void CDLagrange::apply_contacts()
       continue;
     }
     cluster_rows.resize(m);
-    Vector<double> q(m);
-    std::vector<bool> bilateral(m);
+    // work vectors per cluster size (no allocation once a size was seen)
+    if (lcp_q.size() <= m)
+    {
+      lcp_q.resize(m + 1);
+      lcp_lambda.resize(m + 1);
+      lcp_W.resize(m + 1);
+      lcp_bilateral.resize(m + 1);
+    }
+    Vector<double> &q = lcp_q[m];
+    std::vector<bool> &bilateral = lcp_bilateral[m];
+    if (q.size() != m)
+    {
+      q.reinit(m);
+      bilateral.resize(m);
+    }
     for (unsigned int a = 0; a < m; ++a)
     {
       cluster_rows[a] = &system.contacts[cluster[a]];
@@ -543,18 +556,20 @@ void CDLagrange::apply_contacts()
       q[a] = cluster_rows[a]->apply(v) +
              cluster_rows[a]->restitution * cluster_rows[a]->apply(*V_prev);
     }
-    const FullMatrix<double> W = delassus(cluster_rows, minv);
-    Vector<double> l(m);
+    FullMatrix<double> &W = lcp_W[m];
+    delassus(cluster_rows, minv, W);
+    Vector<double> &l = lcp_lambda[m];
     if (prescribed)
     {
       // bilateral: W lambda = -q on the prescribed active set
       FullMatrix<double> W_inverse(W);
       W_inverse.gauss_jordan();
+      l.reinit(m);
       W_inverse.vmult(l, q);
       l *= -1.;
     }
     else
-      l = solve_lcp(W, q, bilateral);
+      solve_lcp(W, q, bilateral, l);
 
     // V_{n+3/2} = V_free + M^-1 L^T lambda  (A5); lambda is an impulse (A6)
     for (unsigned int a = 0; a < m; ++a)

@@ -34,6 +34,16 @@ using namespace dealii;
 Vector<double> solve_lcp(const FullMatrix<double> &W,
                          const Vector<double> &q,
                          const std::vector<bool> &bilateral = {});
+
+/**
+ * The same into @p lambda (resized to the size of @p q): no allocation
+ * once the clusters of every size up to 12 have been seen (the time step's
+ * hot path).
+ */
+void solve_lcp(const FullMatrix<double> &W,
+               const Vector<double> &q,
+               const std::vector<bool> &bilateral,
+               Vector<double> &lambda);
 } // namespace hati
 
 #endif

@@ -47,11 +47,13 @@ struct SparseRow
  * `c_a c_b / m` over the DoFs the two rows share.
  */
 template <class Row>
-FullMatrix<double> delassus(const std::vector<const Row *> &rows,
-                            const Vector<double> &inverse_mass)
+void delassus(const std::vector<const Row *> &rows,
+              const Vector<double> &inverse_mass,
+              FullMatrix<double> &W)
 {
   const unsigned int m = rows.size();
-  FullMatrix<double> W(m, m);
+  if (W.m() != m || W.n() != m)
+    W.reinit(m, m);
   for (unsigned int a = 0; a < m; ++a)
     for (unsigned int b = 0; b < m; ++b)
     {
@@ -63,6 +65,15 @@ FullMatrix<double> delassus(const std::vector<const Row *> &rows,
                  inverse_mass[rows[a]->dofs[i]];
       W(a, b) = w;
     }
+}
+
+/** The Delassus matrix of @p rows as a new matrix (see above). */
+template <class Row>
+FullMatrix<double> delassus(const std::vector<const Row *> &rows,
+                            const Vector<double> &inverse_mass)
+{
+  FullMatrix<double> W;
+  delassus(rows, inverse_mass, W);
   return W;
 }
 } // namespace hati

@@ -255,6 +255,10 @@ private:
   std::vector<unsigned int> active_list, cluster;
   std::vector<bool> clustered;
   std::vector<const ContactRow *> cluster_rows;
+  // the LCP of a cluster of each size: q, lambda, W, bilateral flags
+  std::vector<Vector<double>> lcp_q, lcp_lambda;
+  std::vector<FullMatrix<double>> lcp_W;
+  std::vector<std::vector<bool>> lcp_bilateral;
   double contact_work = 0.;
   double time_dependent_work = 0.;
 };
