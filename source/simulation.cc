@@ -446,7 +446,7 @@ void Simulation::run_transient(Integrator &integrator,
         break;
     }
   }
-  writer.flush();
+  writer.finish();
 
   const auto [drift, scale] = writer.energy_balance();
   const double wall = progress.wall_time();
@@ -673,7 +673,7 @@ void Simulation::run_event_driven()
         break;
     }
   }
-  writer.flush();
+  writer.finish();
   const auto [drift, scale] = writer.energy_balance();
   write_summary(
       output_directory + "/summary.json",
