@@ -2,12 +2,15 @@
 # Fuzz the input readers of hati with libFuzzer, AddressSanitizer and
 # UndefinedBehaviorSanitizer (doc/user_guide.md, "Fuzzing"): the .prm front
 # end (fuzz_prm: parse, parameter structs, model build, accelerograms,
-# decomposition), the Gmsh frame reader (fuzz_gmsh: read_gmsh_frame and the
-# frame built from the mesh) and the accelerogram reader (fuzz_accelerogram:
-# PEER .AT2 and two-column files).
+# decomposition), the command-line overrides (fuzz_set: --set
+# "Subsection/Entry=value" lines, then the same front end), the Gmsh frame
+# reader (fuzz_gmsh: read_gmsh_frame and the frame built from the mesh) and
+# the accelerogram reader (fuzz_accelerogram: PEER .AT2 and two-column
+# files).
 #
 # Usage: bench/fuzz.sh [seconds per harness, default 600] [harness ...]
-#   harness: prm, gmsh, accelerogram (default: all three, one after the other)
+#   harness: prm, set, gmsh, accelerogram (default: all four, one after the
+#   other)
 # Environment: FUZZ_TIMEOUT (s per input before it counts as a hang,
 #   default 10), FUZZ_RSS_MB (memory limit, default 2048), FUZZ_JOBS (harnesses
 #   run at the same time, default 1).
@@ -29,7 +32,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-600}
 shift || true
 harnesses=("$@")
-[ ${#harnesses[@]} -gt 0 ] || harnesses=(prm gmsh accelerogram)
+[ ${#harnesses[@]} -gt 0 ] || harnesses=(prm set gmsh accelerogram)
 timeout_s=${FUZZ_TIMEOUT:-10}
 rss_mb=${FUZZ_RSS_MB:-2048}
 jobs=${FUZZ_JOBS:-1}
@@ -41,9 +44,9 @@ case "$seconds" in
 esac
 for h in "${harnesses[@]}"; do
   case "$h" in
-    prm | gmsh | accelerogram) ;;
+    prm | set | gmsh | accelerogram) ;;
     *)
-      echo "bench/fuzz.sh: error: unknown harness '$h' (prm, gmsh or accelerogram)" >&2
+      echo "bench/fuzz.sh: error: unknown harness '$h' (prm, set, gmsh or accelerogram)" >&2
       exit 2
       ;;
   esac
@@ -81,6 +84,8 @@ done
 for h in "${harnesses[@]}"; do
   case "$h" in
     prm) cp parameter_files/*.prm build-fuzz/seeds/prm/ ;;
+    set) /usr/bin/python3 bench/fuzz/prm_to_set.py build-fuzz/seeds/set parameter_files/*.prm \
+      bench/fuzz/seeds/prm/*.prm ;;
     gmsh) cp parameter_files/*.msh build-fuzz/seeds/gmsh/ ;;
     accelerogram) cp data/accelerograms/*.AT2 build-fuzz/seeds/accelerogram/ ;;
   esac
@@ -96,6 +101,7 @@ run_one() {
   local h=$1 dict=() max_len
   case "$h" in
     prm) max_len=8192 dict=(-dict=bench/fuzz/prm.dict) ;;
+    set) max_len=8192 dict=(-dict=bench/fuzz/set.dict) ;;
     gmsh) max_len=8192 dict=(-dict=bench/fuzz/gmsh.dict) ;;
     accelerogram) max_len=4096 dict=(-dict=bench/fuzz/accelerogram.dict) ;;
   esac

@@ -15,9 +15,6 @@
 
 namespace hati
 {
-namespace
-{
-/** Apply one `--set "Subsection/Entry=value"` override. */
 void apply_override(ParameterHandler &prm, const std::string &assignment)
 {
   const auto eq = assignment.find('=');
@@ -56,7 +53,6 @@ void apply_override(ParameterHandler &prm, const std::string &assignment)
               ExcMessage("--set '" + assignment + "': " + problem +
                          " (see hati --print-parameters)"));
 }
-} // namespace
 
 int run_command_line(int argc, char **argv)
 {

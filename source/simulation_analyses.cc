@@ -47,7 +47,7 @@ void Simulation::run_static()
   }
   writer.write_history(s);
   writer.write_vtu(s);
-  writer.flush();
+  writer.finish();
 
   std::cout << "  static analysis (K U = F_ext(0), " << newmark_parameters.linear_solver
             << " solver):\n";

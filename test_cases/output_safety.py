@@ -6,8 +6,8 @@ directory.
 - the next run deletes exactly the files of the previous run's manifest: a
   user's solution-00042.vtu and notes.txt survive, stale snapshots go;
 - SIGTERM and SIGINT mid-run: exit 143 / 130, history.csv and energy.csv
-  with the same number of complete rows, "status": "interrupted" and
-  time_reached in summary.json;
+  with the same number of complete rows, "status": "interrupted",
+  time_reached and n_steps (the steps done) in summary.json;
 - SIGKILL at four instants: every CSV ends on a complete line with the
   header's number of fields, solution.pvd parses and names complete VTU
   files;
@@ -162,6 +162,11 @@ for sig, code in ((signal.SIGTERM, 143), (signal.SIGINT, 130)):
                   s["time_reached"] - last, 0.5e-5, abs_tol=0.5e-5 + 1e-12)
     else:
         ctx.check_true("%s: summary.json has time_reached" % name, False)
+    # n_steps: the steps done (dt = 1e-6 s), not the 2e7 planned to t = 20 s
+    done = round(s.get("time_reached", 0.0) / s.get("dt", 1.0))
+    ctx.check_true("%s: n_steps %s = steps done to time_reached (%d), fewer than 2e7"
+                   % (name, s.get("n_steps"), done),
+                   s.get("n_steps") == done and 0 < done < 20000000)
 
 # --- SIGKILL: complete lines and a valid PVD at any instant ---
 out = os.path.join(ctx.work, "sigkill")

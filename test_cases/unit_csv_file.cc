@@ -6,8 +6,9 @@
 // - CsvFile keeps the rows in memory until flush(), then writes them whole;
 //   a write error (/dev/full: ENOSPC) throws one line naming the file and
 //   "No space left on device";
-// - write_file_atomically() replaces a file and leaves no temporary file;
-//   into a missing directory it throws naming the file.
+// - write_file_atomically() replaces a file and leaves no temporary file,
+//   with and without fsync, and into a missing directory it throws naming
+//   the file; sync_file() of a missing file throws naming it.
 // Returns non-zero on failure.
 #include <deal.II/base/exceptions.h>
 
@@ -149,6 +150,27 @@ int main()
     expect(message.find(dir + "/missing/summary.json") != std::string::npos &&
                message.find("No such file or directory") != std::string::npos,
            "into a missing directory: " + message);
+  }
+  // without fsync (a file replaced often), then made durable by sync_file()
+  hati::write_file_atomically(dir + "/solution.pvd", "<a/>\n", false);
+  hati::write_file_atomically(dir + "/solution.pvd", "<b/>\n", false);
+  hati::sync_file(dir + "/solution.pvd");
+  expect(read(dir + "/solution.pvd") == "<b/>\n" &&
+             !std::filesystem::exists(dir + "/.solution.pvd.tmp"),
+         "write_file_atomically without fsync replaces the file too");
+  {
+    std::string message;
+    try
+    {
+      hati::sync_file(dir + "/missing.pvd");
+    }
+    catch (const std::exception &e)
+    {
+      message = message_of(e);
+    }
+    expect(message.find(dir + "/missing.pvd") != std::string::npos &&
+               message.find("No such file or directory") != std::string::npos,
+           "sync_file of a missing file: " + message);
   }
   std::filesystem::remove_all(dir);
   return finish();

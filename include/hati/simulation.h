@@ -107,6 +107,16 @@ private:
  * are printed as one line on stderr.
  */
 int run_command_line(int argc, char **argv);
+
+/**
+ * Apply one `--set "Subsection/Entry=value"` override of the command line
+ * to @p prm (whose parameters are declared, at its top level): the path
+ * before `=` is split at `/` into subsections and the entry, each trimmed,
+ * and the trimmed value set. Throws a one-line message naming the
+ * assignment if there is no `=`, the entry is not declared or the value
+ * does not match its pattern; @p prm is back at its top level either way.
+ */
+void apply_override(ParameterHandler &prm, const std::string &assignment);
 } // namespace hati
 
 #endif

@@ -6,6 +6,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <hati/model/memory_estimate.h>
 #include <hati/model/solid.h>
 
 #include <cmath>
@@ -76,6 +77,15 @@ void Solid::build(const CommonModelParameters &common, DiscreteSystem &system)
   // colorized boundary ids: 0 x = 0, 1 x = L, 2/3 y = -+b/2, 4/5 z = -+h/2
   if (triangulation.n_active_cells() == 0)
   {
+    // refuse before allocating: nx x na x na cells, 3 DoFs per vertex, and
+    // each vertex couples with the 3 x 3 x 3 (fewer on the boundary) vertices
+    // of its cells: (3 nx + 1)(3 na + 1)^2 vertex pairs of 3 x 3 nonzeros
+    const double nx = parameters.n_elements, n_across = na;
+    check_memory_estimate("Model/Solid/Number of elements and Number of elements across",
+                          nx * n_across * n_across,
+                          3. * (nx + 1.) * (n_across + 1.) * (n_across + 1.),
+                          9. * (3. * nx + 1.) * (3. * n_across + 1.) *
+                              (3. * n_across + 1.));
     GridGenerator::subdivided_hyper_rectangle(triangulation,
                                               {parameters.n_elements, na, na},
                                               Point<3>(0., -b / 2, -h / 2),

@@ -26,7 +26,7 @@ OutputWriter::OutputWriter(RunDirectory &run,
                            const DiscreteSystem &system,
                            const Model &model)
     : run(run), dir(run.path()), system(system), model(model),
-      last_flush(std::chrono::steady_clock::now())
+      last_flush(std::chrono::steady_clock::now()), last_pvd_sync(last_flush)
 {
   run.begin();
   use_shortest_numbers(section_rows);
@@ -211,8 +211,23 @@ void OutputWriter::write_vtu(const OutputState &s)
   std::ostringstream pvd;
   DataOutBase::write_pvd_record(pvd, vtu_files);
   run.create(temporary_name("solution.pvd"));
-  write_file_atomically(run.create("solution.pvd"), pvd.str());
+  // durable (fsync, about 1 ms) at most every flush_interval from the start:
+  // snapshots of a small model take less than that; finish() syncs the last
+  const auto now = std::chrono::steady_clock::now();
+  pvd_durable =
+      std::chrono::duration<double>(now - last_pvd_sync).count() >= flush_interval;
+  write_file_atomically(run.create("solution.pvd"), pvd.str(), pvd_durable);
+  if (pvd_durable)
+    last_pvd_sync = now;
   flush();
+}
+
+void OutputWriter::finish()
+{
+  flush();
+  if (!pvd_durable)
+    sync_file(dir + "/solution.pvd");
+  pvd_durable = true;
 }
 
 void OutputWriter::flush_if_due()

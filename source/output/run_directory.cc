@@ -77,6 +77,23 @@ std::string quoted(const std::string &text)
   return r + '"';
 }
 
+/**
+ * Make the rename of a file in the directory of @p filename durable: fsync
+ * the directory, best effort (a directory that cannot be opened or synced
+ * is ignored; the file itself is complete either way).
+ */
+void sync_directory_of(const std::string &filename)
+{
+  std::string directory = std::filesystem::path(filename).parent_path().string();
+  if (directory.empty())
+    directory = ".";
+  const int fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0)
+    return;
+  ::fsync(fd);
+  ::close(fd);
+}
+
 const char *const lock_name = ".hati.lock";
 const char *const manifest_name = ".hati-manifest";
 } // namespace
@@ -129,7 +146,9 @@ std::string temporary_name(const std::string &name)
   return (p.parent_path() / ("." + p.filename().string() + ".tmp")).string();
 }
 
-void write_file_atomically(const std::string &filename, const std::string &content)
+void write_file_atomically(const std::string &filename,
+                           const std::string &content,
+                           const bool durable)
 {
   const std::string temporary = temporary_name(filename);
   const int fd =
@@ -137,7 +156,11 @@ void write_file_atomically(const std::string &filename, const std::string &conte
   AssertThrow(fd >= 0,
               ExcMessage("cannot write the output file " + filename + ": " +
                          system_error_text(errno)));
-  const bool written = write_all(fd, content.data(), content.size());
+  // the content reaches the disk before the rename makes it the file: after
+  // a power failure the name holds the old or the new content, never an
+  // empty file (EINVAL: a file system without fsync)
+  const bool written = write_all(fd, content.data(), content.size()) &&
+                       (!durable || ::fsync(fd) == 0 || errno == EINVAL);
   const int error = errno;
   const bool closed = ::close(fd) == 0;
   if (!written || !closed || std::rename(temporary.c_str(), filename.c_str()) != 0)
@@ -148,6 +171,21 @@ void write_file_atomically(const std::string &filename, const std::string &conte
                 ExcMessage("cannot write the output file " + filename + ": " +
                            system_error_text(e)));
   }
+  if (durable)
+    sync_directory_of(filename);
+}
+
+void sync_file(const std::string &filename)
+{
+  const int fd = ::open(filename.c_str(), O_RDONLY | O_CLOEXEC);
+  const bool synced = fd >= 0 && (::fsync(fd) == 0 || errno == EINVAL);
+  const int error = errno;
+  if (fd >= 0)
+    ::close(fd);
+  AssertThrow(synced,
+              ExcMessage("cannot write the output file " + filename + ": " +
+                         system_error_text(error)));
+  sync_directory_of(filename);
 }
 
 RunDirectory::RunDirectory(const std::string &path, const std::string &parameters)

@@ -57,7 +57,8 @@ struct OutputState
  * numbers) and the files are flushed together, at every VTU snapshot, when
  * the buffers hold 1 MiB and at least every 2 s of wall time: every CSV
  * ends on a complete line at every instant. `solution.pvd` is replaced
- * atomically after its snapshot is complete.
+ * atomically after its snapshot is complete, and made durable (fsync) at
+ * most every 2 s and by finish().
  */
 class OutputWriter
 {
@@ -94,6 +95,11 @@ public:
    * the system error.
    */
   void flush();
+  /**
+   * flush() at the end of a run (completed or interrupted), and make
+   * `solution.pvd` durable if its last replacement was not (sync_file()).
+   */
+  void finish();
 
   unsigned int n_impacts() const { return impacts; }
   double max_penetration() const { return penetration; }
@@ -116,6 +122,9 @@ private:
   std::vector<double> group_gap, group_velocity, group_impulse;
   std::vector<unsigned int> group_rows, group_active;
   std::chrono::steady_clock::time_point last_flush;
+  /** When solution.pvd was last replaced durably; whether its last version is. */
+  std::chrono::steady_clock::time_point last_pvd_sync;
+  bool pvd_durable = true;
   std::vector<std::string> contact_names;
   std::vector<unsigned int> contact_group;
   std::vector<bool> group_was_pushing, group_pushing;
