@@ -267,7 +267,7 @@ void HATICoupling::compute_ramp(const std::vector<bool> &active_set,
   r.state.assign(ramp.linear_state().size(), SparseColumns());
   FullMatrix<double> increment_sum(n_gamma, n_gamma),
       increment_weighted(n_gamma, n_gamma);
-  r.H_E.reinit(n_gamma, n_gamma);
+  FullMatrix<double> H_E(n_gamma, n_gamma);
   r.load_work.assign(shapes.size(),
                      std::vector<Vector<double>>(m, Vector<double>(n_gamma)));
   // filled as dense per micro step, stored sparse
@@ -303,7 +303,7 @@ void HATICoupling::compute_ramp(const std::vector<bool> &active_set,
       ramp.add_force(rows_E[l], double(j) / m); // unit ramp (j/m) e_l
       if (j == m)
         for (unsigned int k = 0; k < n_gamma; ++k)
-          r.H_E(k, l) = integer_velocity(rows_E[k], ramp);
+          H_E(k, l) = integer_velocity(rows_E[k], ramp);
       ramp.finish_step(with_contacts);
       for (unsigned int c = 0; c < nrc; ++c)
       {
@@ -341,13 +341,13 @@ void HATICoupling::compute_ramp(const std::vector<bool> &active_set,
     r.velocity_damping_reach.emplace_back(velocity_reach[j], damping_reach[j]);
   r.increment_sum = SparseColumns(increment_sum);
   r.increment_weighted = SparseColumns(increment_weighted);
-  r.H_E_sparse = SparseColumns(r.H_E);
+  r.H_E = SparseColumns(H_E);
 
   // (G3') H = C_E V_ramp + gamma DT C_I M_eff^-1 C_I^T, factorised once
   r.H.reinit(n_gamma, n_gamma);
   for (unsigned int k = 0; k < n_gamma; ++k)
     for (unsigned int l = 0; l < n_gamma; ++l)
-      r.H(k, l) = r.H_E(k, l) + H_I(k, l);
+      r.H(k, l) = H_E(k, l) + H_I(k, l);
   r.H.compute_lu_factorization();
 }
 
@@ -473,8 +473,8 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
     {
       if (n_recorded == contact_record.size())
         contact_record.emplace_back();
-      const ContactSample &s = contact_record[n_recorded++];
-      take_sample(contact_record[n_recorded - 1]);
+      ContactSample &s = contact_record[n_recorded++];
+      take_sample(s);
       for (unsigned int c = 0; c < nrc; ++c)
       {
         const unsigned int k = reach_contacts[c];
@@ -740,7 +740,7 @@ bool HATICoupling::superpose(const RampResponse &r, const Vector<double> &lambda
     r.state[s].add_multiply(*state[s], lambda);
   r.increment_sum.add_multiply(increment_sum, lambda);
   r.increment_weighted.add_multiply(increment_weighted, lambda);
-  r.H_E_sparse.add_multiply(v_end, lambda);
+  r.H_E.add_multiply(v_end, lambda);
   // amplitudes at the micro-step times n dt, as the integrator takes them
   const unsigned long n0 = explicit_integrator.step_number() - m;
   double work = 0.;

@@ -271,8 +271,7 @@ private:
   struct RampResponse
   {
     std::vector<SparseColumns> state;
-    FullMatrix<double> H_E;
-    SparseColumns increment_sum, increment_weighted, H_E_sparse;
+    SparseColumns increment_sum, increment_weighted, H_E;
     std::vector<std::vector<Vector<double>>> load_work;
     // per micro step, sparse: the response spreads at the wave speed and
     // stays within the connected part of the subdomain
