@@ -376,7 +376,10 @@ void CDLagrange::free_velocity(const bool with_loads)
   // (A2)-(A3) V_free = V_{n+1/2} + dt M^-1 (F_ext(t_{n+1}) - K U_{n+1}),
   // with dt M^-1 folded into the stored operator and force; V_prev receives
   // V_free (it becomes V_{n+3/2} in finish_step())
-  const double *const a = with_loads ? dt_minv_force.data() : zero_force.data();
+  const double *a = with_loads ? dt_minv_force.data() : zero_force.data();
+  const unsigned int n_loads = with_loads ? dt_minv_load_shapes.size() : 0;
+  if (n_loads > 0)
+    a = load_step_force();
   const bool damped = this->damped();
   if (!damped)
     free_velocity_kernel(row_width,
@@ -391,7 +394,9 @@ void CDLagrange::free_velocity(const bool with_loads)
     // (A7) (1 + a0 dt/2) V_free = (1 - a0 dt/2) V_{n+1/2}
     //        + dt M^-1 (F_ext(t_{n+1}) - K U_{n+1} - a1 K V_{n+1/2}),
     // damping force D_{n+1} = a0 M (V_{n+1/2} + V_free)/2 + a1 K V_{n+1/2};
-    // its work on dU = dt V_{n+1/2} is 1/2 dU . (D_n + D_{n+1})
+    // its work on dU = dt V_{n+1/2} is 1/2 dU . (D_n + D_{n+1}) (the
+    // time-dependent loads enter V_free scaled by c2 and the rest, (1 - c2)
+    // of them, the damping force and its work)
     dissipated += damped_free_velocity_kernel(row_width,
                                               U.size(),
                                               column.data(),
@@ -405,29 +410,101 @@ void CDLagrange::free_velocity(const bool with_loads)
                                               a1,
                                               d_prev.data(),
                                               V_prev->data());
-  if (with_loads)
-    // work of the time-dependent loads, trapezoidal on the increment
-    // (the constant part is F . (U - U_0), computed at output times); the
-    // previous amplitude is taken at t_n computed as in predict(), n dt:
-    // t_{n+1} - dt can differ from it by round-off and miss a step load
-    // that starts at t_n
-    for (unsigned int l = 0; l < dt_minv_load_shapes.size(); ++l)
+}
+
+template <unsigned int L>
+void CDLagrange::load_pass(const unsigned int n, double *__restrict a)
+{
+  // L loads known at compile time (0: any number): the amplitudes,
+  // velocities and shapes in registers
+  const unsigned int n_loads = L > 0 ? L : load_amplitude.size();
+  constexpr unsigned int N = L > 0 ? L : 1;
+  if (L == 0)
+  {
+    const double *const f = dt_minv_force.data(), *const v = V->data();
+    for (unsigned int i = 0; i < n; ++i)
     {
-      const auto &load = system.time_dependent_loads[l];
-      const double s1 = load.amplitude(t), s0 = load.amplitude((n_steps - 1) * dt);
-      const double load_velocity = load_shapes[l] * (*V);
-      time_dependent_work += 0.5 * (s0 + s1) * dt * load_velocity;
-      if (!damped)
-        V_prev->add(s1, dt_minv_load_shapes[l]);
-      else
+      double ai = f[i];
+      for (unsigned int l = 0; l < n_loads; ++l)
       {
-        // (A7) the load enters V_free scaled by c2; the rest, (1 - c2) of
-        // it, is in the damping force d_{n+1} and in its work
-        V_prev->add(c2 * s1, dt_minv_load_shapes[l]);
-        d_prev.add((1. - c2) * s1, dt_minv_load_shapes[l]);
-        dissipated += 0.5 * (1. - c2) * s1 * dt * load_velocity;
+        ai += load_amplitude[l] * load_force_data[l][i];
+        load_velocity[l] += load_shape_data[l][i] * v[i];
       }
+      a[i] = ai;
     }
+    return;
+  }
+  double s[N], w[N];
+  const double *__restrict g[N], *__restrict shape[N];
+  for (unsigned int l = 0; l < N; ++l)
+  {
+    s[l] = load_amplitude[l];
+    w[l] = 0.;
+    g[l] = load_force_data[l];
+    shape[l] = load_shape_data[l];
+  }
+  const double *__restrict f = dt_minv_force.data(), *__restrict v = V->data();
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    double ai = f[i];
+    for (unsigned int l = 0; l < N; ++l)
+    {
+      ai += s[l] * g[l][i];
+      w[l] += shape[l][i] * v[i];
+    }
+    a[i] = ai;
+  }
+  for (unsigned int l = 0; l < N; ++l)
+    load_velocity[l] = w[l];
+}
+
+const double *CDLagrange::load_step_force()
+{
+  // dt M^-1 F_ext(t_{n+1}) and the load velocities shape_l . V_{n+1/2} in
+  // one pass; the work of the time-dependent loads is trapezoidal on the
+  // increment (the constant part is F . (U - U_0), computed at output
+  // times). The previous amplitude is the one at t_n computed as in
+  // predict(), n dt (t_{n+1} - dt can differ from it by round-off and miss
+  // a step load that starts at t_n), kept from the step before.
+  const unsigned int n = U.size(), n_loads = dt_minv_load_shapes.size();
+  load_amplitude.resize(n_loads);
+  load_previous_amplitude.resize(n_loads);
+  load_velocity.resize(n_loads);
+  load_shape_data.resize(n_loads);
+  load_force_data.resize(n_loads);
+  const bool previous_known = amplitude_step + 1 == n_steps;
+  for (unsigned int l = 0; l < n_loads; ++l)
+  {
+    const auto &load = system.time_dependent_loads[l];
+    load_previous_amplitude[l] =
+        previous_known ? load_amplitude[l] : load.amplitude((n_steps - 1) * dt);
+    load_amplitude[l] = load.amplitude(t);
+    load_velocity[l] = 0.;
+    load_shape_data[l] = load_shapes[l].data();
+    load_force_data[l] = dt_minv_load_shapes[l].data();
+  }
+  amplitude_step = n_steps;
+  if (step_force.size() != n)
+    step_force.reinit(n);
+  double *const a = step_force.data();
+  switch (n_loads)
+  {
+  case 1:
+    load_pass<1>(n, a);
+    break;
+  case 2:
+    load_pass<2>(n, a);
+    break;
+  case 3:
+    load_pass<3>(n, a);
+    break;
+  default:
+    load_pass<0>(n, a);
+  }
+  for (unsigned int l = 0; l < n_loads; ++l)
+    time_dependent_work +=
+        0.5 * (load_previous_amplitude[l] + load_amplitude[l]) * dt * load_velocity[l];
+  return a;
 }
 
 void CDLagrange::add_force(const SparseRow &row, const double force)

@@ -150,6 +150,7 @@ HATICoupling::HATICoupling(const Decomposition &decomposition,
     rows_E.push_back(e);
     rows_I.push_back(i);
   }
+  dofs_E = decomposition.interface[0];
   for (auto *v : {&lambda_n,
                   &lambda_m,
                   &delta_lambda,
@@ -184,7 +185,7 @@ void HATICoupling::precompute_ramp_response()
   const bool keep_columns = double(n_I) * n_gamma <= 2e7;
   if (keep_columns)
   {
-    link_columns.reinit(n_I, n_gamma);
+    link_columns.resize(std::size_t(n_I) * n_gamma);
     link_acceleration.reinit(n_I);
   }
   for (unsigned int l = 0; l < n_gamma; ++l)
@@ -198,8 +199,7 @@ void HATICoupling::precompute_ramp_response()
     for (unsigned int k = 0; k < n_gamma; ++k)
       H_I(k, l) = gamma * DT * rows_I[k].apply(x);
     if (keep_columns)
-      for (unsigned int i = 0; i < n_I; ++i)
-        link_columns(i, l) = x[i];
+      std::copy(x.begin(), x.end(), link_columns.begin() + std::size_t(l) * n_I);
   }
 
   // the explicit integrator's own code path, from rest, without loads
@@ -326,16 +326,19 @@ void HATICoupling::compute_ramp(const std::vector<bool> &active_set,
       r.state[s].add_column(*state[s]);
   }
   ramp.prescribe_active_set(nullptr);
-  const auto store =
-      [](const std::vector<FullMatrix<double>> &dense, std::vector<SparseColumns> &sparse)
+  // stored sparse with the micro steps stacked, row j nrc + c
+  const auto store = [nrc, n_gamma](const std::vector<FullMatrix<double>> &dense)
   {
-    sparse.clear();
-    for (const auto &matrix : dense)
-      sparse.emplace_back(matrix);
+    FullMatrix<double> stacked(dense.size() * nrc, n_gamma);
+    for (unsigned int j = 0; j < dense.size(); ++j)
+      for (unsigned int c = 0; c < nrc; ++c)
+        for (unsigned int l = 0; l < n_gamma; ++l)
+          stacked(j * nrc + c, l) = dense[j](c, l);
+    return SparseColumns(stacked);
   };
-  store(impulse, r.impulse);
-  store(gap, r.gap);
-  store(normal_velocity, r.normal_velocity);
+  r.impulse = store(impulse);
+  r.gap = store(gap);
+  r.normal_velocity = store(normal_velocity);
   r.velocity_damping_reach.clear();
   for (unsigned int j = 0; j < velocity_reach.size(); ++j)
     r.velocity_damping_reach.emplace_back(velocity_reach[j], damping_reach[j]);
@@ -443,12 +446,14 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
       gather_reach(V, pass_velocity_reach[j]);
     }
     // interface displacement increment of this step, dt C_E V_{j-1/2}
-    const Vector<double> &V = *explicit_integrator.linear_state()[1];
+    // (C_E: +1 on the explicit DoF of each interface pair)
+    const double *const V = explicit_integrator.linear_state()[1]->data();
+    const double weight = (2. * j - 1.) / (2. * m);
     for (unsigned int k = 0; k < n_gamma; ++k)
     {
-      const double du = dt * rows_E[k].apply(V);
+      const double du = dt * V[dofs_E[k]];
       increment_sum[k] += du;
-      increment_weighted[k] += (2. * j - 1.) / (2. * m) * du;
+      increment_weighted[k] += weight * du;
     }
     // (G2) Lambda_j = (1 - j/m) Lambda_n [+ (j/m) Lambda_{n+m}] over the step
     explicit_integrator.predict();
@@ -458,11 +463,11 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
     {
       const double lambda = w0 * lambda_n[k] + w1 * lambda_end[k];
       if (lambda != 0.)
-        explicit_integrator.add_force(rows_E[k], lambda);
+        explicit_integrator.add_dof_force(dofs_E[k], lambda);
     }
     if (j == m)
       for (unsigned int k = 0; k < n_gamma; ++k)
-        v_end[k] = integer_velocity(rows_E[k], explicit_integrator);
+        v_end[k] = explicit_integrator.integer_velocity(dofs_E[k]);
     explicit_integrator.finish_step();
     if (record_damping)
     {
@@ -619,7 +624,29 @@ void HATICoupling::step()
     u_old[k] = rows_I[k].apply(implicit.displacement());
   if (!link_columns.empty())
   {
-    link_columns.vmult(link_acceleration, lambda_m);
+    // A_link = sum_l (M_eff^-1 C_I^T)_l Lambda_l, column by column
+    const unsigned int n_I = link_acceleration.size();
+    double *__restrict a = link_acceleration.data();
+    std::fill(a, a + n_I, 0.);
+    const double *const columns = link_columns.data();
+    unsigned int l = 0;
+    for (; l + 4 <= n_gamma; l += 4) // four columns per pass over A_link
+    {
+      const double x0 = lambda_m[l], x1 = lambda_m[l + 1], x2 = lambda_m[l + 2],
+                   x3 = lambda_m[l + 3];
+      const double *__restrict c0 = columns + std::size_t(l) * n_I,
+                               *__restrict c1 = c0 + n_I, *__restrict c2 = c1 + n_I,
+                               *__restrict c3 = c2 + n_I;
+      for (unsigned int i = 0; i < n_I; ++i)
+        a[i] += c0[i] * x0 + c1[i] * x1 + c2[i] * x2 + c3[i] * x3;
+    }
+    for (; l < n_gamma; ++l)
+    {
+      const double x = lambda_m[l];
+      const double *__restrict column = columns + std::size_t(l) * n_I;
+      for (unsigned int i = 0; i < n_I; ++i)
+        a[i] += column[i] * x;
+    }
     implicit.add_link_acceleration(link_acceleration);
   }
   else
@@ -653,32 +680,30 @@ bool HATICoupling::superpose(const RampResponse &r, const Vector<double> &lambda
     total_impulse.resize((m + 1) * nrc);
     total_gap.resize((m + 1) * nrc);
     total_normal.resize((m + 2) * nrc);
-    Vector<double> &y = contact_work_vector;
-    y.reinit(nrc, true);
+    // the ramp's part of the impulses, gaps and normal velocities of all
+    // micro steps, one product each
+    for (auto *y : {&ramp_impulse, &ramp_gap})
+      if (y->size() != (m + 1) * nrc)
+        y->reinit((m + 1) * nrc);
+    if (ramp_normal.size() != (m + 2) * nrc)
+      ramp_normal.reinit((m + 2) * nrc);
+    r.impulse.vmult(ramp_impulse, lambda);
+    r.gap.vmult(ramp_gap, lambda);
+    r.normal_velocity.vmult(ramp_normal, lambda);
     double scale = 0.;
     for (unsigned int c = 0; c < nrc; ++c)
     {
       total_impulse[c] = pass_impulse[c];
       total_gap[c] = pass_gap[c];
     }
-    for (unsigned int j = 1; j <= m; ++j)
+    for (unsigned int i = nrc; i < (m + 1) * nrc; ++i)
     {
-      r.impulse[j].vmult(y, lambda);
-      for (unsigned int c = 0; c < nrc; ++c)
-      {
-        total_impulse[j * nrc + c] = pass_impulse[j * nrc + c] + y[c];
-        scale = std::max({scale, std::abs(pass_impulse[j * nrc + c]), std::abs(y[c])});
-      }
-      r.gap[j].vmult(y, lambda);
-      for (unsigned int c = 0; c < nrc; ++c)
-        total_gap[j * nrc + c] = pass_gap[j * nrc + c] + y[c];
+      total_impulse[i] = pass_impulse[i] + ramp_impulse[i];
+      scale = std::max({scale, std::abs(pass_impulse[i]), std::abs(ramp_impulse[i])});
+      total_gap[i] = pass_gap[i] + ramp_gap[i];
     }
-    for (unsigned int j = 1; j <= m + 1; ++j)
-    {
-      r.normal_velocity[j].vmult(y, lambda);
-      for (unsigned int c = 0; c < nrc; ++c)
-        total_normal[j * nrc + c] = pass_normal[j * nrc + c] + y[c];
-    }
+    for (unsigned int i = nrc; i < (m + 2) * nrc; ++i)
+      total_normal[i] = pass_normal[i] + ramp_normal[i];
     // the LCP (A5) of every micro step keeps the pushing set of the pass:
     // impulses >= 0 on it; elsewhere the contact is open (gap > 0) or its
     // velocity after the step satisfies the law without impulse, w >= 0
@@ -789,29 +814,37 @@ double HATICoupling::ramp_dissipation(const RampResponse &ramp,
   // pass; with v = v_a + v_r Lambda and d = d_a + d_r Lambda the rest is
   // 1/2 sum_j [v_a . M D_r + (v_r Lambda) . M (D_a + D_r)], D = d_{j-1} + d_j,
   // nonzero on the DoFs the ramp reaches only
-  const double *const mass = reach_mass.data();
+  // (per DoF over the micro steps, then weighted by the mass: no
+  // dependency from one DoF to the next)
   const unsigned int nR = reach_dofs.size();
-  for (auto *v : {&ramp_velocity_reach, &ramp_damping_reach, &ramp_damping_prev})
+  for (auto *v : {&ramp_velocity_reach,
+                  &ramp_damping_reach,
+                  &ramp_damping_prev,
+                  &ramp_dissipation_sum})
     if (v->size() != nR)
       v->reinit(nR);
   ramp_damping_prev = 0.;
-  double sum = 0.;
-  double *const a = ramp_velocity_reach.data(), *const d_ramp = ramp_damping_reach.data(),
-                *const b_prev = ramp_damping_prev.data();
+  ramp_dissipation_sum = 0.;
+  double *__restrict const a = ramp_velocity_reach.data(),
+                           *__restrict const d_ramp = ramp_damping_reach.data(),
+                           *__restrict const b_prev = ramp_damping_prev.data(),
+                           *__restrict const per_dof = ramp_dissipation_sum.data();
   for (unsigned int j = 1; j <= m; ++j)
   {
     ramp.velocity_damping_reach[j].vmult(lambda, a, d_ramp);
-    const double *const v_a = pass_velocity_reach[j].data(),
-                        *const d_a0 = pass_damping_reach[j - 1].data(),
-                        *const d_a1 = pass_damping_reach[j].data();
+    const double *__restrict const v_a = pass_velocity_reach[j].data(),
+                                   *__restrict const d_a0 =
+                                       pass_damping_reach[j - 1].data(),
+                                   *__restrict const d_a1 = pass_damping_reach[j].data();
     for (unsigned int r = 0; r < nR; ++r)
     {
       const double D_r = b_prev[r] + d_ramp[r];
       const double D_a = d_a0[r] + d_a1[r];
-      sum += mass[r] * (v_a[r] * D_r + a[r] * (D_a + D_r));
+      per_dof[r] += v_a[r] * D_r + a[r] * (D_a + D_r);
       b_prev[r] = d_ramp[r];
     }
   }
+  const double sum = reach_mass * ramp_dissipation_sum;
   return 0.5 * sum;
 }
 

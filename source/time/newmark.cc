@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 // Energy balance of the average acceleration scheme (beta = 1/4, gamma = 1/2)
@@ -272,20 +273,10 @@ Newmark::Newmark(const DiscreteSystem &system,
     solver->amg.initialize(solver->matrix, data);
   }
   factorization_seconds = seconds_since(start);
+  build_row_operators();
 
-  for (auto *v : {&U,
-                  &V,
-                  &A,
-                  &F,
-                  &CV,
-                  &U_star,
-                  &V_star,
-                  &rhs,
-                  &tmp,
-                  &F_new,
-                  &A_new,
-                  &CV_new,
-                  &damping_work})
+  for (auto *v :
+       {&U, &V, &A, &F, &CV, &U_star, &V_star, &rhs, &tmp, &F_new, &A_new, &CV_new})
     v->reinit(n);
   set_initial_state(system.initial_displacement, system.initial_velocity);
 }
@@ -308,26 +299,70 @@ void Newmark::mass_vmult(Vector<double> &dst, const Vector<double> &src) const
       dst[i] = system.lumped_mass[i] * src[i];
 }
 
+void Newmark::build_row_operators()
+{
+  const unsigned int n = system.n_dofs();
+  row_start.assign(1, 0);
+  row_column.clear();
+  row_stiffness.clear();
+  row_damping.clear();
+  // per row: column -> (K_ij, C_ij), the diagonal always present
+  std::map<unsigned int, std::pair<double, double>> row;
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    row.clear();
+    row[i];
+    if (system.has_stiffness())
+      for (auto it = system.stiffness.begin(i); it != system.stiffness.end(i); ++it)
+      {
+        auto &entry = row[it->column()];
+        entry.first += it->value();
+        entry.second += a1 * it->value();
+      }
+    if (use_consistent_mass)
+      for (auto it = system.consistent_mass.begin(i); it != system.consistent_mass.end(i);
+           ++it)
+        row[it->column()].second += a0 * it->value();
+    else
+      row[i].second += a0 * system.lumped_mass[i];
+    for (const auto &[column, entry] : row)
+      if (entry.first != 0. || entry.second != 0. || column == i)
+      {
+        row_column.push_back(column);
+        row_stiffness.push_back(entry.first);
+        row_damping.push_back(entry.second);
+      }
+    row_start.push_back(row_column.size());
+  }
+}
+
 void Newmark::stiffness_vmult(Vector<double> &dst, const Vector<double> &src) const
 {
-  if (system.has_stiffness())
-    system.stiffness.vmult(dst, src);
-  else
-    dst = 0.;
+  const unsigned int n = dst.size();
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    double s = 0.;
+    for (std::size_t e = row_start[i]; e < row_start[i + 1]; ++e)
+      s += row_stiffness[e] * src[row_column[e]];
+    dst[i] = s;
+  }
 }
 
 void Newmark::damping_vmult(Vector<double> &dst, const Vector<double> &src) const
 {
-  dst = 0.;
-  if (a0 != 0.)
+  if (a0 == 0. && a1 == 0.)
   {
-    mass_vmult(dst, src);
-    dst *= a0;
+    dst = 0.;
+    return;
   }
-  if (a1 != 0. && system.has_stiffness())
+  // C = a0 M + a1 K, stored (build_row_operators())
+  const unsigned int n = dst.size();
+  for (unsigned int i = 0; i < n; ++i)
   {
-    system.stiffness.vmult(damping_work, src);
-    dst.add(a1, damping_work);
+    double s = 0.;
+    for (std::size_t e = row_start[i]; e < row_start[i + 1]; ++e)
+      s += row_damping[e] * src[row_column[e]];
+    dst[i] = s;
   }
 }
 
@@ -416,21 +451,23 @@ void Newmark::free_step()
     }
   }
 
-  // (N2) M_eff A_{n+1} = F_{n+1} - C V* - K U*
+  // (N2) M_eff A_{n+1} = F_{n+1} - C V* - K U*, K and C in one pass
   const double t_new = (n_steps + 1) * dt;
   system.external_force(t_new, F_new);
-  stiffness_vmult(CV_new, U_star);
   {
-    const double *__restrict f = F_new.data(), *__restrict ku = CV_new.data();
+    const double *__restrict f = F_new.data(), *__restrict us = U_star.data(),
+                             *__restrict vs = V_star.data(),
+                             *__restrict k = row_stiffness.data(),
+                             *__restrict c = row_damping.data();
+    const unsigned int *__restrict column = row_column.data();
     double *__restrict r = rhs.data();
     for (unsigned int i = 0; i < n; ++i)
-      r[i] = system.fixed[i] ? 0. : f[i] - ku[i];
-  }
-  if (a0 != 0. || a1 != 0.)
-  {
-    damping_vmult(CV_new, V_star);
-    rhs -= CV_new;
-    zero_fixed(rhs);
+    {
+      double s = 0.;
+      for (std::size_t e = row_start[i]; e < row_start[i + 1]; ++e)
+        s += k[e] * us[column[e]] + c[e] * vs[column[e]];
+      r[i] = system.fixed[i] ? 0. : f[i] - s;
+    }
   }
   // A_n is the initial guess of CG; A_new becomes A_{n+1}
   if (!direct)
@@ -474,21 +511,25 @@ void Newmark::finish_step()
 {
   // energies: 1/2 (U_{n+1} - U_n) . (F_n + F_{n+1}) (and the damping's work)
   const unsigned int n = U.size();
-  double work = 0.;
+  const bool damped = a0 != 0. || a1 != 0.;
+  if (damped)
+    damping_vmult(CV_new, V_star);
+  double work = 0., damping = 0.;
   {
     const double *__restrict u = U.data(), *__restrict us = U_star.data(),
-                             *__restrict f = F.data(), *__restrict fn = F_new.data();
+                             *__restrict f = F.data(), *__restrict fn = F_new.data(),
+                             *__restrict cv = CV.data(), *__restrict cvn = CV_new.data();
     for (unsigned int i = 0; i < n; ++i)
-      work += (us[i] - u[i]) * (f[i] + fn[i]);
+    {
+      const double du = us[i] - u[i];
+      work += du * (f[i] + fn[i]);
+      damping += du * (cv[i] + cvn[i]);
+    }
   }
   external_work += 0.5 * work;
-  if (a0 != 0. || a1 != 0.)
+  if (damped)
   {
-    tmp = U_star;
-    tmp -= U;
-    damping_vmult(CV_new, V_star);
-    CV += CV_new;
-    dissipated += 0.5 * (tmp * CV);
+    dissipated += 0.5 * damping;
     CV.swap(CV_new);
   }
 

@@ -8,6 +8,7 @@
 #include <hati/time/newmark.h>
 
 #include <array>
+#include <limits>
 
 #include <vector>
 
@@ -87,6 +88,11 @@ public:
    * damping force D_{n+1} (A7).
    */
   void add_force(const SparseRow &row, const double force);
+  /** add_force() for a row with the coefficient 1 on DoF @p i alone. */
+  void add_dof_force(const unsigned int i, const double force)
+  {
+    (*V_prev)[i] += dt_minv[i] * force;
+  }
 
   /**
    * The velocity at the integer time t_{n+1} of DoF @p i,
@@ -205,6 +211,13 @@ public:
 
 private:
   void apply_contacts();
+  /**
+   * `dt M^-1 F_ext(t_{n+1})` with the time-dependent loads, in one pass
+   * that also books their work on the step (A2-A3); returns step_force.
+   */
+  const double *load_step_force();
+  /** The pass of load_step_force() for @p L loads (0: any number). */
+  template <unsigned int L> void load_pass(const unsigned int n, double *a);
 
   const DiscreteSystem &system;
   const double dt;
@@ -234,6 +247,13 @@ private:
   /** Zero vector: the load term of a homogeneous step. */
   Vector<double> zero_force;
   std::vector<Vector<double>> dt_minv_load_shapes;
+  /** dt M^-1 F_ext(t_{n+1}) of the current step (load_step_force()). */
+  Vector<double> step_force;
+  /** Amplitudes of the time-dependent loads at t_{n+1} and t_n, their velocities. */
+  std::vector<double> load_amplitude, load_previous_amplitude, load_velocity;
+  /** The step whose amplitudes load_amplitude holds. */
+  unsigned long amplitude_step = std::numeric_limits<unsigned long>::max();
+  std::vector<const double *> load_shape_data, load_force_data;
 
   Vector<double> U;
   Vector<double> U0;

@@ -255,6 +255,8 @@ private:
   Newmark implicit;
   const double gamma;
   std::vector<SparseRow> rows_E, rows_I;
+  /** The explicit DoF of each interface pair (rows_E: +1 on it), for the micro steps. */
+  std::vector<unsigned int> dofs_E;
 
   Vector<double> lambda_n, lambda_m;
 
@@ -276,7 +278,9 @@ private:
     // per micro step, sparse: the response spreads at the wave speed and
     // stays within the connected part of the subdomain
     std::vector<SparseRowPair> velocity_damping_reach;
-    std::vector<SparseColumns> impulse, gap, normal_velocity;
+    // (rows j * n_contacts + c: contact c of the reach after micro step j,
+    // its normal velocity before it)
+    SparseColumns impulse, gap, normal_velocity;
     LAPACKFullMatrix<double> H;
   };
   /**
@@ -297,8 +301,9 @@ private:
    */
   bool superpose(const RampResponse &r, const Vector<double> &lambda);
 
-  // (G3') the implicit part of the interface matrix, the ramp responses
-  FullMatrix<double> H_I;
+  // (G3') the implicit part of the interface matrix (a BLAS product per
+  // macro step), the ramp responses
+  LAPACKFullMatrix<double> H_I;
   RampResponse open_ramp;
   std::map<std::vector<bool>, RampResponse> pattern_ramps;
   std::unique_ptr<CDLagrange> ramp_integrator;
@@ -324,7 +329,9 @@ private:
   // per macro step: C_E V integer velocity at j = m, interface increments
   Vector<double> v_end, increment_sum, increment_weighted;
   // work vectors of step() and superpose() (no allocation per macro step)
-  Vector<double> free_jump, implicit_guess, u_old, contact_work_vector;
+  Vector<double> free_jump, implicit_guess, u_old;
+  // the ramp's part of the contact quantities of all micro steps (superpose())
+  Vector<double> ramp_impulse, ramp_gap, ramp_normal;
 
   double interface_work = 0.;
   double max_jump = 0.;
@@ -334,11 +341,11 @@ private:
   double setup = 0.;
   Vector<double> link_force;
   /**
-   * The columns M_eff^-1 C_I^T (n_I x n_G), kept when they fit in
-   * link_columns_limit entries: the link (G4) is then a product instead of
-   * a solve.
+   * The columns M_eff^-1 C_I^T (n_I x n_G, column by column), kept when
+   * they fit in 2e7 entries (160 MB): the link (G4) is then a product
+   * instead of a solve.
    */
-  FullMatrix<double> link_columns;
+  std::vector<double> link_columns;
   Vector<double> link_acceleration;
 
   // With damping (A7) the dissipated energy is bilinear in the explicit
@@ -353,7 +360,8 @@ private:
   /** @p reach = @p source on reach_dofs. */
   void gather_reach(const Vector<double> &source, Vector<double> &reach) const;
   std::vector<Vector<double>> pass_velocity_reach, pass_damping_reach;
-  mutable Vector<double> ramp_velocity_reach, ramp_damping_reach, ramp_damping_prev;
+  mutable Vector<double> ramp_velocity_reach, ramp_damping_reach, ramp_damping_prev,
+      ramp_dissipation_sum;
   /** The dissipated energy of the ramp part @p r Lambda after the pass (G3', A7). */
   double ramp_dissipation(const RampResponse &r, const Vector<double> &lambda) const;
   mutable Vector<double> global_U, global_V;
