@@ -115,6 +115,32 @@ SparseRowPair::SparseRowPair(const FullMatrix<double> &A, const FullMatrix<doubl
   }
 }
 
+void DenseColumns::vmult(Vector<double> &y, const Vector<double> &x) const
+{
+  AssertDimension(y.size(), n_rows);
+  AssertDimension(x.size(), n_columns);
+  double *__restrict a = y.data();
+  std::fill(a, a + n_rows, 0.);
+  const double *const columns = value.data();
+  unsigned int l = 0;
+  for (; l + 4 <= n_columns; l += 4)
+  {
+    const double x0 = x[l], x1 = x[l + 1], x2 = x[l + 2], x3 = x[l + 3];
+    const double *__restrict c0 = columns + std::size_t(l) * n_rows,
+                             *__restrict c1 = c0 + n_rows, *__restrict c2 = c1 + n_rows,
+                             *__restrict c3 = c2 + n_rows;
+    for (unsigned int i = 0; i < n_rows; ++i)
+      a[i] += c0[i] * x0 + c1[i] * x1 + c2[i] * x2 + c3[i] * x3;
+  }
+  for (; l < n_columns; ++l)
+  {
+    const double xl = x[l];
+    const double *__restrict column = columns + std::size_t(l) * n_rows;
+    for (unsigned int i = 0; i < n_rows; ++i)
+      a[i] += column[i] * xl;
+  }
+}
+
 std::vector<unsigned int> SparseColumns::rows() const
 {
   std::vector<unsigned int> r(row);
@@ -159,6 +185,7 @@ HATICoupling::HATICoupling(const Decomposition &decomposition,
                   &increment_weighted,
                   &free_jump,
                   &implicit_guess,
+                  &solve_work,
                   &u_old})
     v->reinit(n_gamma);
   link_force.reinit(decomposition.parts[1].system.n_dofs());
@@ -185,7 +212,7 @@ void HATICoupling::precompute_ramp_response()
   const bool keep_columns = double(n_I) * n_gamma <= 2e7;
   if (keep_columns)
   {
-    link_columns.resize(std::size_t(n_I) * n_gamma);
+    link_columns.reinit(n_I, n_gamma);
     link_acceleration.reinit(n_I);
   }
   for (unsigned int l = 0; l < n_gamma; ++l)
@@ -199,7 +226,8 @@ void HATICoupling::precompute_ramp_response()
     for (unsigned int k = 0; k < n_gamma; ++k)
       H_I(k, l) = gamma * DT * rows_I[k].apply(x);
     if (keep_columns)
-      std::copy(x.begin(), x.end(), link_columns.begin() + std::size_t(l) * n_I);
+      for (unsigned int i = 0; i < n_I; ++i)
+        link_columns(i, l) = x[i];
   }
 
   // the explicit integrator's own code path, from rest, without loads
@@ -346,12 +374,16 @@ void HATICoupling::compute_ramp(const std::vector<bool> &active_set,
   r.increment_weighted = SparseColumns(increment_weighted);
   r.H_E = SparseColumns(H_E);
 
-  // (G3') H = C_E V_ramp + gamma DT C_I M_eff^-1 C_I^T, factorised once
-  r.H.reinit(n_gamma, n_gamma);
+  // (G3') H = C_E V_ramp + gamma DT C_I M_eff^-1 C_I^T, inverted once
+  LAPACKFullMatrix<double> H(n_gamma, n_gamma);
   for (unsigned int k = 0; k < n_gamma; ++k)
     for (unsigned int l = 0; l < n_gamma; ++l)
-      r.H(k, l) = H_E(k, l) + H_I(k, l);
-  r.H.compute_lu_factorization();
+      H(k, l) = H_E(k, l) + H_I(k, l);
+  H.invert();
+  r.H_inverse.reinit(n_gamma, n_gamma);
+  for (unsigned int k = 0; k < n_gamma; ++k)
+    for (unsigned int l = 0; l < n_gamma; ++l)
+      r.H_inverse(k, l) = H(k, l);
 }
 
 const HATICoupling::RampResponse &
@@ -556,7 +588,8 @@ void HATICoupling::step()
   // H dLambda = -(C_E V_pass + C_I V_free + H_I Lambda_n)
   H_I.vmult(implicit_guess, lambda_n);
   delta_lambda -= implicit_guess;
-  ramp->H.solve(delta_lambda);
+  ramp->H_inverse.vmult(solve_work, delta_lambda);
+  delta_lambda.swap(solve_work);
   lambda_m = lambda_n;
   lambda_m += delta_lambda;
   seconds[2] += seconds_since(start);
@@ -598,7 +631,8 @@ void HATICoupling::step()
                    "Time step ratio";
         AssertThrow(false, ExcMessage(message.str()));
       }
-      ramp->H.solve(residual);
+      ramp->H_inverse.vmult(solve_work, residual);
+      residual.swap(solve_work);
       lambda_m += residual;
     }
     max_iterations = std::max(max_iterations, iterations + 1);
@@ -624,29 +658,7 @@ void HATICoupling::step()
     u_old[k] = rows_I[k].apply(implicit.displacement());
   if (!link_columns.empty())
   {
-    // A_link = sum_l (M_eff^-1 C_I^T)_l Lambda_l, column by column
-    const unsigned int n_I = link_acceleration.size();
-    double *__restrict a = link_acceleration.data();
-    std::fill(a, a + n_I, 0.);
-    const double *const columns = link_columns.data();
-    unsigned int l = 0;
-    for (; l + 4 <= n_gamma; l += 4) // four columns per pass over A_link
-    {
-      const double x0 = lambda_m[l], x1 = lambda_m[l + 1], x2 = lambda_m[l + 2],
-                   x3 = lambda_m[l + 3];
-      const double *__restrict c0 = columns + std::size_t(l) * n_I,
-                               *__restrict c1 = c0 + n_I, *__restrict c2 = c1 + n_I,
-                               *__restrict c3 = c2 + n_I;
-      for (unsigned int i = 0; i < n_I; ++i)
-        a[i] += c0[i] * x0 + c1[i] * x1 + c2[i] * x2 + c3[i] * x3;
-    }
-    for (; l < n_gamma; ++l)
-    {
-      const double x = lambda_m[l];
-      const double *__restrict column = columns + std::size_t(l) * n_I;
-      for (unsigned int i = 0; i < n_I; ++i)
-        a[i] += column[i] * x;
-    }
+    link_columns.vmult(link_acceleration, lambda_m);
     implicit.add_link_acceleration(link_acceleration);
   }
   else

@@ -70,6 +70,39 @@ private:
 };
 
 /**
+ * A small dense matrix stored column by column, the product taking four
+ * columns per pass over the result (the coupling's dense operators: the
+ * link columns M_eff^-1 C_I^T, H_I and H^-1 of G3'-G4, applied once or
+ * twice per macro step).
+ */
+class DenseColumns
+{
+public:
+  /** An @p m x @p n matrix of zeros. */
+  void reinit(const unsigned int m, const unsigned int n)
+  {
+    n_rows = m;
+    n_columns = n;
+    value.assign(std::size_t(m) * n, 0.);
+  }
+  bool empty() const { return value.empty(); }
+  double &operator()(const unsigned int i, const unsigned int j)
+  {
+    return value[std::size_t(j) * n_rows + i];
+  }
+  double operator()(const unsigned int i, const unsigned int j) const
+  {
+    return value[std::size_t(j) * n_rows + i];
+  }
+  /** y = A x (@p y keeps its size, m entries). */
+  void vmult(Vector<double> &y, const Vector<double> &x) const;
+
+private:
+  unsigned int n_rows = 0, n_columns = 0;
+  std::vector<double> value;
+};
+
+/**
  * Two matrices of the same shape stored row by row on the union of their
  * nonzero entries (the ramp's velocities and damping forces on the reach
  * at one micro step, G3' with A7): both products with one vector in one
@@ -123,7 +156,7 @@ private:
  *   `(C_E V_ramp + gamma DT C_I M_eff^-1 C_I^T) Lambda_{n+m}
  *    = -(C_E V^E_a + C_I V^I_free)`, velocity continuity at t_{n+m} with
  *   the integer-time explicit velocity; the matrix is assembled and
- *   factorised once; `V_ramp` is the explicit response to a unit ramp
+ *   inverted once (n_G x n_G, small); `V_ramp` is the explicit response to a unit ramp
  *   `(j/m) e_k` from rest, computed once with the explicit integrator's own
  *   code path, and the part `Lambda_{n+m}` is added to the explicit state
  *   by superposition;
@@ -267,7 +300,7 @@ private:
    * increments, the load work, the velocities and damping forces on the
    * reach (damped), the impulse and gap of each contact within reach after
    * every micro step and its normal velocity `L V_{j-1/2}` before it, and
-   * the factorised interface matrix `H = C_E V_ramp + gamma DT C_I
+   * the inverse of the interface matrix `H = C_E V_ramp + gamma DT C_I
    * M_eff^-1 C_I^T` (G3').
    */
   struct RampResponse
@@ -281,7 +314,8 @@ private:
     // (rows j * n_contacts + c: contact c of the reach after micro step j,
     // its normal velocity before it)
     SparseColumns impulse, gap, normal_velocity;
-    LAPACKFullMatrix<double> H;
+    /** H^-1 (inverted once, one product per solve). */
+    DenseColumns H_inverse;
   };
   /**
    * Compute @p r for the active set @p pattern of the contacts within reach
@@ -301,9 +335,8 @@ private:
    */
   bool superpose(const RampResponse &r, const Vector<double> &lambda);
 
-  // (G3') the implicit part of the interface matrix (a BLAS product per
-  // macro step), the ramp responses
-  LAPACKFullMatrix<double> H_I;
+  // (G3') the implicit part of the interface matrix, the ramp responses
+  DenseColumns H_I;
   RampResponse open_ramp;
   std::map<std::vector<bool>, RampResponse> pattern_ramps;
   std::unique_ptr<CDLagrange> ramp_integrator;
@@ -329,7 +362,7 @@ private:
   // per macro step: C_E V integer velocity at j = m, interface increments
   Vector<double> v_end, increment_sum, increment_weighted;
   // work vectors of step() and superpose() (no allocation per macro step)
-  Vector<double> free_jump, implicit_guess, u_old;
+  Vector<double> free_jump, implicit_guess, u_old, solve_work;
   // the ramp's part of the contact quantities of all micro steps (superpose())
   Vector<double> ramp_impulse, ramp_gap, ramp_normal;
 
@@ -345,7 +378,7 @@ private:
    * they fit in 2e7 entries (160 MB): the link (G4) is then a product
    * instead of a solve.
    */
-  std::vector<double> link_columns;
+  DenseColumns link_columns;
   Vector<double> link_acceleration;
 
   // With damping (A7) the dissipated energy is bilinear in the explicit
