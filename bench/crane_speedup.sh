@@ -12,21 +12,45 @@
 # Fig. 9 (tw1.uz, full explicit vs HATI, with a zoom) as crane_fig9.png.
 # Goal (issue #6): speed-up >= 5 (aim 10), contact-loss times within 2 ms,
 # peak forces within 5 %.
-# Usage: bench/crane_speedup.sh [END_TIME [build directory]]
+# On a shared virtual machine the wall times of identical runs vary by 10-20 %
+# with the load of the host: REPEAT=N runs the pair N times back to back and
+# prints the speed-up of every pair and their median (the pairs share the
+# state of the machine better than runs minutes apart).
+# Usage: [REPEAT=N] bench/crane_speedup.sh [END_TIME [build directory]]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 end_time=${1:-10}
 build=${2:-build}
+repeat=${REPEAT:-1}
 [ -x "$build/hati" ] || ./scripts/setup.sh hati
 out=output/bench_crane
 mkdir -p "$out"
-for run in full_explicit hati; do
-  echo "== bridge_crane_$run.prm, $end_time s"
-  "$build/hati" "parameter_files/bridge_crane_$run.prm" \
-    --set "Time integration/End time=$end_time" \
-    --set "Output/Output interval=0" \
-    --set "Output/Output directory=$out/$run" | grep -E "dt_crit|HATI|done|steps of"
+pairs=""
+for i in $(seq "$repeat"); do
+  for run in full_explicit hati; do
+    echo "== bridge_crane_$run.prm, $end_time s (run $i of $repeat)"
+    "$build/hati" "parameter_files/bridge_crane_$run.prm" \
+      --set "Time integration/End time=$end_time" \
+      --set "Output/Output interval=0" \
+      --set "Output/Output directory=$out/$run" | grep -E "dt_crit|HATI|done|steps of"
+  done
+  pairs="$pairs $(/usr/bin/python3 -c 'import json, sys
+e, h = (json.load(open(sys.argv[1] + "/" + r + "/summary.json"))["stepping_wall_time"]
+        for r in ("full_explicit", "hati"))
+print("%.3f:%.3f" % (e, h))' "$out")"
 done
+if [ "$repeat" -gt 1 ]; then
+  /usr/bin/python3 - $pairs <<'PY'
+import statistics, sys
+pairs = [tuple(map(float, p.split(":"))) for p in sys.argv[1:]]
+print("\npair  full explicit (s)  HATI (s)  speed-up")
+for i, (e, h) in enumerate(pairs, 1):
+    print("%4d  %17.2f  %8.2f  %8.2f" % (i, e, h, e / h))
+ratios = [e / h for e, h in pairs]
+print("speed-up over %d pairs: median %.2f, range %.2f-%.2f" % (
+    len(pairs), statistics.median(ratios), min(ratios), max(ratios)))
+PY
+fi
 /usr/bin/python3 - "$out" <<'PY'
 import json, os, sys
 out = sys.argv[1]
