@@ -111,7 +111,8 @@ double damped_free_velocity_rows(const unsigned int width,
                                  const double c2,
                                  const double a1,
                                  double *__restrict d,
-                                 double *__restrict v_new)
+                                 double *__restrict v_new,
+                                 double *__restrict kv_out)
 {
   const unsigned int w = Runtime ? width : W;
   double work = 0.;
@@ -130,6 +131,8 @@ double damped_free_velocity_rows(const unsigned int width,
     work += m[i] * v[i] * (d[i] + dn);
     d[i] = dn;
     v_new[i] = vn;
+    if (kv_out != nullptr)
+      kv_out[i] = kv;
   }
   return 0.5 * work;
 }
@@ -146,14 +149,15 @@ double damped_free_velocity_kernel(const unsigned int width,
                                    const double c2,
                                    const double a1,
                                    double *d,
-                                   double *v_new)
+                                   double *v_new,
+                                   double *kv_out)
 {
   switch (width)
   {
 #define HATI_KERNEL(W)                                                                   \
   case W:                                                                                \
     return damped_free_velocity_rows<W>(                                                 \
-        width, n, col, val, u, v, a, m, c1, c2, a1, d, v_new);
+        width, n, col, val, u, v, a, m, c1, c2, a1, d, v_new, kv_out);
     HATI_KERNEL(0)
     HATI_KERNEL(2)
     HATI_KERNEL(3)
@@ -171,7 +175,7 @@ double damped_free_velocity_kernel(const unsigned int width,
 #undef HATI_KERNEL
   default:
     return damped_free_velocity_rows<0, true>(
-        width, n, col, val, u, v, a, m, c1, c2, a1, d, v_new);
+        width, n, col, val, u, v, a, m, c1, c2, a1, d, v_new, kv_out);
   }
 }
 } // namespace
@@ -409,7 +413,8 @@ void CDLagrange::free_velocity(const bool with_loads)
                                               c2,
                                               a1,
                                               d_prev.data(),
-                                              V_prev->data());
+                                              V_prev->data(),
+                                              stiffness_velocity_out);
 }
 
 template <unsigned int L>

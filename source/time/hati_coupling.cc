@@ -11,6 +11,14 @@ namespace hati
 {
 namespace
 {
+/** The unit vector e_l of size n. */
+Vector<double> unit_vector(const unsigned int n, const unsigned int l)
+{
+  Vector<double> e(n);
+  e[l] = 1.;
+  return e;
+}
+
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(const Clock::time_point start)
@@ -99,22 +107,6 @@ void SparseColumns::add_multiply(Vector<double> &y, const Vector<double> &x) con
         y[row[e]] += value[e] * x[k];
 }
 
-SparseRowPair::SparseRowPair(const FullMatrix<double> &A, const FullMatrix<double> &B)
-{
-  AssertThrow(A.m() == B.m() && A.n() == B.n(), ExcInternalError());
-  for (unsigned int i = 0; i < A.m(); ++i)
-  {
-    for (unsigned int k = 0; k < A.n(); ++k)
-      if (A(i, k) != 0. || B(i, k) != 0.)
-      {
-        column.push_back(k);
-        value_a.push_back(A(i, k));
-        value_b.push_back(B(i, k));
-      }
-    start.push_back(column.size());
-  }
-}
-
 void DenseColumns::vmult(Vector<double> &y, const Vector<double> &x) const
 {
   AssertDimension(y.size(), n_rows);
@@ -138,6 +130,17 @@ void DenseColumns::vmult(Vector<double> &y, const Vector<double> &x) const
     const double *__restrict column = columns + std::size_t(l) * n_rows;
     for (unsigned int i = 0; i < n_rows; ++i)
       a[i] += column[i] * xl;
+  }
+}
+
+void SparseColumns::Tvmult_add(Vector<double> &g, const double *c) const
+{
+  for (unsigned int k = 0; k + 1 < start.size(); ++k)
+  {
+    double s = 0.;
+    for (std::size_t e = start[k]; e < start[k + 1]; ++e)
+      s += value[e] * c[row[e]];
+    g[k] += s;
   }
 }
 
@@ -265,6 +268,21 @@ void HATICoupling::precompute_ramp_response()
       reach_mass[r] = system.lumped_mass[reach_dofs[r]];
     pass_velocity_reach.assign(m + 1, Vector<double>(nR));
     pass_damping_reach.assign(m + 1, Vector<double>(nR));
+    pass_stiffness_reach.assign(m + 1, Vector<double>(nR));
+    if (!reach_is_all)
+      stiffness_velocity_full.reinit(system.n_dofs());
+    std::vector<int> index(system.n_dofs(), -1);
+    for (unsigned int r = 0; r < nR; ++r)
+      index[reach_dofs[r]] = r;
+    interface_reach_index.clear();
+    for (const unsigned int d : dofs_E)
+    {
+      AssertThrow(index[d] >= 0, ExcInternalError());
+      interface_reach_index.push_back(index[d]);
+    }
+    for (auto *v : {&dissipation_p, &dissipation_p_prev, &dissipation_c, &dissipation_q})
+      v->reinit(nR);
+    dissipation_g.reinit(dofs_E.size());
   }
   if (contacts_in_reach || explicit_integrator.damped())
     compute_ramp({}, open_ramp, explicit_integrator.damped());
@@ -367,9 +385,39 @@ void HATICoupling::compute_ramp(const std::vector<bool> &active_set,
   r.impulse = store(impulse);
   r.gap = store(gap);
   r.normal_velocity = store(normal_velocity);
-  r.velocity_damping_reach.clear();
-  for (unsigned int j = 0; j < velocity_reach.size(); ++j)
-    r.velocity_damping_reach.emplace_back(velocity_reach[j], damping_reach[j]);
+  r.velocity_on_reach.clear();
+  r.dissipation_quadratic = DenseColumns();
+  if (with_damping)
+  {
+    // V_j on the reach for j = 1 .. m, then V_{m+1/2} (the final state)
+    r.velocity_on_reach.resize(m + 2);
+    for (unsigned int j = 1; j <= m; ++j)
+      r.velocity_on_reach[j] = SparseColumns(velocity_reach[j]);
+    FullMatrix<double> final_velocity(nR, n_gamma);
+    for (unsigned int l = 0; l < n_gamma; ++l)
+    {
+      Vector<double> column(system.n_dofs());
+      for (unsigned int i = 0; i < system.n_dofs(); ++i)
+        column[i] = 0.;
+      r.state[1].add_multiply(column, unit_vector(n_gamma, l));
+      for (unsigned int i = 0; i < nR; ++i)
+        final_velocity(i, l) = column[reach_dofs[i]];
+    }
+    r.velocity_on_reach[m + 1] = SparseColumns(final_velocity);
+    // Q = sum_j V_j^T M (D_{j-1} + D_j), D_0 = 0 (the ramp starts at rest)
+    r.dissipation_quadratic.reinit(n_gamma, n_gamma);
+    for (unsigned int j = 1; j <= m; ++j)
+      for (unsigned int i = 0; i < nR; ++i)
+        for (unsigned int l = 0; l < n_gamma; ++l)
+        {
+          const double v = velocity_reach[j](i, l);
+          if (v == 0.)
+            continue;
+          for (unsigned int k = 0; k < n_gamma; ++k)
+            r.dissipation_quadratic(l, k) +=
+                reach_mass[i] * v * (damping_reach[j - 1](i, k) + damping_reach[j](i, k));
+        }
+  }
   r.increment_sum = SparseColumns(increment_sum);
   r.increment_weighted = SparseColumns(increment_weighted);
   r.H_E = SparseColumns(H_E);
@@ -489,7 +537,17 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
     }
     // (G2) Lambda_j = (1 - j/m) Lambda_n [+ (j/m) Lambda_{n+m}] over the step
     explicit_integrator.predict();
+    if (record_damping)
+      explicit_integrator.record_stiffness_velocity(
+          reach_is_all ? pass_stiffness_reach[j].data() : stiffness_velocity_full.data());
     explicit_integrator.free_velocity();
+    if (record_damping)
+    {
+      explicit_integrator.record_stiffness_velocity(nullptr);
+      if (!reach_is_all)
+        for (unsigned int r = 0; r < reach_dofs.size(); ++r)
+          pass_stiffness_reach[j][r] = stiffness_velocity_full[reach_dofs[r]];
+    }
     const double w0 = 1. - double(j) / m, w1 = double(j) / m;
     for (unsigned int k = 0; k < n_gamma; ++k)
     {
@@ -822,42 +880,77 @@ void HATICoupling::take_sample(ContactSample &s) const
 double HATICoupling::ramp_dissipation(const RampResponse &ramp,
                                       const Vector<double> &lambda) const
 {
-  // the integrator booked 1/2 sum_j v_j . M (d_{j-1} + d_j) with the first
-  // pass; with v = v_a + v_r Lambda and d = d_a + d_r Lambda the rest is
-  // 1/2 sum_j [v_a . M D_r + (v_r Lambda) . M (D_a + D_r)], D = d_{j-1} + d_j,
-  // nonzero on the DoFs the ramp reaches only
-  // (per DoF over the micro steps, then weighted by the mass: no
-  // dependency from one DoF to the next)
-  const unsigned int nR = reach_dofs.size();
-  for (auto *v : {&ramp_velocity_reach,
-                  &ramp_damping_reach,
-                  &ramp_damping_prev,
-                  &ramp_dissipation_sum})
-    if (v->size() != nR)
-      v->reinit(nR);
-  ramp_damping_prev = 0.;
-  ramp_dissipation_sum = 0.;
-  double *__restrict const a = ramp_velocity_reach.data(),
-                           *__restrict const d_ramp = ramp_damping_reach.data(),
-                           *__restrict const b_prev = ramp_damping_prev.data(),
-                           *__restrict const per_dof = ramp_dissipation_sum.data();
+  // With a = V_r Lambda (the ramp's velocities V_{j-1/2}) the ramp's damping
+  // force is d_r,j = alpha (a_j + a_{j+1} - f_j) + a1 S a_j (A7, alpha =
+  // a0 dt / 2, f_j: the velocity jumps of its interface ramp and contact
+  // impulses, M f_j = dt (j/m) C_E^T Lambda + L^T lambda_j), and K is
+  // symmetric, so the part of the pass and the ramp
+  //   1/2 sum_j [v_a,j . M (d_r,j-1 + d_r,j) + a_j . M (D_a,j + d_r,j-1 + d_r,j)]
+  // is 1/2 [sum_{j=1}^{m+1} c_j . a_j - alpha sum_j p_j . M f_j + Lambda^T Q
+  // Lambda] with p_j = v_a,j + v_a,j+1 (p_m = v_a,m), D_a,j = d_a,j-1 +
+  // d_a,j, c_j = alpha M (p_j + p_{j-1}) + a1 M S p_j + M D_a,j (p_0 = 0),
+  // c_{m+1} = alpha M p_m: one pass over the ramp's velocities only
+  const unsigned int nR = reach_dofs.size(), n_gamma = dofs_E.size();
+  const double dt = explicit_integrator.time_step();
+  const double alpha = 0.5 * explicit_integrator.mass_damping_coefficient() * dt,
+               a1 = explicit_integrator.stiffness_damping_coefficient();
+  const double *__restrict const mass = reach_mass.data();
+  double *__restrict const cj = dissipation_c.data();
+  dissipation_p_prev = 0.;
+  dissipation_g = 0.;
+  double impulse_term = 0.;
+  const unsigned int nrc = reach_contacts.size();
+  const bool with_impulses =
+      nrc > 0 && ramp_impulse.size() == (m + 1) * nrc && record_contacts;
+  const auto &contacts = decomposition.parts[0].system.contacts;
   for (unsigned int j = 1; j <= m; ++j)
   {
-    ramp.velocity_damping_reach[j].vmult(lambda, a, d_ramp);
-    const double *__restrict const v_a = pass_velocity_reach[j].data(),
-                                   *__restrict const d_a0 =
+    const double *__restrict const v0 = pass_velocity_reach[j].data(),
+                                   *__restrict const k0 = pass_stiffness_reach[j].data(),
+                                   *__restrict const d0 =
                                        pass_damping_reach[j - 1].data(),
-                                   *__restrict const d_a1 = pass_damping_reach[j].data();
+                                   *__restrict const d1 = pass_damping_reach[j].data();
+    const double *__restrict const v1 =
+        j < m ? pass_velocity_reach[j + 1].data() : nullptr,
+                                   *__restrict const k1 =
+                                       j < m ? pass_stiffness_reach[j + 1].data()
+                                             : nullptr;
+    double *__restrict const p = dissipation_p.data();
+    const double *__restrict const p_prev = dissipation_p_prev.data();
     for (unsigned int r = 0; r < nR; ++r)
     {
-      const double D_r = b_prev[r] + d_ramp[r];
-      const double D_a = d_a0[r] + d_a1[r];
-      per_dof[r] += v_a[r] * D_r + a[r] * (D_a + D_r);
-      b_prev[r] = d_ramp[r];
+      const double pr = v0[r] + (v1 ? v1[r] : 0.);
+      const double spr = k0[r] + (k1 ? k1[r] : 0.);
+      cj[r] = mass[r] * (alpha * (pr + p_prev[r]) + a1 * spr + d0[r] + d1[r]);
+      p[r] = pr;
     }
+    ramp.velocity_on_reach[j].Tvmult_add(dissipation_g, cj);
+    // the interface ramp's and the contacts' velocity jumps in the ramp's
+    // free velocity
+    const double s = dt * double(j) / m;
+    for (unsigned int l = 0; l < n_gamma; ++l)
+      impulse_term += p[interface_reach_index[l]] * s * lambda[l];
+    if (with_impulses)
+      for (unsigned int c = 0; c < nrc; ++c)
+      {
+        const double impulse = ramp_impulse[j * nrc + c];
+        if (impulse != 0.)
+          impulse_term += contacts[reach_contacts[c]].apply(dissipation_p) * impulse;
+      }
+    dissipation_p_prev.swap(dissipation_p);
   }
-  const double sum = reach_mass * ramp_dissipation_sum;
-  return 0.5 * sum;
+  // c_{m+1} = alpha M p_m (p_m is now in dissipation_p_prev)
+  for (unsigned int r = 0; r < nR; ++r)
+    cj[r] = mass[r] * alpha * dissipation_p_prev[r];
+  ramp.velocity_on_reach[m + 1].Tvmult_add(dissipation_g, cj);
+  double quadratic = 0.;
+  {
+    // Lambda^T Q Lambda
+    dissipation_q.reinit(n_gamma, true);
+    ramp.dissipation_quadratic.vmult(dissipation_q, lambda);
+    quadratic = lambda * dissipation_q;
+  }
+  return 0.5 * (dissipation_g * lambda - alpha * impulse_term + quadratic);
 }
 
 const Vector<double> &HATICoupling::displacement() const

@@ -88,6 +88,13 @@ public:
    * damping force D_{n+1} (A7).
    */
   void add_force(const SparseRow &row, const double force);
+  /**
+   * With a non-null @p out (n_dofs() entries), the damped steps write
+   * `S V_{n+1/2}`, `S = dt M^-1 K`, the stiffness part of the damping
+   * force (A7), into it (the coupling's dissipated energy, G3');
+   * nullptr stops it.
+   */
+  void record_stiffness_velocity(double *out) { stiffness_velocity_out = out; }
   /** add_force() for a row with the coefficient 1 on DoF @p i alone. */
   void add_dof_force(const unsigned int i, const double force)
   {
@@ -247,6 +254,8 @@ private:
   /** Zero vector: the load term of a homogeneous step. */
   Vector<double> zero_force;
   std::vector<Vector<double>> dt_minv_load_shapes;
+  /** Where the damped kernel writes S V_{n+1/2} (nullptr: nowhere). */
+  double *stiffness_velocity_out = nullptr;
   /** dt M^-1 F_ext(t_{n+1}) of the current step (load_step_force()). */
   Vector<double> step_force;
   /** Amplitudes of the time-dependent loads at t_{n+1} and t_n, their velocities. */

@@ -60,6 +60,8 @@ public:
     y = 0.;
     add_multiply(y, x);
   }
+  /** g_k += column_k . c for every column k (@p c: as many entries as rows). */
+  void Tvmult_add(Vector<double> &g, const double *c) const;
   /** Rows with an entry in any column. */
   std::vector<unsigned int> rows() const;
 
@@ -100,41 +102,6 @@ public:
 private:
   unsigned int n_rows = 0, n_columns = 0;
   std::vector<double> value;
-};
-
-/**
- * Two matrices of the same shape stored row by row on the union of their
- * nonzero entries (the ramp's velocities and damping forces on the reach
- * at one micro step, G3' with A7): both products with one vector in one
- * pass.
- */
-class SparseRowPair
-{
-public:
-  /** The nonzero entries of @p A and @p B (same size). */
-  SparseRowPair(const FullMatrix<double> &A, const FullMatrix<double> &B);
-  SparseRowPair() = default;
-  /** a = A x, b = B x (a, b: as many entries as rows). */
-  void vmult(const Vector<double> &x, double *a, double *b) const
-  {
-    const unsigned int n = start.size() - 1;
-    for (unsigned int i = 0; i < n; ++i)
-    {
-      double sa = 0., sb = 0.;
-      for (unsigned int e = start[i]; e < start[i + 1]; ++e)
-      {
-        const double xe = x[column[e]];
-        sa += value_a[e] * xe;
-        sb += value_b[e] * xe;
-      }
-      a[i] = sa;
-      b[i] = sb;
-    }
-  }
-
-private:
-  std::vector<unsigned int> start{0}, column;
-  std::vector<double> value_a, value_b;
 };
 
 /**
@@ -310,7 +277,13 @@ private:
     std::vector<std::vector<Vector<double>>> load_work;
     // per micro step, sparse: the response spreads at the wave speed and
     // stays within the connected part of the subdomain
-    std::vector<SparseRowPair> velocity_damping_reach;
+    /**
+     * The velocities V_{j-1/2} on the reach, j = 1 .. m + 1, and the
+     * quadratic form of the ramp's own dissipation,
+     * `Q = sum_j V_j^T M (D_{j-1} + D_j)` (ramp_dissipation()).
+     */
+    std::vector<SparseColumns> velocity_on_reach;
+    DenseColumns dissipation_quadratic;
     // (rows j * n_contacts + c: contact c of the reach after micro step j,
     // its normal velocity before it)
     SparseColumns impulse, gap, normal_velocity;
@@ -393,8 +366,16 @@ private:
   /** @p reach = @p source on reach_dofs. */
   void gather_reach(const Vector<double> &source, Vector<double> &reach) const;
   std::vector<Vector<double>> pass_velocity_reach, pass_damping_reach;
-  mutable Vector<double> ramp_velocity_reach, ramp_damping_reach, ramp_damping_prev,
-      ramp_dissipation_sum;
+  /** S V_{j-1/2} of the pass on the reach (S = dt M^-1 K, A7), per micro step. */
+  std::vector<Vector<double>> pass_stiffness_reach;
+  /** S V of a micro step on every explicit DoF (reach not all DoFs). */
+  Vector<double> stiffness_velocity_full;
+  /** Reach index of the explicit DoF of each interface pair. */
+  std::vector<unsigned int> interface_reach_index;
+  /** Work vectors of ramp_dissipation(). */
+  mutable Vector<double> dissipation_p, dissipation_p_prev, dissipation_c, dissipation_g,
+      dissipation_q;
+
   /** The dissipated energy of the ramp part @p r Lambda after the pass (G3', A7). */
   double ramp_dissipation(const RampResponse &r, const Vector<double> &lambda) const;
   mutable Vector<double> global_U, global_V;
