@@ -336,16 +336,23 @@ void Newmark::build_row_operators()
   }
 }
 
-void Newmark::stiffness_vmult(Vector<double> &dst, const Vector<double> &src) const
+void Newmark::row_vmult(const std::vector<double> &values,
+                        Vector<double> &dst,
+                        const Vector<double> &src) const
 {
   const unsigned int n = dst.size();
   for (unsigned int i = 0; i < n; ++i)
   {
     double s = 0.;
     for (std::size_t e = row_start[i]; e < row_start[i + 1]; ++e)
-      s += row_stiffness[e] * src[row_column[e]];
+      s += values[e] * src[row_column[e]];
     dst[i] = s;
   }
+}
+
+void Newmark::stiffness_vmult(Vector<double> &dst, const Vector<double> &src) const
+{
+  row_vmult(row_stiffness, dst, src);
 }
 
 void Newmark::damping_vmult(Vector<double> &dst, const Vector<double> &src) const
@@ -356,14 +363,7 @@ void Newmark::damping_vmult(Vector<double> &dst, const Vector<double> &src) cons
     return;
   }
   // C = a0 M + a1 K, stored (build_row_operators())
-  const unsigned int n = dst.size();
-  for (unsigned int i = 0; i < n; ++i)
-  {
-    double s = 0.;
-    for (std::size_t e = row_start[i]; e < row_start[i + 1]; ++e)
-      s += row_damping[e] * src[row_column[e]];
-    dst[i] = s;
-  }
+  row_vmult(row_damping, dst, src);
 }
 
 void Newmark::set_initial_state(const Vector<double> &U0, const Vector<double> &V0)

@@ -243,6 +243,10 @@ private:
    * costs more than the product on a small subdomain).
    */
   void build_row_operators();
+  /** dst = A src for the operator with @p values on the rows' pattern. */
+  void row_vmult(const std::vector<double> &values,
+                 Vector<double> &dst,
+                 const Vector<double> &src) const;
 
   const DiscreteSystem &system;
   const double dt;
