@@ -264,11 +264,11 @@ private:
    * The explicit response to the unit ramps `(j/m) e_l` from rest, for one
    * active set of the contacts within reach (none: the open response),
    * with what the superposition needs: the state columns, the interface
-   * increments, the load work, the velocities and damping forces on the
-   * reach (damped), the impulse and gap of each contact within reach after
-   * every micro step and its normal velocity `L V_{j-1/2}` before it, and
-   * the inverse of the interface matrix `H = C_E V_ramp + gamma DT C_I
-   * M_eff^-1 C_I^T` (G3').
+   * increments, the load work, the velocities on the reach and the
+   * quadratic form of its dissipation (damped), the impulse and gap of each contact
+   * within reach after every micro step and its normal velocity `L V_{j-1/2}` before it,
+   * and the inverse of the interface matrix `H = C_E V_ramp + gamma DT C_I M_eff^-1
+   * C_I^T` (G3').
    */
   struct RampResponse
   {
@@ -356,8 +356,9 @@ private:
 
   // With damping (A7) the dissipated energy is bilinear in the explicit
   // state: its part from the ramp response needs, on the DoFs the ramp
-  // reaches, the ramp's velocities V_{j-1/2} and damping forces d_j per
-  // micro step (|R| x n_G each) and those of the first pass.
+  // reaches, the ramp's velocities V_{j-1/2} per micro step (|R| x n_G) and
+  // the velocities, S V and damping forces of the first pass
+  // (ramp_dissipation()).
   std::vector<unsigned int> reach_dofs;
   /** reach_dofs is every explicit DoF in order (contacts within reach). */
   bool reach_is_all = false;
