@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 
 #include <hati/time/hati_coupling.h>
 
@@ -280,9 +281,10 @@ void HATICoupling::precompute_ramp_response()
       AssertThrow(index[d] >= 0, ExcInternalError());
       interface_reach_index.push_back(index[d]);
     }
-    for (auto *v : {&dissipation_p, &dissipation_p_prev, &dissipation_c, &dissipation_q})
+    for (auto *v : {&dissipation_p, &dissipation_p_prev, &dissipation_c})
       v->reinit(nR);
     dissipation_g.reinit(dofs_E.size());
+    dissipation_q.reinit(dofs_E.size());
   }
   if (contacts_in_reach || explicit_integrator.damped())
     compute_ramp({}, open_ramp, explicit_integrator.damped());
@@ -943,14 +945,8 @@ double HATICoupling::ramp_dissipation(const RampResponse &ramp,
   for (unsigned int r = 0; r < nR; ++r)
     cj[r] = mass[r] * alpha * dissipation_p_prev[r];
   ramp.velocity_on_reach[m + 1].Tvmult_add(dissipation_g, cj);
-  double quadratic = 0.;
-  {
-    // Lambda^T Q Lambda
-    dissipation_q.reinit(n_gamma, true);
-    ramp.dissipation_quadratic.vmult(dissipation_q, lambda);
-    quadratic = lambda * dissipation_q;
-  }
-  return 0.5 * (dissipation_g * lambda - alpha * impulse_term + quadratic);
+  ramp.dissipation_quadratic.vmult(dissipation_q, lambda); // Q Lambda
+  return 0.5 * (dissipation_g * lambda - alpha * impulse_term + lambda * dissipation_q);
 }
 
 const Vector<double> &HATICoupling::displacement() const

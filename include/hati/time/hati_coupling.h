@@ -2,7 +2,6 @@
 #define hati_time_hati_coupling_h
 
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <hati/contact/sparse_rows.h>
