@@ -13,7 +13,9 @@ namespace hati
 struct DirectSolver::Data
 {
   TrilinosWrappers::SparseMatrix matrix;
-  SolverControl control;
+  // quiet: the default control formats its result into deallog at every
+  // solve (a string conversion per Newmark step)
+  SolverControl control{100, 0., false, false};
   std::unique_ptr<TrilinosWrappers::SolverDirect> solver;
   // Epetra-compatible vectors of the solve
   LinearAlgebra::distributed::Vector<double> x, b;

@@ -505,6 +505,8 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
   const bool record_damping = !reach_dofs.empty() && pass;
   const auto &contacts = decomposition.parts[0].system.contacts;
   const unsigned int nrc = reach_contacts.size();
+  const unsigned int n_loads = decomposition.parts[0].system.time_dependent_loads.size();
+  pass_load_weight.resize(n_loads * m);
   // the normal velocities L V_{j-1/2} before each micro step: the first
   // here, the others from the sample after the step before (take_sample)
   if (record_contacts)
@@ -561,6 +563,9 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
       for (unsigned int k = 0; k < n_gamma; ++k)
         v_end[k] = explicit_integrator.integer_velocity(dofs_E[k]);
     explicit_integrator.finish_step();
+    if (pass)
+      for (unsigned int s = 0; s < n_loads; ++s)
+        pass_load_weight[s * m + j - 1] = explicit_integrator.load_step_weight(s);
     if (record_damping)
     {
       const Vector<double> &d = *explicit_integrator.linear_state()[3];
@@ -742,7 +747,6 @@ void HATICoupling::step()
 bool HATICoupling::superpose(const RampResponse &r, const Vector<double> &lambda)
 {
   const unsigned int nrc = reach_contacts.size();
-  const double dt = explicit_integrator.time_step();
   const DiscreteSystem &system_E = decomposition.parts[0].system;
   const bool contacts = record_contacts && nrc > 0;
   if (contacts)
@@ -838,15 +842,17 @@ bool HATICoupling::superpose(const RampResponse &r, const Vector<double> &lambda
   r.increment_sum.add_multiply(increment_sum, lambda);
   r.increment_weighted.add_multiply(increment_weighted, lambda);
   r.H_E.add_multiply(v_end, lambda);
-  // amplitudes at the micro-step times n dt, as the integrator takes them
-  const unsigned long n0 = explicit_integrator.step_number() - m;
+  // with the amplitudes of the pass's micro steps
+  const unsigned int n_gamma = lambda.size();
   double work = 0.;
   for (unsigned int s = 0; s < r.load_work.size(); ++s)
     for (unsigned int j = 1; j <= m; ++j)
     {
-      const auto &load = system_E.time_dependent_loads[s];
-      work += 0.5 * (load.amplitude((n0 + j - 1) * dt) + load.amplitude((n0 + j) * dt)) *
-              (r.load_work[s][j - 1] * lambda);
+      const double *const w = r.load_work[s][j - 1].data();
+      double p = 0.;
+      for (unsigned int l = 0; l < n_gamma; ++l)
+        p += w[l] * lambda[l];
+      work += pass_load_weight[s * m + j - 1] * p;
     }
   explicit_integrator.add_external_work(work);
   if (!reach_dofs.empty())

@@ -145,6 +145,15 @@ public:
    */
   const std::vector<Vector<double>> &applied_load_shapes() const { return load_shapes; }
 
+  /**
+   * The trapezoidal weight `1/2 (a_l(t_n) + a_l(t_{n+1}))` of time-dependent
+   * load @p l over the last step (its amplitudes as the step took them).
+   */
+  double load_step_weight(const unsigned int l) const
+  {
+    return 0.5 * (load_previous_amplitude[l] + load_amplitude[l]);
+  }
+
   /** Add @p work (J) to the external work (the coupling's superposition). */
   void add_external_work(const double work) { time_dependent_work += work; }
 

@@ -331,6 +331,8 @@ private:
   /** Fill @p sample from the explicit integrator. */
   void take_sample(ContactSample &sample) const;
 
+  // the pass's trapezoidal load weights, load s at micro step j: s m + j - 1
+  std::vector<double> pass_load_weight;
   // per macro step: C_E V integer velocity at j = m, interface increments
   Vector<double> v_end, increment_sum, increment_weighted;
   // work vectors of step() and superpose() (no allocation per macro step)
