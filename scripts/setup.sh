@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(libdeal.ii-dev numdiff libboost-program-options-dev cmake make g++
-          python3-numpy python3-matplotlib)
+          python3-numpy python3-matplotlib nlohmann-json3-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -16,7 +16,7 @@
 
 #include <hati/model/decomposition.h>
 #include <hati/model/model.h>
-#include <hati/simulation.h>
+#include <hati/run/problem.h>
 #include <hati/time/hati_coupling.h>
 
 #include <cmath>
@@ -95,21 +95,14 @@ int main(int argc, char **argv)
   for (const std::string masses : {"", "A1: 500; B1: 500; C1: 500; D1: 500"})
   {
     ParameterHandler prm;
-    Simulation::declare_parameters(prm);
+    Problem::declare_parameters(prm);
     prm.parse_input_from_string(frame_prm(masses, 2));
-    CommonModelParameters common;
-    common.parse_parameters(prm);
-    DecompositionParameters decomposition_parameters;
-    prm.enter_subsection("Model");
-    prm.enter_subsection("Decomposition");
-    decomposition_parameters.parse_parameters(prm);
-    prm.leave_subsection();
-    prm.leave_subsection();
-    std::unique_ptr<Model> model = create_model(prm);
-    DiscreteSystem system;
-    model->build(common, system);
-    Decomposition decomposition;
-    decompose(*model, common, decomposition_parameters, decomposition);
+    // the one set-up path of hati (Problem), silent
+    Problem problem(prm, ConditionalOStream(std::cout, false));
+    problem.build_system();
+    problem.decompose();
+    const DiscreteSystem &system = problem.system;
+    const Decomposition &decomposition = *problem.decomposition;
     const double dt_crit = 2. / decomposition.parts[0].system.highest_frequency_bound();
     std::cout << "frame (point masses: " << (masses.empty() ? "none" : masses)
               << "): explicit " << decomposition.parts[0].system.n_dofs()

@@ -1,13 +1,12 @@
 /**
  * @file
  * What the `.prm` and `--set` harnesses (fuzz_prm.cc, fuzz_set.cc) do once
- * the parameters are in a ParameterHandler: every parameter struct is parsed
- * as the Simulation constructor does, the model is created (`Model/Type`)
- * and built, and what Simulation::run() does before the analysis follows:
- * the accelerograms are read, the base excitation added and, for `Method =
- * HATI`, the model decomposed into its two subdomains. No output directory
- * is created. Models with more than max_elements elements are skipped
- * (large is slow, not wrong).
+ * the parameters are in a ParameterHandler: hati's one set-up path
+ * (hati::Problem) up to the analysis: every parameter struct parsed, the
+ * model created (`Model/Type`) and built, the accelerograms read, the base
+ * excitation added and, for `Method = HATI`, the model decomposed into its
+ * two subdomains. No output directory is created. Models with more than
+ * max_elements elements are skipped (large is slow, not wrong).
  */
 #ifndef hati_bench_fuzz_front_end_h
 #define hati_bench_fuzz_front_end_h
@@ -15,15 +14,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
-#include <hati/loading/accelerogram.h>
-#include <hati/loading/base_excitation.h>
-#include <hati/model/decomposition.h>
-#include <hati/model/discrete_system.h>
-#include <hati/model/model.h>
-#include <hati/parameters/run_parameters.h>
-#include <hati/simulation.h>
-#include <hati/time/hati_coupling.h>
-#include <hati/time/newmark.h>
+#include <hati/run/problem.h>
 
 #include <algorithm>
 #include <cmath>
@@ -98,70 +89,21 @@ inline bool too_large(dealii::ParameterHandler &prm)
 }
 
 /**
- * The Simulation constructor without its output directory, then
- * Simulation::run() up to the analysis, on the parameters of @p prm (at its
- * top level). Returns false if the model is skipped (too_large()); throws
- * on bad input as hati does.
+ * The set-up of every run (Problem: parameters, model, discrete system,
+ * loads and, for `Method = HATI`, the subdomains, with the model's default
+ * decomposition) without an output directory, silent, on the parameters of
+ * @p prm (at its top level). Returns false if the model is skipped
+ * (too_large()); throws on bad input as hati does.
  */
 inline bool run_front_end(dealii::ParameterHandler &prm)
 {
-  hati::AnalysisParameters analysis;
-  hati::TimeIntegrationParameters time;
-  hati::NewmarkParameters newmark;
-  hati::RayleighDamping damping;
-  hati::HATIParameters coupling;
-  hati::DecompositionParameters decomposition_parameters;
-  hati::OutputParameters output;
-  hati::CommonModelParameters common;
-  analysis.parse_parameters(prm);
-  time.parse_parameters(prm);
-  prm.enter_subsection("Time integration");
-  prm.enter_subsection("Newmark");
-  newmark.parse_parameters(prm);
-  prm.leave_subsection();
-  prm.enter_subsection("Damping");
-  damping.parse_parameters(prm);
-  prm.leave_subsection();
-  prm.enter_subsection("HATI");
-  coupling.parse_parameters(prm);
-  prm.leave_subsection();
-  prm.leave_subsection();
-  prm.enter_subsection("Model");
-  prm.enter_subsection("Decomposition");
-  decomposition_parameters.parse_parameters(prm);
-  prm.leave_subsection();
-  prm.leave_subsection();
-  output.parse_parameters(prm);
-  common.parse_parameters(prm);
-  if (too_large(prm))
+  if (too_large(prm)) // before the model's own checks
     return false;
-  const std::unique_ptr<hati::Model> model = hati::create_model(prm);
-
-  hati::DiscreteSystem system;
-  model->build(common, system);
-  hati::check_finite(system);
-  system.fill_default_mass_influence();
-  auto acceleration = hati::base_acceleration_step(common.base_acceleration,
-                                                   common.base_acceleration_start);
-  for (unsigned int d = 0; d < 3; ++d)
-    if (!common.accelerogram_files[d].empty())
-    {
-      const auto record = std::make_shared<hati::Accelerogram>(
-          hati::Accelerogram::read(common.accelerogram_files[d],
-                                   common.accelerogram_units,
-                                   common.accelerogram_scale));
-      volatile double peak = record->peak().first;
-      (void)peak;
-      const auto step = acceleration[d];
-      acceleration[d] = [record, step](const double t)
-      { return (*record)(t) + (step ? step(t) : 0.); };
-    }
-  hati::add_base_excitation(system, acceleration);
-  if (time.method == "HATI")
-  {
-    hati::Decomposition decomposition;
-    hati::decompose(*model, common, decomposition_parameters, decomposition);
-  }
+  hati::Problem problem(prm, dealii::ConditionalOStream(std::cout, false));
+  problem.build_system();
+  problem.add_loads();
+  if (problem.time_parameters.method == "HATI")
+    problem.decompose();
   return true;
 }
 } // namespace fuzz

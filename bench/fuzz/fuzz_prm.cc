@@ -3,11 +3,11 @@
  * libFuzzer harness of the `.prm` front end: the input is parsed as a `.prm`
  * file by a ParameterHandler holding every parameter of hati at its
  * defaults (declared once and reset before each input: ReusedHandler; a
- * UTF-8 byte-order mark is skipped, as `hati file.prm` does), then every parameter
- * struct is parsed as the Simulation constructor does, the model is created
- * (`Model/Type`) and built, and what Simulation::run() does before the
- * analysis follows: the accelerograms are read, the base excitation added
- * and, for `Method = HATI`, the model decomposed into its two subdomains.
+ * UTF-8 byte-order mark is skipped, as `hati file.prm` does), then hati's one
+ * set-up path (hati::Problem) runs up to the analysis: the parameters
+ * parsed, the model created (`Model/Type`) and built, the accelerograms
+ * read, the base excitation added and, for `Method = HATI`, the model
+ * decomposed into its two subdomains.
  * No output directory is created (fuzz_front_end.h). Models with more than
  * 500 elements are skipped (large is slow, not wrong). Errors thrown as
  * exceptions are the expected outcome of bad input; crashes, sanitizer

@@ -3,7 +3,6 @@
 #include <deal.II/base/exceptions.h>
 
 #include <hati/analysis/modal_damping.h>
-#include <hati/output/output_writer.h>
 
 #include <algorithm>
 #include <cmath>
@@ -90,11 +89,10 @@ ModalRayleighDamping modal_rayleigh_damping(const DiscreteSystem &system,
   return result;
 }
 
-std::vector<std::pair<std::string, std::string>>
-apply_default_damping(const Model &model,
-                      const DiscreteSystem &system,
-                      const std::string &method,
-                      RayleighDamping &damping)
+SummaryEntries apply_default_damping(const Model &model,
+                                     const DiscreteSystem &system,
+                                     const std::string &method,
+                                     RayleighDamping &damping)
 {
   const double zeta = model.default_damping_ratio();
   if (zeta <= 0. || damping.given)
@@ -114,8 +112,8 @@ apply_default_damping(const Model &model,
             << d.f_horizontal << " Hz), contacts closed: a0 = " << d.a0
             << " 1/s, a1 = " << d.a1 << " s" << std::endl;
   return {{"damping_frequencies",
-           "[" + json_number(d.f_vertical) + ", " + json_number(d.f_horizontal) + "]"},
-          {"rayleigh_a0", json_number(d.a0)},
-          {"rayleigh_a1", json_number(d.a1)}};
+           SummaryValue::list().push_back(d.f_vertical).push_back(d.f_horizontal)},
+          {"rayleigh_a0", d.a0},
+          {"rayleigh_a1", d.a1}};
 }
 } // namespace hati

@@ -1,7 +1,6 @@
 #include <deal.II/base/utilities.h>
 
 #include <hati/model/bridge_crane.h>
-#include <hati/output/output_writer.h>
 
 #include <algorithm>
 #include <cmath>
@@ -573,31 +572,25 @@ std::string BridgeCrane::description() const
   return s.str();
 }
 
-std::vector<std::pair<std::string, std::string>> BridgeCrane::summary_entries(
+SummaryEntries BridgeCrane::summary_entries(
     const std::map<std::string, double> &static_contact_forces) const
 {
-  std::vector<std::pair<std::string, std::string>> entries = {
-      {"mass_bridge", json_number(crane.mass_bridge())},
-      {"mass_trolley", json_number(crane.mass_trolley())}};
+  SummaryEntries entries = {{"mass_bridge", crane.mass_bridge()},
+                            {"mass_trolley", crane.mass_trolley()}};
   for (const auto &e : Frame::summary_entries(static_contact_forces))
     entries.push_back(e);
   if (!static_contact_forces.empty())
   {
-    std::ostringstream s;
-    s << '{';
-    bool first = true;
+    SummaryValue loads = SummaryValue::object();
     for (const char *kind : {"crane_wheel_", "trolley_wheel_"})
       for (unsigned int k = 1; k <= 4; ++k)
       {
         const std::string name = kind + std::to_string(k);
         const auto it = static_contact_forces.find(name);
-        if (it == static_contact_forces.end())
-          continue;
-        s << (first ? "" : ", ") << json_string(name) << ": " << json_number(it->second);
-        first = false;
+        if (it != static_contact_forces.end())
+          loads.set(name, it->second);
       }
-    s << '}';
-    entries.emplace_back("static_wheel_loads", s.str());
+    entries.emplace_back("static_wheel_loads", loads);
   }
   return entries;
 }

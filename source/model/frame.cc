@@ -8,7 +8,6 @@
 #include <hati/model/frame.h>
 #include <hati/model/gmsh_frame_reader.h>
 #include <hati/model/memory_estimate.h>
-#include <hati/output/output_writer.h>
 
 #include <cmath>
 #include <iomanip>
@@ -1019,22 +1018,20 @@ void Frame::write_section_forces(std::ostream &out,
       }
 }
 
-std::vector<std::pair<std::string, std::string>>
-Frame::summary_entries(const std::map<std::string, double> &) const
+SummaryEntries Frame::summary_entries(const std::map<std::string, double> &) const
 {
   if (parameters.section_force_members.empty())
     return {};
-  std::ostringstream s;
+  SummaryValue result = SummaryValue::object();
   const char *names[3] = {"N", "My", "Mz"};
-  s << '{';
   for (unsigned int e = 0; e < 3; ++e)
-    s << (e ? ", " : "") << '"' << names[e]
-      << "\": {\"max_abs\": " << json_number(envelope[e].value)
-      << ", \"member\": " << json_string(envelope[e].member)
-      << ", \"x\": " << json_number(envelope[e].x)
-      << ", \"time\": " << json_number(envelope[e].time) << '}';
-  s << '}';
-  return {{"section_force_envelope", s.str()}};
+    result.set(names[e],
+               SummaryValue::object()
+                   .set("max_abs", envelope[e].value)
+                   .set("member", envelope[e].member)
+                   .set("x", envelope[e].x)
+                   .set("time", envelope[e].time));
+  return {{"section_force_envelope", result}};
 }
 
 std::string Frame::results_table() const

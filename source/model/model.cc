@@ -1,11 +1,6 @@
 #include <deal.II/base/utilities.h>
 
-#include <hati/model/bar.h>
-#include <hati/model/bridge_crane.h>
-#include <hati/model/frame.h>
 #include <hati/model/model.h>
-#include <hati/model/point_mass.h>
-#include <hati/model/solid.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -249,30 +244,13 @@ Vector<float> Model::subdomain_field() const
 
 void declare_model_parameters(ParameterHandler &prm)
 {
+  const auto &models = model_registry();
   prm.enter_subsection("Model");
-  prm.declare_entry(
-      "Type",
-      "point mass",
-      Patterns::Selection("point mass|bar|solid|frame|bridge crane"),
-      "Which model to build: 'point mass' (rigid, 3 DoFs: the bouncing "
-      "ball), 'bar' (1D elastic bar), 'solid' (3D elastic prism), 'frame' "
-      "(3D beam frame) or 'bridge crane' (a frame generated from the Bridge "
-      "crane subsection).");
-  prm.enter_subsection("Point mass");
-  PointMass::Parameters::declare_parameters(prm);
-  prm.leave_subsection();
-  prm.enter_subsection("Bar");
-  Bar::Parameters::declare_parameters(prm);
-  prm.leave_subsection();
-  prm.enter_subsection("Solid");
-  Solid::Parameters::declare_parameters(prm);
-  prm.leave_subsection();
-  prm.enter_subsection("Frame");
-  Frame::Parameters::declare_parameters(prm);
-  prm.leave_subsection();
-  prm.enter_subsection("Bridge crane");
-  BridgeCrane::Parameters::declare_parameters(prm);
-  prm.leave_subsection();
+  prm.declare_entry("Type",
+                    "point mass",
+                    Patterns::Selection(models.selection()),
+                    "Which model to build: " + models.join(", ", " or ", true) + ".");
+  models.declare_parameters(prm);
   prm.enter_subsection("Decomposition");
   DecompositionParameters::declare_parameters(prm);
   prm.leave_subsection();
@@ -282,57 +260,17 @@ void declare_model_parameters(ParameterHandler &prm)
 
 std::unique_ptr<Model> create_model(ParameterHandler &prm)
 {
+  prm.enter_subsection("Model");
+  const std::string type = prm.get("Type");
+  std::unique_ptr<Model> model = model_registry().get(type).create(prm);
+  prm.leave_subsection();
   prm.enter_subsection("Loading");
   const bool excited_members = !Utilities::trim(prm.get("Excited members")).empty();
   prm.leave_subsection();
-  prm.enter_subsection("Model");
-  const std::string type = prm.get("Type");
-  AssertThrow(!excited_members || type == "frame" || type == "bridge crane",
+  AssertThrow(!excited_members || model->has_members(),
               ExcMessage("Loading/Excited members: only frame models have members; "
                          "leave it empty for Model/Type = " +
                          type));
-  std::unique_ptr<Model> model;
-  if (type == "point mass")
-  {
-    prm.enter_subsection("Point mass");
-    PointMass::Parameters p;
-    p.parse_parameters(prm);
-    prm.leave_subsection();
-    model = std::make_unique<PointMass>(p);
-  }
-  else if (type == "bar")
-  {
-    prm.enter_subsection("Bar");
-    Bar::Parameters p;
-    p.parse_parameters(prm);
-    prm.leave_subsection();
-    model = std::make_unique<Bar>(p);
-  }
-  else if (type == "frame")
-  {
-    prm.enter_subsection("Frame");
-    Frame::Parameters p;
-    p.parse_parameters(prm);
-    prm.leave_subsection();
-    model = std::make_unique<Frame>(p);
-  }
-  else if (type == "bridge crane")
-  {
-    prm.enter_subsection("Bridge crane");
-    BridgeCrane::Parameters p;
-    p.parse_parameters(prm);
-    prm.leave_subsection();
-    model = std::make_unique<BridgeCrane>(p);
-  }
-  else
-  {
-    prm.enter_subsection("Solid");
-    Solid::Parameters p;
-    p.parse_parameters(prm);
-    prm.leave_subsection();
-    model = std::make_unique<Solid>(p);
-  }
-  prm.leave_subsection();
   return model;
 }
 } // namespace hati

@@ -129,27 +129,25 @@ void ContactStatistics::add_step(const double time,
   }
 }
 
-std::string ContactStatistics::json(const std::vector<std::string> &names) const
+SummaryValue ContactStatistics::json(const std::vector<std::string> &names) const
 {
-  std::ostringstream s;
-  s << '{';
-  bool first = true;
+  SummaryValue result = SummaryValue::object();
   for (const auto &e : groups)
   {
     if (!names.empty() && std::find(names.begin(), names.end(), e.name) == names.end())
       continue;
-    s << (first ? "" : ", ") << json_string(e.name) << ": {\"n_impacts\": " << e.n_impacts
-      << ", \"peak_impact_force\": " << json_number(e.peak_force)
-      << ", \"peak_force_time\": " << json_number(e.peak_force_time)
-      << ", \"peak_impulse\": " << json_number(e.peak_impulse)
-      << ", \"peak_mean_force\": " << json_number(e.peak_mean_force)
-      << ", \"peak_mean_force_time\": " << json_number(e.peak_mean_force_time)
-      << ", \"uplift_time\": " << json_number(e.uplift_time)
-      << ", \"n_contact_loss_episodes\": " << e.episodes.size() << '}';
-    first = false;
+    result.set(e.name,
+               SummaryValue::object()
+                   .set("n_impacts", e.n_impacts)
+                   .set("peak_impact_force", e.peak_force)
+                   .set("peak_force_time", e.peak_force_time)
+                   .set("peak_impulse", e.peak_impulse)
+                   .set("peak_mean_force", e.peak_mean_force)
+                   .set("peak_mean_force_time", e.peak_mean_force_time)
+                   .set("uplift_time", e.uplift_time)
+                   .set("n_contact_loss_episodes", e.episodes.size()));
   }
-  s << '}';
-  return s.str();
+  return result;
 }
 
 void ContactStatistics::write_episodes(std::ostream &out) const

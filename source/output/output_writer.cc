@@ -253,43 +253,4 @@ void OutputWriter::flush()
   last_flush = std::chrono::steady_clock::now();
 }
 
-std::string json_number(const double x)
-{
-  if (!std::isfinite(x))
-    return "null";
-  return shortest_number(x);
-}
-
-std::string json_string(const std::string &x)
-{
-  std::string r = "\"";
-  for (const char c : x)
-  {
-    if (c == '"' || c == '\\')
-      r += '\\';
-    r += c;
-  }
-  return r + "\"";
-}
-
-void write_summary(const std::string &filename,
-                   const std::vector<std::pair<std::string, std::string>> &entries)
-{
-  auto all = entries;
-  if (stop_requested())
-  {
-    all.emplace_back("status", json_string("interrupted"));
-    for (const auto &[key, value] : entries)
-      if (key == "end_time")
-        all.emplace_back("time_reached", value);
-  }
-  else
-    all.emplace_back("status", json_string("completed"));
-  std::string out = "{\n";
-  for (unsigned int i = 0; i < all.size(); ++i)
-    out += "  \"" + all[i].first + "\": " + all[i].second +
-           (i + 1 < all.size() ? ",\n" : "\n");
-  out += "}\n";
-  write_file_atomically(filename, out);
-}
 } // namespace hati

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <hati/output/run_directory.h>
+#include <hati/output/summary.h>
 
 #include <cctype>
 #include <cerrno>
@@ -61,20 +62,6 @@ bool write_all(const int fd, const char *data, std::size_t size)
     size -= n;
   }
   return true;
-}
-
-/** A JSON string value (quotes, backslashes and control characters escaped). */
-std::string quoted(const std::string &text)
-{
-  std::string r = "\"";
-  for (const char c : text)
-    if (c == '"' || c == '\\')
-      (r += '\\') += c;
-    else if (static_cast<unsigned char>(c) < 0x20)
-      r += ' ';
-    else
-      r += c;
-  return r + '"';
 }
 
 /**
@@ -279,9 +266,7 @@ void RunDirectory::fail(const std::string &message) noexcept
     return;
   try
   {
-    write_file_atomically(
-        dir + "/summary.json",
-        "{\n  \"status\": \"failed\",\n  \"message\": " + quoted(message) + "\n}\n");
+    write_file_atomically(dir + "/summary.json", failed_summary(message));
   }
   catch (...)
   {

@@ -5,23 +5,12 @@
 
 namespace hati
 {
-void TimeIntegrationParameters::declare_parameters(ParameterHandler &prm)
+void TimeIntegrationParameters::declare_parameters(ParameterHandler &prm,
+                                                   const std::string &methods,
+                                                   const std::string &documentation)
 {
   prm.enter_subsection("Time integration");
-  prm.declare_entry(
-      "Method",
-      "CD-Lagrange",
-      Patterns::Selection("CD-Lagrange|event-driven|Newmark|HATI"),
-      "CD-Lagrange: explicit event-capturing central differences with "
-      "velocity-level Lagrange multipliers (algorithms.md A1-A7, with Rayleigh "
-      "damping). "
-      "event-driven: CVODE between impacts, impacts located by root "
-      "finding, Newton's restitution law at each event (reference for small "
-      "rigid systems). Newmark: implicit average acceleration (algorithms.md N1-N3, "
-      "Trilinos), for models without contacts; Time step is then DT. HATI: "
-      "heterogeneous asynchronous coupling (algorithms.md G1-G4, G3'): CD-Lagrange "
-      "on the Model/Decomposition explicit subdomain with the Time step dt, Newmark "
-      "on the rest with DT = m dt (Time integration/HATI/Time step ratio).");
+  prm.declare_entry("Method", "CD-Lagrange", Patterns::Selection(methods), documentation);
   prm.declare_entry(
       "Time step",
       "1e-3",
@@ -93,15 +82,12 @@ void TimeIntegrationParameters::parse_parameters(ParameterHandler &prm)
   }
 }
 
-void AnalysisParameters::declare_parameters(ParameterHandler &prm)
+void AnalysisParameters::declare_parameters(ParameterHandler &prm,
+                                            const std::string &analyses,
+                                            const std::string &documentation)
 {
   prm.enter_subsection("Analysis");
-  prm.declare_entry("Type",
-                    "transient",
-                    Patterns::Selection("transient|static|modal"),
-                    "transient: time history with the Time integration method; static: "
-                    "K U = F_ext(0) (gravity, nodal loads); modal: the lowest natural "
-                    "frequencies and mode shapes (modes.csv, mode shapes in VTU).");
+  prm.declare_entry("Type", "transient", Patterns::Selection(analyses), documentation);
   prm.declare_entry(
       "Number of modes",
       "6",

@@ -2,6 +2,7 @@
 #define hati_analysis_modal_damping_h
 
 #include <hati/analysis/modal_analysis.h>
+#include <hati/base/summary_value.h>
 #include <hati/model/discrete_system.h>
 #include <hati/model/model.h>
 #include <hati/time/newmark.h>
@@ -70,11 +71,10 @@ ModalRayleighDamping modal_rayleigh_damping(const DiscreteSystem &system,
  * @param method Time integration/Method.
  * @param damping the Time integration/Damping of the run, updated.
  */
-std::vector<std::pair<std::string, std::string>>
-apply_default_damping(const Model &model,
-                      const DiscreteSystem &system,
-                      const std::string &method,
-                      RayleighDamping &damping);
+SummaryEntries apply_default_damping(const Model &model,
+                                     const DiscreteSystem &system,
+                                     const std::string &method,
+                                     RayleighDamping &damping);
 } // namespace hati
 
 #endif

@@ -85,7 +85,7 @@ public:
    * `mass_bridge`, `mass_trolley` (kg) and `static_wheel_loads` (wheel
    * contact name -> vertical static force, N) from @p static_contact_forces.
    */
-  std::vector<std::pair<std::string, std::string>> summary_entries(
+  SummaryEntries summary_entries(
       const std::map<std::string, double> &static_contact_forces) const override;
 
   /**

@@ -118,13 +118,14 @@ public:
   std::string description() const override;
   std::vector<Point<3>> cell_centres() const override;
   std::vector<std::string> cell_members() const override;
+  bool has_members() const override { return true; }
   std::string section_forces_header() const override;
   /**
    * `section_force_envelope`: the largest |N| (N), |My|, |Mz| (N m) among
    * the section forces written so far, with the member, the position along
    * it (m) and the time (s).
    */
-  std::vector<std::pair<std::string, std::string>> summary_entries(
+  SummaryEntries summary_entries(
       const std::map<std::string, double> &static_contact_forces) const override;
   /** The envelope of the section forces as table lines. */
   std::string results_table() const override;

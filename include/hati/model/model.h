@@ -4,9 +4,12 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
 
+#include <hati/base/registry.h>
+#include <hati/base/summary_value.h>
 #include <hati/model/discrete_system.h>
 
 #include <array>
+#include <functional>
 #include <map>
 #include <memory>
 #include <ostream>
@@ -105,6 +108,12 @@ public:
   virtual std::vector<std::string> cell_members() const { return {}; }
 
   /**
+   * Whether the model has named members (frames), which Loading/Excited
+   * members and Model/Decomposition/Explicit members can select.
+   */
+  virtual bool has_members() const { return false; }
+
+  /**
    * The subdomain of every active cell, 0 explicit or 1 implicit, from the
    * boxes and member names of @p parameters (call after build()). Throws if
    * a member name is unknown.
@@ -126,11 +135,11 @@ public:
   virtual std::string description() const = 0;
 
   /**
-   * Model-specific summary.json entries (key, JSON value), given the static
+   * Model-specific summary.json entries (key, value), given the static
    * contact forces per contact name (N; empty without a static state). None
    * by default.
    */
-  virtual std::vector<std::pair<std::string, std::string>>
+  virtual SummaryEntries
   summary_entries(const std::map<std::string, double> & /*static_contact_forces*/) const
   {
     return {};
@@ -200,10 +209,55 @@ protected:
   int selected_part = -1;
 };
 
+/**
+ * Makes a model from the parameters (@p prm in the `Model` subsection): the
+ * factory enters the model's own subsection and parses it.
+ */
+using ModelFactory = std::function<std::unique_ptr<Model>(ParameterHandler &prm)>;
+
+/**
+ * The models of `Model/Type`, registered in source/model/model_registry.cc
+ * (one line each, add_model()).
+ */
+const Registry<ModelFactory> &model_registry();
+
+/**
+ * Register the model class @p ModelType as @p name with its parameters in the
+ * subsection @p subsection of `Model` (`ModelType::Parameters` with
+ * declare_parameters() and parse_parameters(), and a constructor from them);
+ * @p documentation is its part of the documentation of `Model/Type`.
+ */
+template <class ModelType>
+void add_model(Registry<ModelFactory> &registry,
+               const std::string &name,
+               const std::string &subsection,
+               const std::string &documentation)
+{
+  registry.add({name,
+                documentation,
+                [subsection](ParameterHandler &prm)
+                {
+                  prm.enter_subsection(subsection);
+                  ModelType::Parameters::declare_parameters(prm);
+                  prm.leave_subsection();
+                },
+                [subsection](ParameterHandler &prm) -> std::unique_ptr<Model>
+                {
+                  prm.enter_subsection(subsection);
+                  typename ModelType::Parameters parameters;
+                  parameters.parse_parameters(prm);
+                  prm.leave_subsection();
+                  return std::make_unique<ModelType>(parameters);
+                }});
+}
+
 /** Declare the `Model` subsection with the parameters of every model type. */
 void declare_model_parameters(ParameterHandler &prm);
 
-/** Create the model chosen by `Model/Type` and parse its parameters. */
+/**
+ * Create the model chosen by `Model/Type` (model_registry()) and parse its
+ * parameters; @p prm at its top level.
+ */
 std::unique_ptr<Model> create_model(ParameterHandler &prm);
 } // namespace hati
 

@@ -1,6 +1,7 @@
 #ifndef hati_output_contact_statistics_h
 #define hati_output_contact_statistics_h
 
+#include <hati/base/summary_value.h>
 #include <hati/model/discrete_system.h>
 
 #include <ostream>
@@ -77,7 +78,7 @@ public:
   const std::vector<Entry> &entries() const { return groups; }
 
   /** `{"name": {"n_impacts": .., "peak_impact_force": .., "uplift_time": ..}, ...}`. */
-  std::string json(const std::vector<std::string> &names = {}) const;
+  SummaryValue json(const std::vector<std::string> &names = {}) const;
 
   /** `contact_episodes.csv`: contact,start,end,duration (s; end empty if open). */
   void write_episodes(std::ostream &out) const;

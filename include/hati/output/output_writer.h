@@ -135,20 +135,6 @@ private:
   std::vector<std::pair<double, std::string>> vtu_files;
 };
 
-/** A number as a JSON value (null if not finite), shortest round-trip text. */
-std::string json_number(const double x);
-/** A string as a quoted JSON value. */
-std::string json_string(const std::string &x);
-
-/**
- * Write `summary.json` atomically (write_file_atomically()); the numbers and
- * strings are given as pre-formatted JSON values. The entry `status` is
- * added at the end: `"completed"`, or `"interrupted"` after SIGINT/SIGTERM
- * (stop_requested()), then with `time_reached` (s), the value of the entry
- * `end_time`.
- */
-void write_summary(const std::string &filename,
-                   const std::vector<std::pair<std::string, std::string>> &entries);
 } // namespace hati
 
 #endif

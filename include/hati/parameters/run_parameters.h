@@ -12,7 +12,13 @@ using namespace dealii;
 /** `Time integration` subsection: scheme, steps, limits. */
 struct TimeIntegrationParameters
 {
-  static void declare_parameters(ParameterHandler &prm);
+  /**
+   * Declare the subsection; `Method` selects among @p methods (`a|b|c`,
+   * the registered methods) with the @p documentation of each.
+   */
+  static void declare_parameters(ParameterHandler &prm,
+                                 const std::string &methods,
+                                 const std::string &documentation);
   void parse_parameters(ParameterHandler &prm);
 
   /** "CD-Lagrange" (event capturing) or "event-driven" (CVODE reference). */
@@ -31,7 +37,13 @@ struct TimeIntegrationParameters
 /** `Analysis` subsection: what to compute. */
 struct AnalysisParameters
 {
-  static void declare_parameters(ParameterHandler &prm);
+  /**
+   * Declare the subsection; `Type` selects among @p analyses (`a|b|c`, the
+   * registered analyses) with the @p documentation of each.
+   */
+  static void declare_parameters(ParameterHandler &prm,
+                                 const std::string &analyses,
+                                 const std::string &documentation);
   void parse_parameters(ParameterHandler &prm);
 
   /** "transient", "static" or "modal". */

@@ -1,0 +1,30 @@
+#ifndef hati_output_summary_h
+#define hati_output_summary_h
+
+#include <hati/base/summary_value.h>
+
+#include <string>
+
+namespace hati
+{
+/**
+ * The JSON text of @p value on one line, written with nlohmann::json (the
+ * only JSON writer of hati): strings escaped (control characters too,
+ * invalid UTF-8 replaced), numbers in shortest round-trip form, numbers
+ * that are not finite as `null`.
+ */
+std::string to_json(const SummaryValue &value);
+
+/**
+ * Write `summary.json` atomically (write_file_atomically()), one top-level
+ * entry per line. The entry `status` is added at the end: `"completed"`,
+ * or `"interrupted"` after SIGINT/SIGTERM (stop_requested()), then with
+ * `time_reached` (s), the value of the entry `end_time`.
+ */
+void write_summary(const std::string &filename, const SummaryEntries &entries);
+
+/** The `summary.json` of a run that failed: `status` `"failed"` and @p message. */
+std::string failed_summary(const std::string &message);
+} // namespace hati
+
+#endif

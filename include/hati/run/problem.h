@@ -1,0 +1,114 @@
+#ifndef hati_run_problem_h
+#define hati_run_problem_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <hati/base/summary_value.h>
+#include <hati/model/decomposition.h>
+#include <hati/model/discrete_system.h>
+#include <hati/model/model.h>
+#include <hati/parameters/run_parameters.h>
+#include <hati/time/hati_coupling.h>
+#include <hati/time/newmark.h>
+
+#include <array>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hati
+{
+using namespace dealii;
+
+/**
+ * The one set-up path of hati (doc/architecture.md, section 1): turns the
+ * parameters into the model, its discrete system with its loads, the
+ * subdomains of the coupled method, the initial state and the damping, in
+ * this order. `Simulation`, the analyses, the fuzz harnesses and the tests
+ * call it; nothing else repeats the sequence.
+ *
+ * The constructor parses every parameter struct and creates the model
+ * (model_registry()); the stages build_system(), add_loads() and
+ * prepare_transient() follow. Each stage prints what it did on @p out
+ * (a ConditionalOStream, silent for the harnesses).
+ */
+class Problem
+{
+public:
+  /** Declare every parameter of hati (model, analysis, time integration, output). */
+  static void declare_parameters(ParameterHandler &prm);
+
+  /**
+   * Parse every parameter of @p prm (already read and overridden, at its
+   * top level) and create the model; throws a one-line message on bad input.
+   */
+  explicit Problem(ParameterHandler &prm,
+                   const ConditionalOStream &out = ConditionalOStream(std::cout, true));
+
+  /** Build the model's discrete system, check it is finite, fill the default `M r`. */
+  void build_system();
+
+  /**
+   * Read the accelerograms, add the base excitation (step and records, on
+   * the whole model or the Excited members) to the system: `F = -M r a_g`.
+   */
+  void add_loads();
+
+  /**
+   * What a transient analysis needs before its integrator: the subdomains
+   * (decompose(), Method = HATI), the static initial state (Analysis/Initial
+   * state = static) and the damping (the model's default when
+   * Time integration/Damping is not set).
+   */
+  void prepare_transient();
+
+  /**
+   * The explicit and implicit subdomains of Method = HATI from
+   * Model/Decomposition or, if it is empty, the model's default
+   * decomposition, with the base excitation added to each.
+   */
+  void decompose();
+
+  /**
+   * Print the static contact forces @p forces (N, one per contact row of
+   * the system, summed per contact name) as a table, remember them
+   * (static_contact_forces) and return the `static_contact_forces` entry of
+   * summary.json (name -> N; null if the system has no closed contact).
+   */
+  SummaryValue report_static_contact_forces(const std::vector<double> &forces);
+
+  AnalysisParameters analysis_parameters;
+  TimeIntegrationParameters time_parameters;
+  NewmarkParameters newmark_parameters;
+  RayleighDamping damping;
+  HATIParameters hati_parameters;
+  DecompositionParameters decomposition_parameters;
+  OutputParameters output_parameters;
+  CommonModelParameters common_parameters;
+
+  std::unique_ptr<Model> model;
+  /** The whole model's system: single-domain methods and every output. */
+  DiscreteSystem system;
+  /** The explicit and implicit subdomains of Method = HATI (decompose()). */
+  std::unique_ptr<Decomposition> decomposition;
+  /** Ground acceleration per direction (m/s^2; empty: none), for absolute accelerations.
+   */
+  std::array<std::function<double(double)>, 3> ground_acceleration;
+  /** Static contact forces per contact name (N), filled by
+   * report_static_contact_forces(). */
+  std::map<std::string, double> static_contact_forces;
+  /** summary.json entries of the set-up (static initial state, default damping). */
+  SummaryEntries initial_state_summary;
+
+private:
+  /** The static equilibrium under the constant loads as the initial state. */
+  void set_static_initial_state();
+
+  ConditionalOStream out;
+};
+} // namespace hati
+
+#endif

@@ -1,0 +1,83 @@
+#ifndef hati_run_run_tools_h
+#define hati_run_run_tools_h
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/lac/vector.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace hati
+{
+/** Steps between two outputs of interval @p interval (s); 0 means every step. */
+inline unsigned long steps_between(const double interval, const double dt)
+{
+  if (interval <= 0.)
+    return 1;
+  return std::max<unsigned long>(1, std::llround(interval / dt));
+}
+
+/** Throw a one-line message if @p u holds a NaN or an Inf at time @p t (s). */
+inline void check_finite(const dealii::Vector<double> &u, const double t)
+{
+  if (!std::isfinite(u.l2_norm()))
+  {
+    std::ostringstream s;
+    s << "the solution became non-finite (NaN or Inf) at t = " << t << " s";
+    AssertThrow(false, dealii::ExcMessage(s.str()));
+  }
+}
+
+/** Progress lines of a long run, at most every @p interval seconds of wall time. */
+class Progress
+{
+public:
+  Progress(const double interval, const double end_time)
+      : interval(interval), end_time(end_time), start(std::chrono::steady_clock::now()),
+        last(start)
+  {
+  }
+
+  /** Whether a progress line is due (and, if so, the next one counts from now). */
+  bool due()
+  {
+    const auto now = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(now - last).count() < interval)
+      return false;
+    last = now;
+    return true;
+  }
+
+  /** Print the simulated time @p t (s), its fraction, the step and the remaining time. */
+  void print(const double t, const unsigned long step) const
+  {
+    const double wall = wall_time();
+    const double fraction = t / end_time;
+    const auto precision = std::cout.precision();
+    std::cout << "  t = " << std::setw(12) << std::setprecision(6) << t << " s ("
+              << std::setw(5) << std::fixed << std::setprecision(1) << 100. * fraction
+              << " %), step " << step << ", wall " << std::setprecision(1) << wall
+              << " s, remaining ~"
+              << (fraction > 0. ? wall * (1. - fraction) / fraction : 0.) << " s"
+              << std::defaultfloat << std::setprecision(precision) << std::endl;
+  }
+
+  /** Wall time since the construction (s). */
+  double wall_time() const
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
+  }
+
+private:
+  const double interval, end_time;
+  const std::chrono::steady_clock::time_point start;
+  std::chrono::steady_clock::time_point last;
+};
+} // namespace hati
+
+#endif

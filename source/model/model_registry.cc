@@ -1,0 +1,30 @@
+#include <hati/model/bar.h>
+#include <hati/model/bridge_crane.h>
+#include <hati/model/frame.h>
+#include <hati/model/model.h>
+#include <hati/model/point_mass.h>
+#include <hati/model/solid.h>
+
+namespace hati
+{
+const Registry<ModelFactory> &model_registry()
+{
+  // one line per model: name (Model/Type), subsection, documentation
+  static const Registry<ModelFactory> registry = []
+  {
+    Registry<ModelFactory> r("Model/Type");
+    add_model<PointMass>(
+        r, "point mass", "Point mass", "'point mass' (rigid, 3 DoFs: the bouncing ball)");
+    add_model<Bar>(r, "bar", "Bar", "'bar' (1D elastic bar)");
+    add_model<Solid>(r, "solid", "Solid", "'solid' (3D elastic prism)");
+    add_model<Frame>(r, "frame", "Frame", "'frame' (3D beam frame)");
+    add_model<BridgeCrane>(r,
+                           "bridge crane",
+                           "Bridge crane",
+                           "'bridge crane' (a frame generated from the Bridge crane "
+                           "subsection)");
+    return r;
+  }();
+  return registry;
+}
+} // namespace hati

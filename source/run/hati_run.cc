@@ -1,0 +1,65 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
+
+#include <hati/run/analysis_registry.h>
+#include <hati/run/problem.h>
+#include <hati/run/time_loop.h>
+#include <hati/time/hati_coupling.h>
+
+#include <iostream>
+#include <sstream>
+
+namespace hati
+{
+namespace
+{
+/** The coupling of the problem's subdomains; errors name the explicit subdomain. */
+std::unique_ptr<HATICoupling> make_coupling(const Problem &problem)
+{
+  try
+  {
+    return std::make_unique<HATICoupling>(*problem.decomposition,
+                                          problem.system.n_dofs(),
+                                          problem.time_parameters.time_step,
+                                          problem.time_parameters.safety_factor,
+                                          problem.hati_parameters,
+                                          problem.newmark_parameters,
+                                          problem.damping);
+  }
+  catch (const ExceptionBase &e)
+  {
+    // name the subdomain in the message (e.g. the critical step refusal)
+    std::ostringstream info;
+    e.print_info(info);
+    std::string text = info.str();
+    const std::string prefix = "Additional information:";
+    if (text.find(prefix) != std::string::npos)
+      text = text.substr(text.find(prefix) + prefix.size());
+    AssertThrow(false, ExcMessage("HATI (explicit subdomain): " + Utilities::trim(text)));
+  }
+  return nullptr;
+}
+} // namespace
+
+void run_hati(Problem &problem, RunDirectory &directory)
+{
+  TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
+  timer.enter_subsection("setup (factorisation, ramp response)");
+  const std::unique_ptr<HATICoupling> coupling = make_coupling(problem);
+  timer.leave_subsection();
+  const auto &parts = problem.decomposition->parts;
+  std::cout << "  HATI (G3'): explicit subdomain " << parts[0].system.n_dofs()
+            << " DoFs (CD-Lagrange, dt = " << coupling->micro_time_step()
+            << " s, dt_crit = " << coupling->critical_time_step()
+            << " s), implicit subdomain " << parts[1].system.n_dofs()
+            << " DoFs (Newmark, DT = " << coupling->time_step()
+            << " s, m = " << coupling->time_step_ratio() << "), "
+            << coupling->n_interface_dofs() << " interface DoFs" << std::endl;
+  run_time_loop(*coupling,
+                problem,
+                directory,
+                timer,
+                {{"method", "HATI"}, {"dt_crit", coupling->critical_time_step()}});
+}
+} // namespace hati

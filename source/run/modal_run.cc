@@ -1,0 +1,101 @@
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/timer.h>
+
+#include <hati/analysis/modal_analysis.h>
+#include <hati/output/csv_file.h>
+#include <hati/output/output_writer.h>
+#include <hati/output/run_directory.h>
+#include <hati/output/summary.h>
+#include <hati/run/analysis_registry.h>
+#include <hati/run/problem.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace hati
+{
+void run_modal_analysis(Problem &problem, RunDirectory &directory)
+{
+  const DiscreteSystem &system = problem.system;
+  const auto start = std::chrono::steady_clock::now();
+  TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
+  ModalResult r;
+  {
+    TimerOutput::Scope scope(timer, "eigenvalue solve");
+    r = compute_modes(system, problem.analysis_parameters.n_modes);
+  }
+  TimerOutput::Scope scope(timer, "output");
+  directory.begin();
+  std::ofstream csv(directory.create("modes.csv"));
+  AssertThrow(csv, ExcMessage("cannot write " + directory.path() + "/modes.csv"));
+  use_shortest_numbers(csv);
+  csv << "mode,frequency,period,participation_x,participation_y,participation_z,"
+         "effective_mass_x,effective_mass_y,effective_mass_z,effective_mass_ratio_x,"
+         "effective_mass_ratio_y,effective_mass_ratio_z\n";
+  std::cout << "  modal analysis: " << r.frequencies.size() << " modes";
+  if (r.n_closed_contacts > 0)
+    std::cout << ", " << r.n_closed_contacts << " zero-gap contact rows held closed ("
+              << r.n_constraints << " independent constraints)";
+  std::cout << "\n"
+            << "   mode  frequency (Hz)   period (s)   eff. mass ratio x      y      z\n";
+  std::vector<std::pair<double, std::string>> files;
+  for (unsigned int k = 0; k < r.frequencies.size(); ++k)
+  {
+    const double f = r.frequencies[k];
+    std::array<double, 3> ratio{{0., 0., 0.}};
+    for (unsigned int d = 0; d < 3; ++d)
+      ratio[d] = r.total_mass[d] > 0. ? r.effective_mass[k][d] / r.total_mass[d] : 0.;
+    csv << k + 1 << ',' << f << ',' << (f > 0. ? 1. / f : 0.);
+    for (unsigned int d = 0; d < 3; ++d)
+      csv << ',' << r.participation[k][d];
+    for (unsigned int d = 0; d < 3; ++d)
+      csv << ',' << r.effective_mass[k][d];
+    for (unsigned int d = 0; d < 3; ++d)
+      csv << ',' << ratio[d];
+    csv << '\n';
+    std::cout << std::setw(7) << k + 1 << std::setw(16) << std::setprecision(8) << f
+              << std::setw(13) << std::setprecision(6) << (f > 0. ? 1. / f : 0.)
+              << std::fixed << std::setprecision(3) << std::setw(12) << ratio[0]
+              << std::setw(7) << ratio[1] << std::setw(7) << ratio[2] << std::defaultfloat
+              << std::endl;
+
+    char name[64];
+    std::snprintf(name, sizeof(name), "mode-%03u.vtu", k + 1);
+    std::ofstream out(directory.create(name));
+    problem.model->write_vtu(out, {{"displacement", &r.modes[k]}}, k + 1, k + 1);
+    AssertThrow(out.flush(),
+                ExcMessage("cannot write " + directory.path() + "/" + name + ": " +
+                           system_error_text(errno)));
+    files.emplace_back(k + 1, name);
+  }
+  csv.close();
+  AssertThrow(csv, ExcMessage("cannot write " + directory.path() + "/modes.csv"));
+  std::ostringstream pvd;
+  DataOutBase::write_pvd_record(pvd, files);
+  directory.create(temporary_name("modes.pvd"));
+  write_file_atomically(directory.create("modes.pvd"), pvd.str());
+
+  SummaryValue list = SummaryValue::list();
+  for (const double f : r.frequencies)
+    list.push_back(f);
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  write_summary(directory.path() + "/summary.json",
+                {{"analysis", "modal"},
+                 {"model", problem.model->description()},
+                 {"n_dofs", system.n_dofs()},
+                 {"frequencies", list},
+                 {"n_closed_contact_rows", r.n_closed_contacts},
+                 {"wall_time", wall}});
+  std::cout << "  modes.csv and mode shapes (modes.pvd: 'time' = mode number) in "
+            << directory.path() << "/" << std::endl;
+}
+} // namespace hati

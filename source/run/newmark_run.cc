@@ -1,0 +1,38 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/timer.h>
+
+#include <hati/run/analysis_registry.h>
+#include <hati/run/problem.h>
+#include <hati/run/time_loop.h>
+#include <hati/time/newmark.h>
+
+#include <iostream>
+
+namespace hati
+{
+void run_newmark(Problem &problem, RunDirectory &directory)
+{
+  AssertThrow(
+      problem.system.contacts.empty(),
+      ExcMessage("Time integration/Method = Newmark: the model has contacts, which "
+                 "need the explicit CD-Lagrange integrator."));
+  const NewmarkParameters &parameters = problem.newmark_parameters;
+  TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
+  timer.enter_subsection("setup (assembly, factorisation)");
+  Newmark integrator(
+      problem.system, problem.time_parameters.time_step, parameters, problem.damping);
+  timer.leave_subsection();
+  std::cout << "  Newmark (beta = " << parameters.beta << ", gamma = " << parameters.gamma
+            << ", " << parameters.linear_solver << " solver): factorisation "
+            << integrator.factorization_time()
+            << " s, Rayleigh a0 = " << integrator.mass_damping_coefficient()
+            << " 1/s, a1 = " << integrator.stiffness_damping_coefficient() << " s"
+            << std::endl;
+  run_time_loop(
+      integrator,
+      problem,
+      directory,
+      timer,
+      {{"method", "Newmark"}, {"factorization_time", integrator.factorization_time()}});
+}
+} // namespace hati

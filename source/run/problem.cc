@@ -1,0 +1,200 @@
+#include <deal.II/base/exceptions.h>
+
+#include <hati/analysis/modal_damping.h>
+#include <hati/analysis/static_analysis.h>
+#include <hati/loading/accelerogram.h>
+#include <hati/loading/base_excitation.h>
+#include <hati/run/analysis_registry.h>
+#include <hati/run/problem.h>
+
+#include <algorithm>
+#include <iomanip>
+
+namespace hati
+{
+void Problem::declare_parameters(ParameterHandler &prm)
+{
+  declare_model_parameters(prm);
+  AnalysisParameters::declare_parameters(
+      prm, analysis_registry().selection(), analysis_registry().join("; ", "; ", true));
+  TimeIntegrationParameters::declare_parameters(
+      prm, method_registry().selection(), method_registry().join(" ", " ", true));
+  prm.enter_subsection("Time integration");
+  prm.enter_subsection("Newmark");
+  NewmarkParameters::declare_parameters(prm);
+  prm.leave_subsection();
+  prm.enter_subsection("Damping");
+  RayleighDamping::declare_parameters(prm);
+  prm.leave_subsection();
+  prm.enter_subsection("HATI");
+  HATIParameters::declare_parameters(prm);
+  prm.leave_subsection();
+  prm.leave_subsection();
+  OutputParameters::declare_parameters(prm);
+}
+
+Problem::Problem(ParameterHandler &prm, const ConditionalOStream &out) : out(out)
+{
+  analysis_parameters.parse_parameters(prm);
+  time_parameters.parse_parameters(prm);
+  prm.enter_subsection("Time integration");
+  prm.enter_subsection("Newmark");
+  newmark_parameters.parse_parameters(prm);
+  prm.leave_subsection();
+  prm.enter_subsection("Damping");
+  damping.parse_parameters(prm);
+  prm.leave_subsection();
+  prm.enter_subsection("HATI");
+  hati_parameters.parse_parameters(prm);
+  prm.leave_subsection();
+  prm.leave_subsection();
+  prm.enter_subsection("Model");
+  prm.enter_subsection("Decomposition");
+  decomposition_parameters.parse_parameters(prm);
+  prm.leave_subsection();
+  prm.leave_subsection();
+  output_parameters.parse_parameters(prm);
+  common_parameters.parse_parameters(prm);
+  model = create_model(prm);
+}
+
+void Problem::build_system()
+{
+  model->build(common_parameters, system);
+  check_finite(system);
+  system.fill_default_mass_influence();
+}
+
+void Problem::add_loads()
+{
+  auto acceleration = base_acceleration_step(common_parameters.base_acceleration,
+                                             common_parameters.base_acceleration_start);
+  for (unsigned int d = 0; d < 3; ++d)
+    if (!common_parameters.accelerogram_files[d].empty())
+    {
+      const auto record = std::make_shared<Accelerogram>(
+          Accelerogram::read(common_parameters.accelerogram_files[d],
+                             common_parameters.accelerogram_units,
+                             common_parameters.accelerogram_scale));
+      const auto [peak, at] = record->peak();
+      out << "  accelerogram along "
+          << "xyz"[d] << ": " << common_parameters.accelerogram_files[d] << ", "
+          << record->values().size() << " samples to t = " << record->times().back()
+          << " s, peak " << peak << " m/s^2 (" << peak / standard_gravity
+          << " g) at t = " << at << " s" << std::endl;
+      const auto step = acceleration[d];
+      acceleration[d] = [record, step](const double t)
+      { return (*record)(t) + (step ? step(t) : 0.); };
+    }
+  add_base_excitation(system, acceleration);
+  ground_acceleration = acceleration;
+  if (!common_parameters.excited_members.empty())
+  {
+    out << "  base excitation on the members:";
+    for (const auto &m : common_parameters.excited_members)
+      out << ' ' << m;
+    out << std::endl;
+  }
+}
+
+void Problem::decompose()
+{
+  decomposition = std::make_unique<Decomposition>();
+  if (decomposition_parameters.boxes.empty() && decomposition_parameters.members.empty())
+    decomposition_parameters = model->default_decomposition();
+  hati::decompose(*model, common_parameters, decomposition_parameters, *decomposition);
+  for (auto &part : decomposition->parts)
+    add_base_excitation(part.system, ground_acceleration);
+}
+
+void Problem::prepare_transient()
+{
+  if (time_parameters.method == "HATI")
+    decompose(); // the subdomains' initial state is copied below
+  if (analysis_parameters.initial_state == "static")
+    set_static_initial_state();
+  if (decomposition)
+    for (auto &part : decomposition->parts)
+      for (unsigned int i = 0; i < part.global_dofs.size(); ++i)
+      {
+        part.system.initial_displacement[i] =
+            system.initial_displacement[part.global_dofs[i]];
+        part.system.initial_velocity[i] = system.initial_velocity[part.global_dofs[i]];
+      }
+  for (const auto &entry :
+       apply_default_damping(*model, system, time_parameters.method, damping))
+    initial_state_summary.push_back(entry);
+  AssertThrow(time_parameters.method != "event-driven" ||
+                  (damping.a0 == 0. && damping.a1 == 0.),
+              ExcMessage("Time integration/Damping: Rayleigh damping is applied by the "
+                         "CD-Lagrange and Newmark integrators only; remove it for "
+                         "Method = event-driven."));
+}
+
+void Problem::set_static_initial_state()
+{
+  out << "  initial state: static equilibrium under the constant loads" << std::endl;
+  // under the loads the integrators apply: CD-Lagrange (and the explicit
+  // subdomain of HATI) applies gravity with the lumped mass, so that its
+  // first steps start at rest (doc/theory.md 1.1)
+  Vector<double> correction(system.n_dofs());
+  if (time_parameters.method == "CD-Lagrange")
+    correction = system.lumped_gravity_correction();
+  else if (time_parameters.method == "HATI")
+  {
+    const auto &E = decomposition->parts[0];
+    const Vector<double> c = E.system.lumped_gravity_correction();
+    for (unsigned int i = 0; i < c.size(); ++i)
+      correction[E.global_dofs[i]] += c[i];
+  }
+  system.constant_force += correction;
+  std::vector<double> forces;
+  solve_static(system,
+               0.,
+               system.initial_displacement,
+               newmark_parameters.linear_solver,
+               true,
+               &forces);
+  system.constant_force -= correction;
+  system.initial_velocity = 0.;
+  const SummaryValue entry = report_static_contact_forces(forces);
+  if (entry.kind() != SummaryValue::Kind::null)
+    initial_state_summary.emplace_back("static_contact_forces", entry);
+}
+
+SummaryValue Problem::report_static_contact_forces(const std::vector<double> &forces)
+{
+  // closed rows: zero initial gap (solve_static); sums per name, in order
+  std::vector<std::string> names;
+  std::vector<double> sums;
+  for (unsigned int k = 0; k < system.contacts.size() && k < forces.size(); ++k)
+  {
+    if (system.contacts[k].initial_gap != 0.)
+      continue;
+    const auto it = std::find(names.begin(), names.end(), system.contacts[k].name);
+    if (it == names.end())
+    {
+      names.push_back(system.contacts[k].name);
+      sums.push_back(forces[k]);
+    }
+    else
+      sums[it - names.begin()] += forces[k];
+  }
+  if (names.empty())
+    return {};
+  out << "  static contact forces (closed contacts, N):\n";
+  SummaryValue json = SummaryValue::object();
+  double total = 0.;
+  for (unsigned int g = 0; g < names.size(); ++g)
+  {
+    out << "    " << std::left << std::setw(28) << names[g] << std::right << std::setw(16)
+        << std::setprecision(8) << sums[g] << std::endl;
+    json.set(names[g], sums[g]);
+    static_contact_forces[names[g]] = sums[g];
+    total += sums[g];
+  }
+  out << "    " << std::left << std::setw(28) << "sum" << std::right << std::setw(16)
+      << std::setprecision(8) << total << std::endl;
+  return json;
+}
+} // namespace hati

@@ -1,0 +1,83 @@
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/timer.h>
+
+#include <hati/analysis/static_analysis.h>
+#include <hati/output/csv_file.h>
+#include <hati/output/output_writer.h>
+#include <hati/output/run_directory.h>
+#include <hati/output/summary.h>
+#include <hati/run/analysis_registry.h>
+#include <hati/run/problem.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace hati
+{
+void run_static_analysis(Problem &problem, RunDirectory &directory)
+{
+  const DiscreteSystem &system = problem.system;
+  const auto start = std::chrono::steady_clock::now();
+  TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
+  Vector<double> U, V(system.n_dofs());
+  std::vector<double> forces;
+  {
+    TimerOutput::Scope scope(timer, "static solve");
+    solve_static(system, 0., U, problem.newmark_parameters.linear_solver, false, &forces);
+  }
+  const SummaryValue contact_entry = problem.report_static_contact_forces(forces);
+  OutputWriter writer(directory, system, *problem.model);
+  OutputState s;
+  s.time = 0.;
+  s.displacement = &U;
+  s.velocity = &V;
+  for (const auto &c : system.contacts)
+  {
+    s.gaps.push_back(c.initial_gap + c.apply(U));
+    s.normal_velocities.push_back(0.);
+    s.impulses.push_back(0.);
+    s.active.push_back(false);
+  }
+  writer.write_history(s);
+  writer.write_vtu(s);
+  writer.finish();
+
+  std::cout << "  static analysis (K U = F_ext(0), "
+            << problem.newmark_parameters.linear_solver << " solver):\n";
+  for (const auto &m : system.monitors)
+  {
+    std::cout << "    " << m.name << ":";
+    for (unsigned int i = 0; i < m.dofs.size(); ++i)
+      std::cout << "  u" << m.labels[i] << " = " << std::setprecision(8) << U[m.dofs[i]];
+    std::cout << std::endl;
+  }
+  double umax = 0.;
+  for (unsigned int d = 0; d < 3; ++d)
+    for (unsigned int i = 0; i < system.influence[d].size(); ++i)
+      if (system.influence[d][i] != 0.)
+        umax = std::max(umax, std::abs(U[i]));
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  SummaryEntries summary = {{"analysis", "static"},
+                            {"model", problem.model->description()},
+                            {"n_dofs", system.n_dofs()},
+                            {"max_translation", umax},
+                            {"wall_time", wall}};
+  if (contact_entry.kind() != SummaryValue::Kind::null)
+    summary.emplace_back("static_contact_forces", contact_entry);
+  for (const auto &entry : problem.model->summary_entries(problem.static_contact_forces))
+    summary.push_back(entry);
+  write_summary(directory.path() + "/summary.json", summary);
+  std::cout << "  largest translation " << umax << " m; results in " << directory.path()
+            << "/ (history.csv, solution.pvd, summary.json)" << std::endl;
+  timer.print_summary();
+}
+} // namespace hati

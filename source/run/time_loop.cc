@@ -1,0 +1,399 @@
+#include <hati/output/contact_statistics.h>
+#include <hati/output/output_writer.h>
+#include <hati/output/run_directory.h>
+#include <hati/output/summary.h>
+#include <hati/output/wall_clock.h>
+#include <hati/run/problem.h>
+#include <hati/run/run_tools.h>
+#include <hati/run/time_loop.h>
+#include <hati/time/cd_lagrange.h>
+#include <hati/time/hati_coupling.h>
+#include <hati/time/newmark.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <type_traits>
+
+namespace hati
+{
+namespace
+{
+/** Micro steps per step: m for the coupling, 1 otherwise. */
+template <class Integrator> unsigned int time_step_ratio(const Integrator &integrator)
+{
+  if constexpr (std::is_same_v<Integrator, HATICoupling>)
+    return integrator.time_step_ratio();
+  else
+    return 1;
+}
+
+/** State of an integrator with contacts for the output writer. */
+template <class Integrator>
+OutputState contact_state(const Integrator &integrator, const double impulse_duration)
+{
+  OutputState s;
+  s.time = integrator.time();
+  s.displacement = &integrator.displacement();
+  s.velocity = &integrator.velocity();
+  s.gaps = integrator.gaps();
+  s.normal_velocities = integrator.normal_velocities();
+  s.impulses = integrator.impulses();
+  s.active = integrator.active();
+  s.impulse_duration = impulse_duration;
+  return s;
+}
+
+OutputState output_state(const CDLagrange &integrator)
+{
+  return contact_state(integrator, integrator.time_step());
+}
+
+OutputState output_state(const HATICoupling &integrator)
+{
+  // contacts.csv is written at the micro steps (connect_micro_steps())
+  OutputState s = contact_state(integrator, integrator.micro_time_step());
+  s.contact_rows = false;
+  return s;
+}
+
+OutputState output_state(const Newmark &integrator)
+{
+  OutputState s;
+  s.time = integrator.time();
+  s.displacement = &integrator.displacement();
+  s.velocity = &integrator.velocity();
+  return s;
+}
+
+/**
+ * The largest absolute acceleration of each monitor point (m/s^2): the
+ * relative velocity differenced between two history rows plus the ground
+ * acceleration at the middle of the interval.
+ */
+class AccelerationPeaks
+{
+public:
+  AccelerationPeaks(const DiscreteSystem &system,
+                    const std::array<std::function<double(double)>, 3> &ground)
+      : system(system), ground(ground), peaks(system.monitors.size()),
+        last_velocity(system.monitors.size())
+  {
+  }
+
+  /** Account for the state @p s of a history row. */
+  void track(const OutputState &s)
+  {
+    for (unsigned int k = 0; k < system.monitors.size(); ++k)
+    {
+      const auto &m = system.monitors[k];
+      std::vector<double> &last = last_velocity[k];
+      last.resize(m.dofs.size());
+      double a2 = 0.;
+      for (unsigned int i = 0; i < m.dofs.size(); ++i)
+      {
+        const double v = (*s.velocity)[m.dofs[i]];
+        if (have_last && s.time > last_time)
+        {
+          const unsigned int d = m.labels[i] == "x" ? 0 : m.labels[i] == "y" ? 1 : 2;
+          const double a = (v - last[i]) / (s.time - last_time) +
+                           (ground[d] ? ground[d](0.5 * (s.time + last_time)) : 0.);
+          a2 += a * a;
+        }
+        last[i] = v;
+      }
+      if (std::sqrt(a2) > peaks[k].first)
+        peaks[k] = {std::sqrt(a2), s.time};
+    }
+    last_time = s.time;
+    have_last = true;
+  }
+
+  /** Print the table and return the `max_absolute_acceleration` entry. */
+  SummaryValue report() const
+  {
+    SummaryValue json = SummaryValue::object();
+    std::cout << "  largest absolute acceleration of the monitor points (m/s^2, between "
+                 "history rows):\n";
+    for (unsigned int k = 0; k < system.monitors.size(); ++k)
+    {
+      json.set(system.monitors[k].name,
+               SummaryValue::object()
+                   .set("value", peaks[k].first)
+                   .set("time", peaks[k].second));
+      std::cout << "    " << std::setw(12) << system.monitors[k].name << std::setw(14)
+                << peaks[k].first << " at t = " << peaks[k].second << " s\n";
+    }
+    return json;
+  }
+
+private:
+  const DiscreteSystem &system;
+  const std::array<std::function<double(double)>, 3> &ground;
+  std::vector<std::pair<double, double>> peaks;
+  std::vector<std::vector<double>> last_velocity;
+  double last_time = 0.;
+  bool have_last = false;
+};
+
+/** One transient run of a stepping integrator: run_time_loop() in parts. */
+template <class Integrator> class TimeLoop
+{
+public:
+  TimeLoop(Integrator &integrator, Problem &problem, RunDirectory &directory);
+  /** The steps, with the outputs and the progress lines. */
+  void run(TimerOutput &timer);
+  /** summary.json and the terminal summary after run(). */
+  void finish(TimerOutput &timer, SummaryEntries summary);
+
+private:
+  static constexpr bool explicit_scheme = std::is_same_v<Integrator, CDLagrange>;
+  /** The output rows due at @p step (history, energy, VTU). */
+  void write(const unsigned long step);
+  /** HATI: contact statistics and contacts.csv rows at the micro steps. */
+  void connect_micro_steps();
+  /** The entries of the coupling (subdomains, time per part). */
+  void add_coupling_summary(SummaryEntries &summary) const;
+  /** The contact statistics, their summary entries and contact_episodes.csv. */
+  void add_contact_summary(SummaryEntries &summary);
+
+  Integrator &integrator;
+  Problem &problem;
+  const DiscreteSystem &system;
+  RunDirectory &directory;
+  const double dt, end_time;
+  OutputWriter writer;
+  const unsigned long n_steps, every_history, every_vtu;
+  WallClock output_clock; // a TimerOutput section costs more than a row
+  AccelerationPeaks acceleration;
+  ContactStatistics statistics;
+  Progress progress;
+  /** n_steps unless SIGINT/SIGTERM stopped the loop. */
+  unsigned long steps_done = 0;
+  unsigned long micro_step = 0;
+  OutputState contact_row;
+};
+
+std::vector<double> initial_gaps(const DiscreteSystem &system)
+{
+  std::vector<double> gaps;
+  for (const auto &c : system.contacts)
+    gaps.push_back(c.initial_gap + c.apply(system.initial_displacement));
+  return gaps;
+}
+
+template <class Integrator>
+TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
+                               Problem &problem,
+                               RunDirectory &directory)
+    : integrator(integrator), problem(problem), system(problem.system),
+      directory(directory), dt(integrator.time_step()),
+      end_time(problem.time_parameters.end_time),
+      writer(directory, problem.system, *problem.model),
+      n_steps(std::llround(std::ceil(end_time / dt - 1e-9))),
+      every_history(steps_between(problem.output_parameters.history_interval, dt)),
+      every_vtu(problem.output_parameters.vtu_interval > 0.
+                    ? steps_between(problem.output_parameters.vtu_interval, dt)
+                    : 0),
+      acceleration(problem.system, problem.ground_acceleration),
+      statistics(problem.system.contacts,
+                 initial_gaps(problem.system),
+                 problem.output_parameters.contact_force_window),
+      progress(problem.output_parameters.progress_interval, end_time)
+{
+  std::cout << "  " << n_steps << " steps of " << dt << " s to t = " << end_time << " s"
+            << std::endl;
+  // per contact name: impacts, peak force, time out of contact, episodes
+  writer.set_initial_contacts(initial_gaps(system));
+  if constexpr (std::is_same_v<Integrator, HATICoupling>)
+    connect_micro_steps();
+}
+
+template <class Integrator> void TimeLoop<Integrator>::write(const unsigned long step)
+{
+  const WallClock::Scope scope(output_clock);
+  const OutputState s = output_state(integrator);
+  check_finite(*s.displacement, s.time);
+  if (step % every_history == 0 || step == n_steps)
+  {
+    acceleration.track(s);
+    writer.write_history(s);
+    writer.write_energy(s.time, integrator.energies());
+  }
+  if (every_vtu > 0 && (step % every_vtu == 0 || step == n_steps))
+    writer.write_vtu(s);
+}
+
+template <class Integrator> void TimeLoop<Integrator>::connect_micro_steps()
+{
+  if constexpr (std::is_same_v<Integrator, HATICoupling>)
+  {
+    if (integrator.gaps().empty())
+      return;
+    const unsigned long every_contact_row = steps_between(
+        problem.output_parameters.history_interval, dt / time_step_ratio(integrator));
+    integrator.after_micro_step =
+        [this, every_contact_row](const HATICoupling::ContactSample &sample)
+    {
+      writer.track_contacts(sample.gaps, sample.impulses);
+      statistics.add_step(sample.time, integrator.micro_time_step(), sample.impulses);
+      if (++micro_step % every_contact_row == 0)
+      {
+        contact_row.time = sample.time;
+        contact_row.gaps = sample.gaps;
+        contact_row.normal_velocities = sample.normal_velocities;
+        contact_row.impulses = sample.impulses;
+        contact_row.active = sample.active;
+        contact_row.impulse_duration = integrator.micro_time_step();
+        writer.write_contacts(contact_row);
+      }
+    };
+  }
+}
+
+template <class Integrator> void TimeLoop<Integrator>::run(TimerOutput &timer)
+{
+  write(0);
+  TimerOutput::Scope scope(timer, "time stepping");
+  for (unsigned long step = 1; step <= n_steps; ++step)
+  {
+    integrator.step();
+    steps_done = step;
+    if constexpr (explicit_scheme)
+      if (!system.contacts.empty())
+      {
+        writer.track_contacts(integrator.gaps(), integrator.impulses());
+        statistics.add_step(integrator.time(), dt, integrator.impulses());
+      }
+    if (step % every_history == 0 || (every_vtu > 0 && step % every_vtu == 0) ||
+        step == n_steps)
+      write(step);
+    if ((!explicit_scheme || (step & 255) == 0) && progress.due())
+    {
+      check_finite(integrator.displacement(), integrator.time());
+      progress.print(integrator.time(), step);
+      writer.flush();
+    }
+    if (stop_requested()) // SIGINT/SIGTERM: stop after a complete step
+      break;
+  }
+}
+
+template <class Integrator>
+void TimeLoop<Integrator>::add_coupling_summary(SummaryEntries &summary) const
+{
+  if constexpr (std::is_same_v<Integrator, HATICoupling>)
+  {
+    const auto &parts = problem.decomposition->parts;
+    summary.insert(summary.end(),
+                   {{"time_step_ratio", integrator.time_step_ratio()},
+                    {"micro_dt", integrator.micro_time_step()},
+                    {"n_dofs_explicit", parts[0].system.n_dofs()},
+                    {"n_dofs_implicit", parts[1].system.n_dofs()},
+                    {"n_interface_dofs", integrator.n_interface_dofs()},
+                    {"wall_time_explicit", integrator.explicit_seconds()},
+                    {"wall_time_implicit", integrator.implicit_seconds()},
+                    {"wall_time_interface", integrator.interface_seconds()},
+                    {"wall_time_setup", integrator.setup_seconds()},
+                    {"interface_velocity_jump", integrator.interface_velocity_jump()},
+                    {"redone_macro_steps", integrator.redone_macro_steps()},
+                    {"interface_iterations", integrator.interface_iterations()},
+                    {"ramp_patterns", integrator.ramp_patterns()}});
+    std::cout << "  HATI wall time: explicit " << integrator.explicit_seconds()
+              << " s, implicit " << integrator.implicit_seconds() << " s, interface "
+              << integrator.interface_seconds() << " s, set-up "
+              << integrator.setup_seconds() << " s; interface velocity jump "
+              << integrator.interface_velocity_jump() << " m/s" << std::endl;
+  }
+  else
+    (void)summary;
+}
+
+template <class Integrator>
+void TimeLoop<Integrator>::add_contact_summary(SummaryEntries &summary)
+{
+  if (system.contacts.empty())
+    return;
+  summary.emplace_back("contacts", statistics.json());
+  summary.emplace_back("contact_force_window",
+                       problem.output_parameters.contact_force_window);
+  const auto wheels = problem.model->wheel_contacts();
+  if (!wheels.empty())
+    summary.emplace_back("wheels", statistics.json(wheels));
+  const std::string episodes_file = directory.create("contact_episodes.csv");
+  std::ofstream episodes(episodes_file);
+  statistics.write_episodes(episodes);
+  episodes.close();
+  AssertThrow(episodes, ExcMessage("cannot write " + episodes_file));
+  statistics.print_table(std::cout);
+}
+
+template <class Integrator>
+void TimeLoop<Integrator>::finish(TimerOutput &timer, SummaryEntries summary)
+{
+  writer.finish();
+  const auto [drift, scale] = writer.energy_balance();
+  const double wall = progress.wall_time();
+  // time of the steps alone: the stepping loop minus the output inside it
+  auto times = timer.get_summary_data(TimerOutput::total_wall_time);
+  const double stepping = times["time stepping"] - output_clock.seconds();
+  summary.insert(summary.end(),
+                 problem.initial_state_summary.begin(),
+                 problem.initial_state_summary.end());
+  for (const auto &entry : problem.model->summary_entries(problem.static_contact_forces))
+    summary.push_back(entry);
+  summary.insert(
+      summary.end(),
+      {{"model", problem.model->description()},
+       {"n_dofs", system.n_dofs()},
+       {"n_contacts", system.contacts.size()},
+       {"dt", dt},
+       {"end_time", integrator.time()},
+       {"n_steps", steps_done},
+       {"wall_time", wall},
+       {"stepping_wall_time", stepping},
+       {"ns_per_dof_per_step",
+        steps_done > 0 ? 1e9 * stepping / (double(steps_done) * system.n_dofs())
+                       : std::nan("")},
+       {"n_impacts", writer.n_impacts()},
+       {"max_penetration", writer.max_penetration()},
+       {"energy_balance_error", drift},
+       {"energy_balance_relative", scale > 0. ? drift / scale : 0.}});
+  add_coupling_summary(summary);
+  add_contact_summary(summary);
+  std::cout << problem.model->results_table();
+  if (!system.monitors.empty())
+    summary.emplace_back("max_absolute_acceleration", acceleration.report());
+  write_summary(directory.path() + "/summary.json", summary);
+  std::cout << "  done: " << steps_done << " steps in " << wall << " s (output "
+            << output_clock.seconds() << " s in " << output_clock.calls() << " calls); ";
+  if (!system.contacts.empty())
+    std::cout << "impacts: " << writer.n_impacts()
+              << ", max penetration: " << writer.max_penetration() << " m, ";
+  std::cout << "energy balance error: " << drift << " J ("
+            << (scale > 0. ? drift / scale : 0.) << " of the largest energy)\n"
+            << "  summary: " << directory.path() << "/summary.json" << std::endl;
+  timer.print_summary();
+}
+} // namespace
+
+template <class Integrator>
+void run_time_loop(Integrator &integrator,
+                   Problem &problem,
+                   RunDirectory &directory,
+                   TimerOutput &timer,
+                   SummaryEntries summary)
+{
+  TimeLoop<Integrator> loop(integrator, problem, directory);
+  loop.run(timer);
+  loop.finish(timer, std::move(summary));
+}
+
+template void
+run_time_loop(CDLagrange &, Problem &, RunDirectory &, TimerOutput &, SummaryEntries);
+template void
+run_time_loop(Newmark &, Problem &, RunDirectory &, TimerOutput &, SummaryEntries);
+template void
+run_time_loop(HATICoupling &, Problem &, RunDirectory &, TimerOutput &, SummaryEntries);
+} // namespace hati
