@@ -6,11 +6,13 @@
 namespace hati
 {
 void TimeIntegrationParameters::declare_parameters(ParameterHandler &prm,
-                                                   const std::string &methods,
-                                                   const std::string &documentation)
+                                                   const Choice &methods)
 {
   prm.enter_subsection("Time integration");
-  prm.declare_entry("Method", "CD-Lagrange", Patterns::Selection(methods), documentation);
+  prm.declare_entry("Method",
+                    "CD-Lagrange",
+                    Patterns::Selection(methods.selection),
+                    methods.documentation);
   prm.declare_entry(
       "Time step",
       "1e-3",
@@ -82,12 +84,13 @@ void TimeIntegrationParameters::parse_parameters(ParameterHandler &prm)
   }
 }
 
-void AnalysisParameters::declare_parameters(ParameterHandler &prm,
-                                            const std::string &analyses,
-                                            const std::string &documentation)
+void AnalysisParameters::declare_parameters(ParameterHandler &prm, const Choice &analyses)
 {
   prm.enter_subsection("Analysis");
-  prm.declare_entry("Type", "transient", Patterns::Selection(analyses), documentation);
+  prm.declare_entry("Type",
+                    "transient",
+                    Patterns::Selection(analyses.selection),
+                    analyses.documentation);
   prm.declare_entry(
       "Number of modes",
       "6",

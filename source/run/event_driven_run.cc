@@ -13,23 +13,6 @@
 
 namespace hati
 {
-namespace
-{
-/** State of the event-driven integrator for the output writer. */
-OutputState output_state(const EventDriven &integrator)
-{
-  OutputState s;
-  s.time = integrator.time();
-  s.displacement = &integrator.displacement();
-  s.velocity = &integrator.velocity();
-  s.gaps = integrator.gaps();
-  s.normal_velocities = integrator.normal_velocities();
-  s.impulses = integrator.impulses();
-  s.active = integrator.active();
-  s.impulse_duration = 0.; // impulses act at an instant
-  return s;
-}
-} // namespace
 
 void run_event_driven(Problem &problem, RunDirectory &directory)
 {
@@ -51,7 +34,7 @@ void run_event_driven(Problem &problem, RunDirectory &directory)
   auto write = [&]()
   {
     const WallClock::Scope scope(output_clock);
-    const OutputState s = output_state(integrator);
+    const OutputState s = contact_state(integrator, 0.); // impulses act at an instant
     check_finite(*s.displacement, s.time);
     writer.write_history(s);
     writer.write_energy(s.time, integrator.energies());
@@ -64,7 +47,7 @@ void run_event_driven(Problem &problem, RunDirectory &directory)
   const unsigned long vtu_every =
       output.vtu_interval > 0. ? steps_between(output.vtu_interval, sample) : 0;
   if (vtu_every > 0)
-    writer.write_vtu(output_state(integrator));
+    writer.write_vtu(contact_state(integrator, 0.));
   unsigned long samples_done = 0; // n_samples unless SIGINT/SIGTERM stopped the loop
   {
     TimerOutput::Scope scope(timer, "time integration");
@@ -74,7 +57,7 @@ void run_event_driven(Problem &problem, RunDirectory &directory)
       samples_done = i;
       write();
       if (vtu_every > 0 && (i % vtu_every == 0 || i == n_samples))
-        writer.write_vtu(output_state(integrator));
+        writer.write_vtu(contact_state(integrator, 0.));
       if (progress.due())
       {
         progress.print(integrator.time(), i);

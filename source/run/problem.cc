@@ -16,9 +16,9 @@ void Problem::declare_parameters(ParameterHandler &prm)
 {
   declare_model_parameters(prm);
   AnalysisParameters::declare_parameters(
-      prm, analysis_registry().selection(), analysis_registry().join("; ", "; ", true));
+      prm, {analysis_registry().selection(), analysis_registry().join("; ", "; ", true)});
   TimeIntegrationParameters::declare_parameters(
-      prm, method_registry().selection(), method_registry().join(" ", " ", true));
+      prm, {method_registry().selection(), method_registry().join(" ", " ", true)});
   prm.enter_subsection("Time integration");
   prm.enter_subsection("Newmark");
   NewmarkParameters::declare_parameters(prm);

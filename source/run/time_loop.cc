@@ -1,5 +1,6 @@
 #include <hati/output/contact_statistics.h>
 #include <hati/output/output_writer.h>
+#include <hati/output/postprocessor.h>
 #include <hati/output/run_directory.h>
 #include <hati/output/summary.h>
 #include <hati/output/wall_clock.h>
@@ -29,22 +30,6 @@ template <class Integrator> unsigned int time_step_ratio(const Integrator &integ
     return 1;
 }
 
-/** State of an integrator with contacts for the output writer. */
-template <class Integrator>
-OutputState contact_state(const Integrator &integrator, const double impulse_duration)
-{
-  OutputState s;
-  s.time = integrator.time();
-  s.displacement = &integrator.displacement();
-  s.velocity = &integrator.velocity();
-  s.gaps = integrator.gaps();
-  s.normal_velocities = integrator.normal_velocities();
-  s.impulses = integrator.impulses();
-  s.active = integrator.active();
-  s.impulse_duration = impulse_duration;
-  return s;
-}
-
 OutputState output_state(const CDLagrange &integrator)
 {
   return contact_state(integrator, integrator.time_step());
@@ -66,76 +51,6 @@ OutputState output_state(const Newmark &integrator)
   s.velocity = &integrator.velocity();
   return s;
 }
-
-/**
- * The largest absolute acceleration of each monitor point (m/s^2): the
- * relative velocity differenced between two history rows plus the ground
- * acceleration at the middle of the interval.
- */
-class AccelerationPeaks
-{
-public:
-  AccelerationPeaks(const DiscreteSystem &system,
-                    const std::array<std::function<double(double)>, 3> &ground)
-      : system(system), ground(ground), peaks(system.monitors.size()),
-        last_velocity(system.monitors.size())
-  {
-  }
-
-  /** Account for the state @p s of a history row. */
-  void track(const OutputState &s)
-  {
-    for (unsigned int k = 0; k < system.monitors.size(); ++k)
-    {
-      const auto &m = system.monitors[k];
-      std::vector<double> &last = last_velocity[k];
-      last.resize(m.dofs.size());
-      double a2 = 0.;
-      for (unsigned int i = 0; i < m.dofs.size(); ++i)
-      {
-        const double v = (*s.velocity)[m.dofs[i]];
-        if (have_last && s.time > last_time)
-        {
-          const unsigned int d = m.labels[i] == "x" ? 0 : m.labels[i] == "y" ? 1 : 2;
-          const double a = (v - last[i]) / (s.time - last_time) +
-                           (ground[d] ? ground[d](0.5 * (s.time + last_time)) : 0.);
-          a2 += a * a;
-        }
-        last[i] = v;
-      }
-      if (std::sqrt(a2) > peaks[k].first)
-        peaks[k] = {std::sqrt(a2), s.time};
-    }
-    last_time = s.time;
-    have_last = true;
-  }
-
-  /** Print the table and return the `max_absolute_acceleration` entry. */
-  SummaryValue report() const
-  {
-    SummaryValue json = SummaryValue::object();
-    std::cout << "  largest absolute acceleration of the monitor points (m/s^2, between "
-                 "history rows):\n";
-    for (unsigned int k = 0; k < system.monitors.size(); ++k)
-    {
-      json.set(system.monitors[k].name,
-               SummaryValue::object()
-                   .set("value", peaks[k].first)
-                   .set("time", peaks[k].second));
-      std::cout << "    " << std::setw(12) << system.monitors[k].name << std::setw(14)
-                << peaks[k].first << " at t = " << peaks[k].second << " s\n";
-    }
-    return json;
-  }
-
-private:
-  const DiscreteSystem &system;
-  const std::array<std::function<double(double)>, 3> &ground;
-  std::vector<std::pair<double, double>> peaks;
-  std::vector<std::vector<double>> last_velocity;
-  double last_time = 0.;
-  bool have_last = false;
-};
 
 /** One transient run of a stepping integrator: run_time_loop() in parts. */
 template <class Integrator> class TimeLoop
@@ -166,7 +81,8 @@ private:
   OutputWriter writer;
   const unsigned long n_steps, every_history, every_vtu;
   WallClock output_clock; // a TimerOutput section costs more than a row
-  AccelerationPeaks acceleration;
+  /** The registered post-processors that apply (postprocessor_registry()). */
+  std::vector<std::unique_ptr<Postprocessor>> postprocessors;
   ContactStatistics statistics;
   Progress progress;
   /** n_steps unless SIGINT/SIGTERM stopped the loop. */
@@ -196,7 +112,6 @@ TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
       every_vtu(problem.output_parameters.vtu_interval > 0.
                     ? steps_between(problem.output_parameters.vtu_interval, dt)
                     : 0),
-      acceleration(problem.system, problem.ground_acceleration),
       statistics(problem.system.contacts,
                  initial_gaps(problem.system),
                  problem.output_parameters.contact_force_window),
@@ -206,6 +121,9 @@ TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
             << std::endl;
   // per contact name: impacts, peak force, time out of contact, episodes
   writer.set_initial_contacts(initial_gaps(system));
+  for (const auto &entry : postprocessor_registry().entries())
+    if (auto p = entry.create({problem.system, problem.ground_acceleration}))
+      postprocessors.push_back(std::move(p));
   if constexpr (std::is_same_v<Integrator, HATICoupling>)
     connect_micro_steps();
 }
@@ -217,7 +135,8 @@ template <class Integrator> void TimeLoop<Integrator>::write(const unsigned long
   check_finite(*s.displacement, s.time);
   if (step % every_history == 0 || step == n_steps)
   {
-    acceleration.track(s);
+    for (const auto &p : postprocessors)
+      p->history_row(s);
     writer.write_history(s);
     writer.write_energy(s.time, integrator.energies());
   }
@@ -363,8 +282,8 @@ void TimeLoop<Integrator>::finish(TimerOutput &timer, SummaryEntries summary)
   add_coupling_summary(summary);
   add_contact_summary(summary);
   std::cout << problem.model->results_table();
-  if (!system.monitors.empty())
-    summary.emplace_back("max_absolute_acceleration", acceleration.report());
+  for (const auto &p : postprocessors)
+    p->finish(summary, std::cout);
   write_summary(directory.path() + "/summary.json", summary);
   std::cout << "  done: " << steps_done << " steps in " << wall << " s (output "
             << output_clock.seconds() << " s in " << output_clock.calls() << " calls); ";

@@ -9,16 +9,20 @@ namespace hati
 {
 using namespace dealii;
 
+/**
+ * The values a selecting parameter accepts (`a|b|c`, those of a Registry)
+ * and its documentation.
+ */
+struct Choice
+{
+  std::string selection, documentation;
+};
+
 /** `Time integration` subsection: scheme, steps, limits. */
 struct TimeIntegrationParameters
 {
-  /**
-   * Declare the subsection; `Method` selects among @p methods (`a|b|c`,
-   * the registered methods) with the @p documentation of each.
-   */
-  static void declare_parameters(ParameterHandler &prm,
-                                 const std::string &methods,
-                                 const std::string &documentation);
+  /** Declare the subsection; `Method` is one of the registered @p methods. */
+  static void declare_parameters(ParameterHandler &prm, const Choice &methods);
   void parse_parameters(ParameterHandler &prm);
 
   /** "CD-Lagrange" (event capturing) or "event-driven" (CVODE reference). */
@@ -37,13 +41,8 @@ struct TimeIntegrationParameters
 /** `Analysis` subsection: what to compute. */
 struct AnalysisParameters
 {
-  /**
-   * Declare the subsection; `Type` selects among @p analyses (`a|b|c`, the
-   * registered analyses) with the @p documentation of each.
-   */
-  static void declare_parameters(ParameterHandler &prm,
-                                 const std::string &analyses,
-                                 const std::string &documentation);
+  /** Declare the subsection; `Type` is one of the registered @p analyses. */
+  static void declare_parameters(ParameterHandler &prm, const Choice &analyses);
   void parse_parameters(ParameterHandler &prm);
 
   /** "transient", "static" or "modal". */

@@ -4,6 +4,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/vector.h>
 
+#include <hati/output/output_writer.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -30,6 +32,25 @@ inline void check_finite(const dealii::Vector<double> &u, const double t)
     s << "the solution became non-finite (NaN or Inf) at t = " << t << " s";
     AssertThrow(false, dealii::ExcMessage(s.str()));
   }
+}
+
+/**
+ * The state of an integrator with contacts for the output writer; the
+ * impulses act over @p impulse_duration (s: the step, or 0 for an instant).
+ */
+template <class Integrator>
+OutputState contact_state(const Integrator &integrator, const double impulse_duration)
+{
+  OutputState s;
+  s.time = integrator.time();
+  s.displacement = &integrator.displacement();
+  s.velocity = &integrator.velocity();
+  s.gaps = integrator.gaps();
+  s.normal_velocities = integrator.normal_velocities();
+  s.impulses = integrator.impulses();
+  s.active = integrator.active();
+  s.impulse_duration = impulse_duration;
+  return s;
 }
 
 /** Progress lines of a long run, at most every @p interval seconds of wall time. */
