@@ -315,54 +315,68 @@ struct ContactElimination
     }
   }
 };
-} // namespace
 
-ModalResult compute_modes(const DiscreteSystem &system,
-                          const unsigned int n_modes,
-                          const bool close_contacts)
+/**
+ * K and M of the eigenproblem on one pattern (a diagonal one for a model
+ * without stiffness; M the consistent mass if the system has one, else the
+ * lumped diagonal). Fixed DoFs: K keeps a positive diagonal, M rows and
+ * columns are zero, so that their eigenvalues are infinite and never found.
+ */
+struct ModalMatrices
+{
+  SparsityPattern diagonal_pattern;
+  SparseMatrix<double> K, M;
+
+  explicit ModalMatrices(const DiscreteSystem &system)
+  {
+    const unsigned int n = system.n_dofs();
+    if (!system.has_stiffness())
+    {
+      diagonal_pattern.reinit(n, n, 1);
+      diagonal_pattern.compress();
+    }
+    const SparsityPattern &pattern =
+        system.has_stiffness() ? system.stiffness_pattern : diagonal_pattern;
+    K.reinit(pattern);
+    M.reinit(pattern);
+    if (system.has_stiffness())
+      K.copy_from(system.stiffness);
+    if (system.has_consistent_mass())
+    {
+      for (unsigned int i = 0; i < n; ++i)
+        for (auto it = system.consistent_mass.begin(i);
+             it != system.consistent_mass.end(i);
+             ++it)
+          if (it->value() != 0.)
+          {
+            AssertThrow(pattern.exists(i, it->column()),
+                        ExcMessage("modal analysis: the consistent mass has an entry "
+                                   "outside the sparsity pattern of the stiffness."));
+            M.add(i, it->column(), it->value());
+          }
+    }
+    else
+      for (unsigned int i = 0; i < n; ++i)
+        M.set(i, i, system.lumped_mass[i]);
+    decouple_fixed_dofs(K, system.fixed);
+    // fixed DoFs get no mass: their spurious eigenvalues go to infinity
+    for (unsigned int i = 0; i < n; ++i)
+      for (auto it = M.begin(i); it != M.end(i); ++it)
+        if (system.fixed[i] || system.fixed[it->column()])
+          it->value() = 0.;
+  }
+};
+
+/**
+ * `M r_d` per direction d (empty where the model has no influence vector),
+ * with the inertia coupled to the supports where the system provides it
+ * (DiscreteSystem::mass_influence), and the total masses `r_d.M r_d` (kg).
+ */
+std::array<Vector<double>, 3> influence_masses(const DiscreteSystem &system,
+                                               const SparseMatrix<double> &M,
+                                               std::array<double, 3> &total_mass)
 {
   const unsigned int n = system.n_dofs();
-  AssertThrow(system.fixed.size() == n,
-              ExcMessage("modal analysis: the DiscreteSystem has no fixed flags."));
-
-  // K and M on one pattern (a diagonal one for a model without stiffness);
-  // fixed DoFs: K keeps a positive diagonal, M rows and columns are zero, so
-  // that their eigenvalues are infinite and never found
-  SparsityPattern diagonal_pattern;
-  if (!system.has_stiffness())
-  {
-    diagonal_pattern.reinit(n, n, 1);
-    diagonal_pattern.compress();
-  }
-  const SparsityPattern &pattern =
-      system.has_stiffness() ? system.stiffness_pattern : diagonal_pattern;
-  SparseMatrix<double> K(pattern), M(pattern);
-  if (system.has_stiffness())
-    K.copy_from(system.stiffness);
-  if (system.has_consistent_mass())
-  {
-    for (unsigned int i = 0; i < n; ++i)
-      for (auto it = system.consistent_mass.begin(i); it != system.consistent_mass.end(i);
-           ++it)
-        if (it->value() != 0.)
-        {
-          AssertThrow(pattern.exists(i, it->column()),
-                      ExcMessage("modal analysis: the consistent mass has an entry "
-                                 "outside the sparsity pattern of the stiffness."));
-          M.add(i, it->column(), it->value());
-        }
-  }
-  else
-    for (unsigned int i = 0; i < n; ++i)
-      M.set(i, i, system.lumped_mass[i]);
-  decouple_fixed_dofs(K, system.fixed);
-  // fixed DoFs get no mass: their spurious eigenvalues go to infinity
-  for (unsigned int i = 0; i < n; ++i)
-    for (auto it = M.begin(i); it != M.end(i); ++it)
-      if (system.fixed[i] || system.fixed[it->column()])
-        it->value() = 0.;
-
-  ModalResult result;
   std::array<Vector<double>, 3> Mr;
   for (unsigned int d = 0; d < 3; ++d)
     if (system.mass_influence[d].size() == n)
@@ -372,15 +386,89 @@ ModalResult compute_modes(const DiscreteSystem &system,
       for (unsigned int i = 0; i < n; ++i)
         if (system.fixed[i])
           Mr[d][i] = 0.;
-      result.total_mass[d] =
-          system.influence[d].size() == n ? system.influence[d] * Mr[d] : 0.;
+      total_mass[d] = system.influence[d].size() == n ? system.influence[d] * Mr[d] : 0.;
     }
     else if (system.influence[d].size() == n)
     {
       Mr[d].reinit(n);
       M.vmult(Mr[d], system.influence[d]);
-      result.total_mass[d] = system.influence[d] * Mr[d];
+      total_mass[d] = system.influence[d] * Mr[d];
     }
+  return Mr;
+}
+
+/** The largest absolute row sum of @p A (its infinity norm). */
+double max_row_sum(const SparseMatrix<double> &A)
+{
+  double norm = 0.;
+  for (unsigned int i = 0; i < A.m(); ++i)
+  {
+    double row = 0.;
+    for (auto it = A.begin(i); it != A.end(i); ++it)
+      row += std::abs(it->value());
+    norm = std::max(norm, row);
+  }
+  return norm;
+}
+
+/**
+ * Zero mode @p k (counted from 0) on the @p fixed DoFs, mass-normalise it
+ * and check `K phi = lambda M phi` on the free DoFs (relative 1e-6, plus
+ * 1e-10 `||K||_inf ||phi||`, @p norm_K); throws if it has no kinetic energy
+ * or is not an eigenpair.
+ */
+void normalise_and_check(const unsigned int k,
+                         const double lambda,
+                         const SparseMatrix<double> &K,
+                         const SparseMatrix<double> &M,
+                         const std::vector<bool> &fixed,
+                         const double norm_K,
+                         Vector<double> &phi)
+{
+  const unsigned int n = phi.size();
+  Vector<double> Kphi(n), Mphi(n), r(n);
+  for (unsigned int i = 0; i < n; ++i)
+    if (fixed[i])
+      phi[i] = 0.;
+  M.vmult(Mphi, phi);
+  const double mass = phi * Mphi;
+  AssertThrow(mass > 0. && std::isfinite(mass),
+              ExcMessage("modal analysis: mode " + std::to_string(k + 1) +
+                         " has no kinetic energy (ARPACK did not converge or the "
+                         "mass matrix is singular)."));
+  phi /= std::sqrt(mass);
+  Mphi /= std::sqrt(mass);
+
+  K.vmult(Kphi, phi);
+  r = Kphi;
+  r.add(-lambda, Mphi);
+  for (unsigned int i = 0; i < n; ++i)
+    if (fixed[i])
+      r[i] = 0.;
+  const double tolerance = 1e-6 * (Kphi.l2_norm() + std::abs(lambda) * Mphi.l2_norm()) +
+                           1e-10 * norm_K * phi.l2_norm();
+  if (!(r.l2_norm() <= tolerance))
+  {
+    std::ostringstream message;
+    message << "modal analysis: mode " << k + 1 << " (lambda = " << lambda
+            << " 1/s^2) is not an eigenpair: ||K phi - lambda M phi|| = " << r.l2_norm()
+            << " > " << tolerance << " (the eigensolver did not converge).";
+    AssertThrow(false, ExcMessage(message.str()));
+  }
+}
+} // namespace
+
+ModalResult compute_modes(const DiscreteSystem &system,
+                          const unsigned int n_modes,
+                          const bool close_contacts)
+{
+  const unsigned int n = system.n_dofs();
+  AssertThrow(system.fixed.size() == n,
+              ExcMessage("modal analysis: the DiscreteSystem has no fixed flags."));
+  const ModalMatrices matrices(system);
+  const SparseMatrix<double> &K = matrices.K, &M = matrices.M;
+  ModalResult result;
+  const std::array<Vector<double>, 3> Mr = influence_masses(system, M, result.total_mass);
 
   // closed contacts (doc/theory.md 7.3): K_r = T^T K T, M_r = T^T M T on the
   // full numbering, the eliminated (slave) DoFs held like fixed ones
@@ -431,51 +519,14 @@ ModalResult compute_modes(const DiscreteSystem &system,
             [](const Eigenpair &a, const Eigenpair &b) { return a.lambda < b.lambda; });
   pairs.resize(n_modes);
 
-  // mass-normalise, check K phi = lambda M phi (on the free DoFs of the
-  // condensed problem), back-substitute the slaves, fix the sign (largest
-  // entry positive)
-  double norm_K = 0.;
-  for (unsigned int i = 0; i < n; ++i)
-  {
-    double row = 0.;
-    for (auto it = Kw.begin(i); it != Kw.end(i); ++it)
-      row += std::abs(it->value());
-    norm_K = std::max(norm_K, row);
-  }
-  Vector<double> Kphi(n), Mphi(n), r(n);
+  // mass-normalise and check (on the free DoFs of the condensed problem),
+  // back-substitute the slaves, fix the sign (largest entry positive)
+  const double norm_K = max_row_sum(Kw);
   for (unsigned int k = 0; k < n_modes; ++k)
   {
     Vector<double> &phi = pairs[k].phi;
-    for (unsigned int i = 0; i < n; ++i)
-      if (fixed[i])
-        phi[i] = 0.;
-    Mw.vmult(Mphi, phi);
-    const double mass = phi * Mphi;
-    AssertThrow(mass > 0. && std::isfinite(mass),
-                ExcMessage("modal analysis: mode " + std::to_string(k + 1) +
-                           " has no kinetic energy (ARPACK did not converge or the "
-                           "mass matrix is singular)."));
-    phi /= std::sqrt(mass);
-    Mphi /= std::sqrt(mass);
-
     const double lambda = pairs[k].lambda;
-    Kw.vmult(Kphi, phi);
-    r = Kphi;
-    r.add(-lambda, Mphi);
-    for (unsigned int i = 0; i < n; ++i)
-      if (fixed[i])
-        r[i] = 0.;
-    const double tolerance = 1e-6 * (Kphi.l2_norm() + std::abs(lambda) * Mphi.l2_norm()) +
-                             1e-10 * norm_K * phi.l2_norm();
-    if (!(r.l2_norm() <= tolerance))
-    {
-      std::ostringstream message;
-      message << "modal analysis: mode " << k + 1 << " (lambda = " << lambda
-              << " 1/s^2) is not an eigenpair: ||K phi - lambda M phi|| = " << r.l2_norm()
-              << " > " << tolerance << " (the eigensolver did not converge).";
-      AssertThrow(false, ExcMessage(message.str()));
-    }
-
+    normalise_and_check(k, lambda, Kw, Mw, fixed, norm_K, phi);
     elimination.distribute(phi);
     unsigned int largest = 0;
     for (unsigned int i = 0; i < n; ++i)

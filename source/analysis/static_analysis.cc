@@ -9,6 +9,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <hati/analysis/static_analysis.h>
+#include <hati/linear_algebra/amg_preconditioner.h>
 #include <hati/linear_algebra/direct_solver.h>
 
 #include <algorithm>
@@ -199,6 +200,189 @@ std::vector<double> solve_closed(const DiscreteSystem &system,
     lambda[k] = -x[n + k];
   return lambda;
 }
+
+/**
+ * The contact rows the static state holds closed: zero initial gap and a
+ * free DoF in the row; the second of two opposite rows (two-sided without
+ * clearance) is left to the first.
+ */
+struct ClosedContacts
+{
+  /** The closed rows, in the order of the contacts. */
+  std::vector<unsigned int> closed;
+  /** The first rows of two-sided pairs with a clearance, held where they are. */
+  std::vector<unsigned int> centred;
+  /** Per contact row: the closed row it is the opposite of, or -1. */
+  std::vector<int> opposite;
+
+  explicit ClosedContacts(const DiscreteSystem &system)
+      : opposite(system.contacts.size(), -1)
+  {
+    for (unsigned int k = 0; k < system.contacts.size(); ++k)
+    {
+      const ContactRow &c = system.contacts[k];
+      bool free_dof = false;
+      for (const auto dof : c.dofs)
+        free_dof = free_dof || !system.fixed[dof];
+      if (!free_dof)
+        continue;
+      // a row with a gap is held only as the second of a two-sided pair whose
+      // first row (the same gap, the opposite normal) precedes it
+      if (c.initial_gap != 0.)
+      {
+        for (unsigned int j = 0; j < k; ++j)
+          if (opposite_rows(system.contacts[j], c))
+          {
+            centred.push_back(j);
+            closed.push_back(j);
+            opposite[k] = j;
+            break;
+          }
+        continue;
+      }
+      for (const unsigned int j : closed)
+        if (opposite_rows(system.contacts[j], c))
+          opposite[k] = j;
+      if (opposite[k] < 0)
+        closed.push_back(k);
+    }
+  }
+
+  /** Whether the closed row @p k is the first of a pair with a clearance. */
+  bool is_centred(const unsigned int k) const
+  {
+    return std::find(centred.begin(), centred.end(), k) != centred.end();
+  }
+};
+
+/**
+ * The contact force per contact row (N) from the multipliers @p lambda of
+ * the closed rows (solve_closed()): a bilateral pair in tension is carried
+ * by its second row; throws if a unilateral contact is in tension or if
+ * the load @p F pushes a two-sided contact across its clearance.
+ */
+std::vector<double> closed_contact_forces(const DiscreteSystem &system,
+                                          const ClosedContacts &contacts,
+                                          const std::vector<double> &lambda,
+                                          const Vector<double> &F)
+{
+  const std::vector<unsigned int> &closed = contacts.closed;
+  const std::vector<int> &opposite = contacts.opposite;
+  double largest = 0.;
+  for (const double l : lambda)
+    largest = std::max(largest, std::abs(l));
+  std::vector<double> forces(system.contacts.size(), 0.);
+  for (unsigned int r = 0; r < closed.size(); ++r)
+    forces[closed[r]] = lambda[r];
+  for (unsigned int k = 0; k < system.contacts.size(); ++k)
+    if (opposite[k] >= 0 && forces[opposite[k]] < 0.) // bilateral pair
+    {
+      forces[k] = -forces[opposite[k]];
+      forces[opposite[k]] = 0.;
+    }
+  for (unsigned int r = 0; r < closed.size(); ++r)
+  {
+    const unsigned int k = closed[r];
+    bool bilateral = system.contacts[k].bilateral; // and the centred pairs
+    for (unsigned int j = 0; j < opposite.size(); ++j)
+      bilateral = bilateral || opposite[j] == static_cast<int>(k);
+    if (!bilateral && lambda[r] < -1e-9 * largest)
+    {
+      std::ostringstream message;
+      message << "static analysis: the closed contact '" << system.contacts[k].name
+              << "' is in tension (" << lambda[r]
+              << " N): the structure would lift off there (give it a gap > 0 or a "
+                 "support)";
+      AssertThrow(false, ExcMessage(message.str()));
+    }
+  }
+  // a two-sided contact with a clearance only stands in for the play: the
+  // static load must not push the node to a side
+  double load = 0.;
+  for (unsigned int i = 0; i < F.size(); ++i)
+    load = std::max(load, std::abs(F[i]));
+  for (unsigned int r = 0; r < closed.size(); ++r)
+    if (contacts.is_centred(closed[r]))
+    {
+      if (std::abs(lambda[r]) > 1e-9 * std::max(largest, load))
+      {
+        std::ostringstream message;
+        message << "static analysis: the static load pushes the two-sided contact '"
+                << system.contacts[closed[r]].name << "' across its clearance ("
+                << lambda[r]
+                << " N): there is no static state within the play (support it)";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+      forces[closed[r]] = 0.;
+      for (unsigned int k = 0; k < opposite.size(); ++k)
+        if (opposite[k] == static_cast<int>(closed[r]))
+          forces[k] = 0.;
+    }
+  return forces;
+}
+
+/**
+ * K U = F by one Amesos_Klu factorisation (it stops at an exactly zero
+ * pivot), then the solve and up to two steps of iterative refinement with it.
+ */
+void solve_direct(const SparseMatrix<double> &K,
+                  const Vector<double> &F,
+                  const std::vector<bool> &fixed,
+                  Vector<double> &U)
+{
+  const double norm_F = F.l2_norm();
+  Vector<double> r(U.size());
+  DirectSolver solver;
+  solver.factorize(K, singular_message + " (Amesos_Klu found a zero pivot in K).");
+  solver.solve(U, F);
+  for (unsigned int refinement = 0; refinement < 2; ++refinement)
+  {
+    residual(K, U, F, fixed, r);
+    if (!std::isfinite(r.l2_norm()) || free_norm(r, fixed) <= 1e-14 * norm_F)
+      break;
+    Vector<double> x(U.size());
+    solver.solve(x, r);
+    U += x;
+  }
+}
+
+/**
+ * K U = F by CG with Trilinos ML AMG (the rigid translations of the model as
+ * its near null space) to `1e-12 ||F||`; throws if CG breaks down or does
+ * not converge.
+ */
+void solve_iterative(const DiscreteSystem &system,
+                     const SparseMatrix<double> &K,
+                     const Vector<double> &F,
+                     Vector<double> &U)
+{
+  const unsigned int n = system.n_dofs();
+  const double norm_F = F.l2_norm();
+  TrilinosWrappers::PreconditionAMG amg;
+  TrilinosWrappers::SparseMatrix trilinos_K;
+  trilinos_K.reinit(K, 0.);
+  amg.initialize(trilinos_K, structural_amg_data(system.influence, n));
+  SolverControl control(std::max(1000u, n), 1e-12 * norm_F);
+  TrilinosWrappers::SolverCG cg(control);
+  try
+  {
+    cg.solve(trilinos_K, U, F, amg);
+  }
+  catch (const SolverControl::NoConvergence &e)
+  {
+    std::ostringstream message;
+    message << singular_message << " or badly conditioned: CG + AMG did not "
+            << "converge in " << e.last_step << " iterations (residual "
+            << e.last_residual << ", target " << 1e-12 * norm_F << ").";
+    AssertThrow(false, ExcMessage(message.str()));
+  }
+  catch (const std::exception &)
+  {
+    // AztecOO reports a breakdown of CG (a zero curvature p.K p = 0)
+    AssertThrow(false,
+                ExcMessage(singular_message + " (CG + AMG broke down: p.K p = 0)."));
+  }
+}
 } // namespace
 
 void solve_static(const DiscreteSystem &system,
@@ -224,39 +408,8 @@ void solve_static(const DiscreteSystem &system,
   AssertThrow(system.has_stiffness(),
               ExcMessage(singular_message + ": the model has no stiffness."));
 
-  // closed contacts: zero initial gap and a free DoF in the row; the second
-  // of two opposite rows (two-sided without clearance) is left to the first
-  std::vector<unsigned int> closed, centred;
-  std::vector<int> opposite(system.contacts.size(), -1);
-  for (unsigned int k = 0; k < system.contacts.size(); ++k)
-  {
-    const ContactRow &c = system.contacts[k];
-    bool free_dof = false;
-    for (const auto dof : c.dofs)
-      free_dof = free_dof || !fixed[dof];
-    if (!free_dof)
-      continue;
-    // a row with a gap is held only as the second of a two-sided pair whose
-    // first row (the same gap, the opposite normal) precedes it
-    if (c.initial_gap != 0.)
-    {
-      for (unsigned int j = 0; j < k; ++j)
-        if (opposite_rows(system.contacts[j], c))
-        {
-          centred.push_back(j);
-          closed.push_back(j);
-          opposite[k] = j;
-          break;
-        }
-      continue;
-    }
-    for (const unsigned int j : closed)
-      if (opposite_rows(system.contacts[j], c))
-        opposite[k] = j;
-    if (opposite[k] < 0)
-      closed.push_back(k);
-  }
-  check_rigid_translations(system, closed);
+  const ClosedContacts contacts(system);
+  check_rigid_translations(system, contacts.closed);
 
   Vector<double> F(n);
   if (constant_loads_only)
@@ -273,122 +426,24 @@ void solve_static(const DiscreteSystem &system,
   K.copy_from(system.stiffness);
   decouple_fixed_dofs(K, fixed);
 
-  if (!closed.empty())
+  if (!contacts.closed.empty())
   {
-    const std::vector<double> lambda = solve_closed(system, K, F, closed, centred, U);
-    double largest = 0.;
-    for (const double l : lambda)
-      largest = std::max(largest, std::abs(l));
-    std::vector<double> forces(system.contacts.size(), 0.);
-    for (unsigned int r = 0; r < closed.size(); ++r)
-      forces[closed[r]] = lambda[r];
-    for (unsigned int k = 0; k < system.contacts.size(); ++k)
-      if (opposite[k] >= 0 && forces[opposite[k]] < 0.) // bilateral pair
-      {
-        forces[k] = -forces[opposite[k]];
-        forces[opposite[k]] = 0.;
-      }
-    for (unsigned int r = 0; r < closed.size(); ++r)
-    {
-      const unsigned int k = closed[r];
-      bool bilateral = system.contacts[k].bilateral; // and the centred pairs
-      for (unsigned int j = 0; j < opposite.size(); ++j)
-        bilateral = bilateral || opposite[j] == static_cast<int>(k);
-      if (!bilateral && lambda[r] < -1e-9 * largest)
-      {
-        std::ostringstream message;
-        message << "static analysis: the closed contact '" << system.contacts[k].name
-                << "' is in tension (" << lambda[r]
-                << " N): the structure would lift off there (give it a gap > 0 or a "
-                   "support)";
-        AssertThrow(false, ExcMessage(message.str()));
-      }
-    }
-    // a two-sided contact with a clearance only stands in for the play: the
-    // static load must not push the node to a side
-    double load = 0.;
-    for (unsigned int i = 0; i < n; ++i)
-      load = std::max(load, std::abs(F[i]));
-    for (unsigned int r = 0; r < closed.size(); ++r)
-      if (std::find(centred.begin(), centred.end(), closed[r]) != centred.end())
-      {
-        if (std::abs(lambda[r]) > 1e-9 * std::max(largest, load))
-        {
-          std::ostringstream message;
-          message << "static analysis: the static load pushes the two-sided contact '"
-                  << system.contacts[closed[r]].name << "' across its clearance ("
-                  << lambda[r]
-                  << " N): there is no static state within the play (support it)";
-          AssertThrow(false, ExcMessage(message.str()));
-        }
-        forces[closed[r]] = 0.;
-        for (unsigned int k = 0; k < opposite.size(); ++k)
-          if (opposite[k] == static_cast<int>(closed[r]))
-            forces[k] = 0.;
-      }
+    const std::vector<double> lambda =
+        solve_closed(system, K, F, contacts.closed, contacts.centred, U);
+    const std::vector<double> forces = closed_contact_forces(system, contacts, lambda, F);
     if (contact_forces != nullptr)
       *contact_forces = forces;
     return;
   }
 
-  Vector<double> r(n);
   if (linear_solver == "direct")
-  {
-    // one factorisation (Amesos_Klu stops at an exactly zero pivot), then the
-    // solve and up to two steps of iterative refinement with it
-    DirectSolver solver;
-    solver.factorize(K, singular_message + " (Amesos_Klu found a zero pivot in K).");
-    solver.solve(U, F);
-    for (unsigned int refinement = 0; refinement < 2; ++refinement)
-    {
-      residual(K, U, F, fixed, r);
-      if (!std::isfinite(r.l2_norm()) || free_norm(r, fixed) <= 1e-14 * norm_F)
-        break;
-      Vector<double> x(n);
-      solver.solve(x, r);
-      U += x;
-    }
-  }
+    solve_direct(K, F, fixed, U);
   else if (norm_F > 0.)
-  {
-    TrilinosWrappers::PreconditionAMG amg;
-    TrilinosWrappers::PreconditionAMG::AdditionalData data;
-    data.elliptic = true;
-    for (const auto &rd : system.influence)
-      if (rd.size() == n && rd.linfty_norm() > 0.)
-      {
-        std::vector<bool> mode(n);
-        for (unsigned int i = 0; i < n; ++i)
-          mode[i] = (rd[i] != 0.);
-        data.constant_modes.push_back(mode);
-      }
-    TrilinosWrappers::SparseMatrix trilinos_K;
-    trilinos_K.reinit(K, 0.);
-    amg.initialize(trilinos_K, data);
-    SolverControl control(std::max(1000u, n), 1e-12 * norm_F);
-    TrilinosWrappers::SolverCG cg(control);
-    try
-    {
-      cg.solve(trilinos_K, U, F, amg);
-    }
-    catch (const SolverControl::NoConvergence &e)
-    {
-      std::ostringstream message;
-      message << singular_message << " or badly conditioned: CG + AMG did not "
-              << "converge in " << e.last_step << " iterations (residual "
-              << e.last_residual << ", target " << 1e-12 * norm_F << ").";
-      AssertThrow(false, ExcMessage(message.str()));
-    }
-    catch (const std::exception &)
-    {
-      // AztecOO reports a breakdown of CG (a zero curvature p.K p = 0)
-      AssertThrow(false,
-                  ExcMessage(singular_message + " (CG + AMG broke down: p.K p = 0)."));
-    }
-  }
+    solve_iterative(system, K, F, U);
 
   AssertThrow(std::isfinite(U.l2_norm()),
               ExcMessage(singular_message + " (the solution is not finite)."));
+  Vector<double> r(n);
   residual(K, U, F, fixed, r);
   const double norm_r = free_norm(r, fixed);
   if (!(norm_r <= 1e-8 * norm_F))

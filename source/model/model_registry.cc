@@ -1,9 +1,8 @@
-#include <hati/model/bar.h>
 #include <hati/model/bridge_crane.h>
+#include <hati/model/continuum.h>
 #include <hati/model/frame.h>
 #include <hati/model/model.h>
 #include <hati/model/point_mass.h>
-#include <hati/model/solid.h>
 
 namespace hati
 {

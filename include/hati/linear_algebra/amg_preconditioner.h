@@ -1,0 +1,28 @@
+#ifndef hati_linear_algebra_amg_preconditioner_h
+#define hati_linear_algebra_amg_preconditioner_h
+
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/vector.h>
+
+#include <array>
+
+namespace hati
+{
+using namespace dealii;
+
+/**
+ * The settings of Trilinos' ML algebraic multigrid for the symmetric
+ * positive definite matrices of a structural model of @p n DoFs (the
+ * stiffness of the static analysis with CG, the effective matrix of
+ * Newmark, N2): smoothed aggregation for elliptic problems, two smoother
+ * sweeps, and as near null space the rigid translations of the model where
+ * it has any: one constant mode per vector of @p translations (the
+ * DiscreteSystem's `influence`, 1 on the DoFs that translate along x, y,
+ * z) of length @p n with a nonzero entry, true on its nonzero entries.
+ */
+TrilinosWrappers::PreconditionAMG::AdditionalData
+structural_amg_data(const std::array<Vector<double>, 3> &translations,
+                    const unsigned int n);
+} // namespace hati
+
+#endif
