@@ -3,6 +3,7 @@
 #include <hati/model/bar.h>
 #include <hati/model/bridge_crane.h>
 #include <hati/model/frame.h>
+#include <hati/model/frame_parser.h>
 #include <hati/model/model.h>
 #include <hati/model/point_mass.h>
 #include <hati/model/solid.h>
@@ -268,7 +269,7 @@ void declare_model_parameters(ParameterHandler &prm)
   Solid::Parameters::declare_parameters(prm);
   prm.leave_subsection();
   prm.enter_subsection("Frame");
-  Frame::Parameters::declare_parameters(prm);
+  FrameParameters::declare_parameters(prm);
   prm.leave_subsection();
   prm.enter_subsection("Bridge crane");
   BridgeCrane::Parameters::declare_parameters(prm);
@@ -311,10 +312,10 @@ std::unique_ptr<Model> create_model(ParameterHandler &prm)
   else if (type == "frame")
   {
     prm.enter_subsection("Frame");
-    Frame::Parameters p;
+    FrameParameters p;
     p.parse_parameters(prm);
     prm.leave_subsection();
-    model = std::make_unique<Frame>(p);
+    model = std::make_unique<Frame>(p.description);
   }
   else if (type == "bridge crane")
   {

@@ -118,9 +118,9 @@ public:
    * on the explicit side when the node touches an explicit cell and on the
    * implicit side otherwise; @p parts is also written as the cell field
    * `subdomain` of the VTU files. @p part = -1 (or an empty @p parts) builds
-   * the whole model.
+   * the whole model. Virtual for models that hold another model.
    */
-  void select_part(const std::vector<unsigned char> &parts, const int part);
+  virtual void select_part(const std::vector<unsigned char> &parts, const int part);
 
   /** One line describing the model for the terminal and summary.json. */
   virtual std::string description() const = 0;
