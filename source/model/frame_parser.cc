@@ -65,6 +65,16 @@ double to_number(const std::string &value, const std::string &entry, const Item 
   return x;
 }
 
+/** The values @p first, @p first + 1, @p first + 2 of @p item as a vector. */
+Tensor<1, 3>
+to_vector(const Item &item, const unsigned int first, const std::string &entry)
+{
+  Tensor<1, 3> v;
+  for (unsigned int k = 0; k < 3; ++k)
+    v[k] = to_number(item.values[first + k], entry, item);
+  return v;
+}
+
 void expect_values(const Item &item,
                    const std::string &entry,
                    const std::vector<unsigned int> &counts,
@@ -315,8 +325,7 @@ void parse_members(ParameterHandler &prm, FrameDescription &d)
     m.n_elements = static_cast<unsigned int>(ne);
     if (it.values.size() == 8)
     {
-      for (unsigned int k = 0; k < 3; ++k)
-        m.y_reference[k] = to_number(it.values[5 + k], "Members", it);
+      m.y_reference = to_vector(it, 5, "Members");
       AssertThrow(m.y_reference.norm() > 0.,
                   ExcMessage("Model/Frame/Members: member '" + it.name +
                              "': the section orientation vector (yx, yy, yz) is zero"));
@@ -372,8 +381,7 @@ void merge_mesh_file(ParameterHandler &prm, FrameDescription &d)
     m.material = it.values[1];
     m.n_elements = path.size() - 1;
     if (it.values.size() == 5)
-      for (unsigned int k = 0; k < 3; ++k)
-        m.y_reference[k] = to_number(it.values[2 + k], "Member properties", it);
+      m.y_reference = to_vector(it, 2, "Member properties");
     d.members.push_back(m);
   }
 }
@@ -387,8 +395,7 @@ void parse_point_masses(ParameterHandler &prm, FrameDescription &d)
     p.node = it.name;
     p.mass = to_number(it.values[0], "Point masses", it);
     if (it.values.size() == 4)
-      for (unsigned int k = 0; k < 3; ++k)
-        p.rotary_inertia[k] = to_number(it.values[1 + k], "Point masses", it);
+      p.rotary_inertia = to_vector(it, 1, "Point masses");
     d.point_masses.push_back(p);
   }
 }
