@@ -21,73 +21,13 @@ double section_area(const std::string &text, const std::string &entry)
 {
   return parse_frame_section(text, where + entry).A;
 }
-} // namespace
 
-void BridgeCrane::Parameters::declare_parameters(ParameterHandler &prm)
+/**
+ * The entries after the geometry, sections and material: masses, wheel
+ * contacts, damping, travel and the element lengths.
+ */
+void declare_masses_contacts_and_mesh(ParameterHandler &prm)
 {
-  // defaults: a 20 t, 20 m span double-girder crane, doc/crane_data.md
-  prm.declare_entry("Span",
-                    "20",
-                    Patterns::Double(),
-                    "Distance between the runway rails (m, along Y), > 0. Default: the "
-                    "20 t / 20 m reference crane (doc/crane_data.md section 0; spans "
-                    "10.5-31.5 m in 3 m steps).");
-  prm.declare_entry(
-      "Girder spacing",
-      "2",
-      Patterns::Double(),
-      "Distance between the two girders = trolley rail gauge (m, along X), "
-      "> 0 and < End carriage wheelbase. Default 2 m: trolley gauges are "
-      "1.4-2.5 m, classic 20/5 t crabs about 2 m (doc/crane_data.md section 4, "
-      "estimate).");
-  prm.declare_entry(
-      "End carriage wheelbase",
-      "3.5",
-      Patterns::Double(),
-      "Distance between the two wheels of an end carriage (m, along X), > "
-      "Girder spacing. Default 3.5 m: anti-skew rule wheelbase >= span/7 "
-      "(2.9 m) and the IS 800 25 t / 16 m example (doc/crane_data.md section "
-      "3).");
-  prm.declare_entry(
-      "Trolley wheelbase",
-      "1.8",
-      Patterns::Double(),
-      "Distance between the trolley's two wheels on one girder (m, along "
-      "Y), > 0. Default 1.8 m (range 1.2-2.5 m, doc/crane_data.md section 4, "
-      "estimate).");
-  prm.declare_entry("Trolley position",
-                    "0.5",
-                    Patterns::Double(),
-                    "Position of the trolley's centre, where the hoist stands, as a "
-                    "fraction of the span from the rail at Y = 0 (-); all trolley wheels "
-                    "must lie strictly inside the span. Default 0.5 (mid-span: largest "
-                    "girder deflection).");
-  prm.declare_entry("Girder section",
-                    "box, 0.46, 1.10, 0.006, 0.013",
-                    Patterns::Anything(),
-                    "Section of each girder, Model/Frame/Sections syntax after the name "
-                    "(m). Default: welded box 1.10 m deep (L/h = 18), flanges 460 x 13 "
-                    "mm, webs 6 mm: A = 248 cm^2, I_vertical = 4.8e-3 m^4 "
-                    "(doc/crane_data.md section 1, estimate meeting the L/800 deflection "
-                    "limit).");
-  prm.declare_entry(
-      "End carriage section",
-      "box, 0.3, 0.5, 0.008, 0.012",
-      Patterns::Anything(),
-      "Section of each end carriage, Model/Frame/Sections syntax (m). "
-      "Default: box 0.5 m high, 0.3 m wide, 8/12 mm plates (doc/crane_data.md "
-      "section 3, estimate).");
-  prm.declare_entry("Trolley section",
-                    "box, 0.2, 0.3, 0.008, 0.010",
-                    Patterns::Anything(),
-                    "Section of the trolley frame members, Model/Frame/Sections syntax "
-                    "(m). Default: box 0.3 x 0.2 m, 8/10 mm plates (estimate for a "
-                    "welded crab frame; its mass, 0.64 t, is part of the trolley).");
-  prm.declare_entry("Material",
-                    "2.1e11, 0.3, 7850",
-                    Patterns::List(Patterns::Double(), 3, 3, ","),
-                    "E (Pa), nu (-), rho (kg/m^3) of every member. Default: structural "
-                    "steel.");
   prm.declare_entry(
       "Rail mass per metre",
       "25",
@@ -169,6 +109,75 @@ void BridgeCrane::Parameters::declare_parameters(ParameterHandler &prm)
                     "Length of girder and of end carriage centred on each wheel that is "
                     "meshed with the Explicit element length (m), >= 0 and not longer "
                     "than a girder (the span).");
+}
+} // namespace
+
+void BridgeCrane::Parameters::declare_parameters(ParameterHandler &prm)
+{
+  // defaults: a 20 t, 20 m span double-girder crane, doc/crane_data.md
+  prm.declare_entry("Span",
+                    "20",
+                    Patterns::Double(),
+                    "Distance between the runway rails (m, along Y), > 0. Default: the "
+                    "20 t / 20 m reference crane (doc/crane_data.md section 0; spans "
+                    "10.5-31.5 m in 3 m steps).");
+  prm.declare_entry(
+      "Girder spacing",
+      "2",
+      Patterns::Double(),
+      "Distance between the two girders = trolley rail gauge (m, along X), "
+      "> 0 and < End carriage wheelbase. Default 2 m: trolley gauges are "
+      "1.4-2.5 m, classic 20/5 t crabs about 2 m (doc/crane_data.md section 4, "
+      "estimate).");
+  prm.declare_entry(
+      "End carriage wheelbase",
+      "3.5",
+      Patterns::Double(),
+      "Distance between the two wheels of an end carriage (m, along X), > "
+      "Girder spacing. Default 3.5 m: anti-skew rule wheelbase >= span/7 "
+      "(2.9 m) and the IS 800 25 t / 16 m example (doc/crane_data.md section "
+      "3).");
+  prm.declare_entry(
+      "Trolley wheelbase",
+      "1.8",
+      Patterns::Double(),
+      "Distance between the trolley's two wheels on one girder (m, along "
+      "Y), > 0. Default 1.8 m (range 1.2-2.5 m, doc/crane_data.md section 4, "
+      "estimate).");
+  prm.declare_entry("Trolley position",
+                    "0.5",
+                    Patterns::Double(),
+                    "Position of the trolley's centre, where the hoist stands, as a "
+                    "fraction of the span from the rail at Y = 0 (-); all trolley wheels "
+                    "must lie strictly inside the span. Default 0.5 (mid-span: largest "
+                    "girder deflection).");
+  prm.declare_entry("Girder section",
+                    "box, 0.46, 1.10, 0.006, 0.013",
+                    Patterns::Anything(),
+                    "Section of each girder, Model/Frame/Sections syntax after the name "
+                    "(m). Default: welded box 1.10 m deep (L/h = 18), flanges 460 x 13 "
+                    "mm, webs 6 mm: A = 248 cm^2, I_vertical = 4.8e-3 m^4 "
+                    "(doc/crane_data.md section 1, estimate meeting the L/800 deflection "
+                    "limit).");
+  prm.declare_entry(
+      "End carriage section",
+      "box, 0.3, 0.5, 0.008, 0.012",
+      Patterns::Anything(),
+      "Section of each end carriage, Model/Frame/Sections syntax (m). "
+      "Default: box 0.5 m high, 0.3 m wide, 8/12 mm plates (doc/crane_data.md "
+      "section 3, estimate).");
+  prm.declare_entry("Trolley section",
+                    "box, 0.2, 0.3, 0.008, 0.010",
+                    Patterns::Anything(),
+                    "Section of the trolley frame members, Model/Frame/Sections syntax "
+                    "(m). Default: box 0.3 x 0.2 m, 8/10 mm plates (estimate for a "
+                    "welded crab frame; its mass, 0.64 t, is part of the trolley).");
+  prm.declare_entry("Material",
+                    "2.1e11, 0.3, 7850",
+                    Patterns::List(Patterns::Double(), 3, 3, ","),
+                    "E (Pa), nu (-), rho (kg/m^3) of every member. Default: structural "
+                    "steel.");
+  declare_masses_contacts_and_mesh(prm);
 }
 
 void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
