@@ -1,6 +1,7 @@
 #include <hati/model/bridge_crane.h>
 #include <hati/model/continuum.h>
 #include <hati/model/frame.h>
+#include <hati/model/frame_parser.h>
 #include <hati/model/model.h>
 #include <hati/model/point_mass.h>
 
@@ -16,7 +17,12 @@ const Registry<ModelFactory> &model_registry()
         r, "point mass", "Point mass", "'point mass' (rigid, 3 DoFs: the bouncing ball)");
     add_model<Bar>(r, "bar", "Bar", "'bar' (1D elastic bar)");
     add_model<Solid>(r, "solid", "Solid", "'solid' (3D elastic prism)");
-    add_model<Frame>(r, "frame", "Frame", "'frame' (3D beam frame)");
+    add_model<FrameParameters>(r,
+                               "frame",
+                               "Frame",
+                               "'frame' (3D beam frame)",
+                               [](const FrameParameters &p)
+                               { return std::make_unique<Frame>(p.description); });
     add_model<BridgeCrane>(r,
                            "bridge crane",
                            "Bridge crane",

@@ -2,6 +2,8 @@
 #define hati_model_bridge_crane_h
 
 #include <hati/model/frame.h>
+#include <hati/model/frame_description.h>
+#include <hati/model/model.h>
 
 #include <map>
 #include <string>
@@ -20,8 +22,13 @@ namespace hati
  * trolley's centre. Vertical contacts are one-sided with zero gap (closed in
  * the static state); lateral contacts are two-sided with the flange
  * clearance. X is the runway (long travel), Y the span (cross travel), Z up.
+ *
+ * The crane generates a FrameDescription (Parameters::frame()) and holds the
+ * Frame built from it: the Model functions are the frame's, with the
+ * crane's own summary entries, damping ratio, decomposition and wheel
+ * contacts.
  */
-class BridgeCrane : public Frame
+class BridgeCrane : public Model
 {
 public:
   /** The `Model/Bridge crane` subsection. */
@@ -70,20 +77,37 @@ public:
     double explicit_zone_length = 1.;
 
     /** The frame: nodes, members, sections, masses, supports, contacts. */
-    Frame::Parameters frame() const;
+    FrameDescription frame() const;
     /** Girders, end carriages and rails (kg). */
     double mass_bridge() const;
     /** Trolley frame, trolley mass and hoist mass (kg). */
     double mass_trolley() const;
   };
 
+  /** The crane of @p parameters (its frame validated, FrameDescription::validate()). */
   explicit BridgeCrane(const Parameters &parameters);
+  void build(const CommonModelParameters &common, DiscreteSystem &system) override;
+  /** Model::select_part() for the crane and its frame. */
+  void select_part(const std::vector<unsigned char> &cell_parts, const int part) override;
+  void write_vtu(std::ostream &out,
+                 const std::vector<NamedVector> &fields,
+                 const double time,
+                 const unsigned int cycle) const override;
+  std::vector<Point<3>> cell_centres() const override;
+  std::vector<std::string> cell_members() const override;
+  bool has_members() const override { return true; }
+  std::string results_table() const override;
+  std::string section_forces_header() const override;
+  void write_section_forces(std::ostream &out,
+                            const double time,
+                            const Vector<double> &U) const override;
   std::string description() const override;
   /** Model/Bridge crane/Damping ratio (-). */
   double default_damping_ratio() const override { return crane.damping_ratio; }
   /**
-   * `mass_bridge`, `mass_trolley` (kg) and `static_wheel_loads` (wheel
-   * contact name -> vertical static force, N) from @p static_contact_forces.
+   * `mass_bridge`, `mass_trolley` (kg), the frame's entries
+   * (`section_force_envelope`) and `static_wheel_loads` (wheel contact name
+   * -> vertical static force, N) from @p static_contact_forces.
    */
   SummaryEntries summary_entries(
       const std::map<std::string, double> &static_contact_forces) const override;
@@ -101,8 +125,12 @@ public:
   /** crane_wheel_1..4 and trolley_wheel_1..4 (the vertical contacts). */
   std::vector<std::string> wheel_contacts() const override;
 
+  /** Height above the girder axes at which the trolley frame is drawn (m). */
+  static constexpr double trolley_height = 0.5;
+
 private:
   const Parameters crane;
+  Frame frame;
 };
 } // namespace hati
 

@@ -6,7 +6,9 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <hati/model/frame_description.h>
 #include <hati/model/frame_element.h>
+#include <hati/model/frame_section_forces.h>
 #include <hati/model/model.h>
 
 #include <map>
@@ -30,86 +32,19 @@ namespace hati
  * are condensed (constraints.distribute_local_to_global) and constrained DoFs
  * are flagged fixed in the DiscreteSystem; their values are restored with
  * constraints.distribute() for output.
+ *
+ * What the frame is made of comes from a FrameDescription (the `Model/Frame`
+ * parser, frame_parser.h, or a generator such as the bridge crane); the
+ * section forces are written by FrameSectionForces.
  */
 class Frame : public Model
 {
 public:
-  /** The `Model/Frame` subsection, lists given as `name: values; ...`. */
-  struct Parameters
-  {
-    static void declare_parameters(ParameterHandler &prm);
-    void parse_parameters(ParameterHandler &prm);
-
-    /**
-     * A cross-section from the Sections syntax after the name, @p text =
-     * 'rectangle, b, h' | 'box, b, h, t_web, t_flange' | 'general, A, Iy,
-     * Iz, J, Asy, Asz' (m, m^2, m^4; frame_element.h); @p where (the entry
-     * and item) starts every error message.
-     */
-    static FrameSection parse_section(const std::string &text, const std::string &where);
-
-    struct Member
-    {
-      std::string name, start, end, section, material;
-      unsigned int n_elements = 1;
-      Tensor<1, 3> y_reference;
-      /**
-       * Nodes along the member, start to end, for members read from a mesh
-       * file (one element between consecutive nodes); empty for members of
-       * the Members entry, which are divided into n_elements equal elements.
-       */
-      std::vector<std::string> path;
-    };
-    struct PointMassData
-    {
-      std::string node;
-      double mass = 0.;
-      Tensor<1, 3> rotary_inertia;
-    };
-    struct Support
-    {
-      std::string node;
-      /** Per DoF: -1 free, 0 fixed, > 0 spring stiffness (N/m, N m/rad). */
-      std::array<double, 6> stiffness{{-1., -1., -1., -1., -1., -1.}};
-    };
-
-    std::map<std::string, Point<3>> nodes;
-    std::vector<std::string> node_order;
-    std::map<std::string, FrameMaterial> materials;
-    std::map<std::string, FrameSection> sections;
-    std::vector<Member> members;
-    std::vector<PointMassData> point_masses;
-    std::vector<Support> supports;
-    std::vector<std::string> hinged_joints;
-    std::map<std::string, std::array<double, 6>> nodal_loads;
-    /**
-     * One entry of Model/Frame/Contacts (doc/theory.md 1.2, doc/user_guide.md
-     * "Contacts of frame nodes"): the gap is `g = gap + n . (u_node -
-     * u_other)` (`u_other = 0` for a rigid plane that moves with the base).
-     */
-    struct NodeContact
-    {
-      std::string name, node;
-      /** Node-to-node: the node of the obstacle; empty for a rigid plane. */
-      std::string other_node;
-      /** Normal (unit, global axes) pointing from the obstacle to the node. */
-      Tensor<1, 3> normal;
-      /**
-       * One-sided: the initial gap (m, >= 0). Two-sided: the total clearance
-       * c (m, >= 0), two rows with normals n and -n and initial gaps c / 2.
-       */
-      double gap = 0.;
-      /** Negative: Contact/Restitution coefficient. */
-      double restitution = -1.;
-      /** Two rows, one per side of the clearance, both named `name`. */
-      bool two_sided = false;
-    };
-    std::vector<NodeContact> contacts;
-    std::vector<std::string> monitor_nodes;
-    std::vector<std::string> section_force_members;
-  };
-
-  explicit Frame(const Parameters &parameters);
+  /**
+   * The frame of @p description, which is validated here
+   * (FrameDescription::validate(); throws a one-line error).
+   */
+  explicit Frame(const FrameDescription &description);
   void build(const CommonModelParameters &common, DiscreteSystem &system) override;
   void write_vtu(std::ostream &out,
                  const std::vector<NamedVector> &fields,
@@ -120,11 +55,7 @@ public:
   std::vector<std::string> cell_members() const override;
   bool has_members() const override { return true; }
   std::string section_forces_header() const override;
-  /**
-   * `section_force_envelope`: the largest |N| (N), |My|, |Mz| (N m) among
-   * the section forces written so far, with the member, the position along
-   * it (m) and the time (s).
-   */
+  /** FrameSectionForces::summary_entries(). */
   SummaryEntries summary_entries(
       const std::map<std::string, double> &static_contact_forces) const override;
   /** The envelope of the section forces as table lines. */
@@ -134,48 +65,54 @@ public:
                             const Vector<double> &U) const override;
 
 private:
-  /** Envelope of the written section forces: N, My, Mz (write_section_forces()). */
-  struct EnvelopeEntry
-  {
-    double value = 0., x = 0., time = 0.;
-    std::string member;
-  };
-  mutable std::array<EnvelopeEntry, 3> envelope;
-  /** Per active cell: its member, its index along the member, its rotation. */
-  struct CellInfo
-  {
-    unsigned int member = 0;
-    unsigned int element = 0;
-    double length = 0.;
-    /** Distance of the element's first node from the member's start (m). */
-    double position = 0.;
-    Tensor<2, 3> rotation;
-    std::array<types::global_dof_index, 12> dofs;
-    /** Local stiffness and consistent mass (section forces at every history row). */
-    FullMatrix<double> stiffness, mass;
-  };
-
-  /**
-   * Section forces (N, Vy, Vz, T, My, Mz at both ends) of one cell from its
-   * end forces k u minus its own weight (a span load). Inertia forces are
-   * taken as nodal: between nodes the distributed inertia of a dynamic run
-   * is not in the section forces.
-   */
-  std::array<double, 12> cell_section_forces(const CellInfo &cell,
-                                             const Vector<double> &U) const;
+  /** The vertices and cells of the members before the triangulation exists. */
+  struct MeshLayout;
 
   /**
    * The mesh (every member its own vertices), the DoFs, the cells' data and
    * the joint and support constraints: once, at the first build().
    */
   void create_mesh();
+  /** The cells' members, places, axes, DoFs and matrices; the vertices' DoFs. */
+  void set_up_cells(const MeshLayout &layout,
+                    std::vector<std::vector<unsigned int>> &vertex_cells);
+  /** Joints (members meeting at a node) and fixed supports as constraints. */
+  void set_up_constraints(const MeshLayout &layout,
+                          const std::vector<std::vector<unsigned int>> &vertex_cells);
 
-  const Parameters parameters;
+  /** Per member, whether the base acceleration loads it (Loading/Excited members). */
+  std::vector<bool> excited_members(const CommonModelParameters &common) const;
+  /** Whether a cell at @p node belongs to an excited member. */
+  bool node_excited(const std::string &node, const std::vector<bool> &excited) const;
+  /**
+   * The selected cells' stiffness, masses and mass influence vectors into
+   * @p system; @p omega2 the largest element bound of omega^2 (1/s^2),
+   * @p mass (kg) the members' mass, both accumulated.
+   */
+  void assemble_cells(const std::vector<bool> &excited,
+                      const bool restricted,
+                      DiscreteSystem &system,
+                      double &omega2,
+                      double &mass) const;
+  /** Spring supports into the stiffness; the spring on every DoF (N/m, N m/rad). */
+  std::vector<double> add_springs(DiscreteSystem &system) const;
+  /** Point masses into the masses and the mass influence vectors. */
+  void add_point_masses(const std::vector<bool> &excited,
+                        const bool restricted,
+                        DiscreteSystem &system) const;
+  /** Rigid translations, gravity and nodal loads (the system's DoFs fixed first). */
+  void add_loads(const CommonModelParameters &common, DiscreteSystem &system) const;
+  /** The contact rows of the contacts owned by the part built. */
+  void add_contacts(const CommonModelParameters &common, DiscreteSystem &system) const;
+  /** The monitor points of history.csv. */
+  void add_monitors(DiscreteSystem &system) const;
+
+  const FrameDescription frame;
   Triangulation<1, 3> triangulation;
   FESystem<1, 3> fe;
   DoFHandler<1, 3> dof_handler;
   AffineConstraints<double> constraints;
-  std::vector<CellInfo> cells;
+  std::vector<FrameCell> cells;
   std::map<std::string, std::array<types::global_dof_index, 6>> node_dofs;
   /** Active cells touching each named node (owner of the node's data). */
   std::map<std::string, std::vector<unsigned int>> node_cells;
@@ -184,6 +121,8 @@ private:
   double total_mass = 0.;
   /** Gravity (m/s^2): the members' weight is a span load for section forces. */
   Tensor<1, 3> gravity;
+  /** section_forces.csv and its envelope (written from const functions). */
+  mutable FrameSectionForces section_force_output;
 };
 } // namespace hati
 

@@ -127,9 +127,9 @@ public:
    * on the explicit side when the node touches an explicit cell and on the
    * implicit side otherwise; @p parts is also written as the cell field
    * `subdomain` of the VTU files. @p part = -1 (or an empty @p parts) builds
-   * the whole model.
+   * the whole model. Virtual for models that hold another model.
    */
-  void select_part(const std::vector<unsigned char> &parts, const int part);
+  virtual void select_part(const std::vector<unsigned char> &parts, const int part);
 
   /** One line describing the model for the terminal and summary.json. */
   virtual std::string description() const = 0;
@@ -222,33 +222,50 @@ using ModelFactory = std::function<std::unique_ptr<Model>(ParameterHandler &prm)
 const Registry<ModelFactory> &model_registry();
 
 /**
- * Register the model class @p ModelType as @p name with its parameters in the
- * subsection @p subsection of `Model` (`ModelType::Parameters` with
- * declare_parameters() and parse_parameters(), and a constructor from them);
+ * Register a model as @p name whose parameters, the struct @p Parameters
+ * (declare_parameters(), parse_parameters()), live in the subsection
+ * @p subsection of `Model`; @p make turns parsed parameters into the model;
  * @p documentation is its part of the documentation of `Model/Type`.
  */
-template <class ModelType>
+template <class Parameters, class Make>
 void add_model(Registry<ModelFactory> &registry,
                const std::string &name,
                const std::string &subsection,
-               const std::string &documentation)
+               const std::string &documentation,
+               Make make)
 {
   registry.add({name,
                 documentation,
                 [subsection](ParameterHandler &prm)
                 {
                   prm.enter_subsection(subsection);
-                  ModelType::Parameters::declare_parameters(prm);
+                  Parameters::declare_parameters(prm);
                   prm.leave_subsection();
                 },
-                [subsection](ParameterHandler &prm) -> std::unique_ptr<Model>
+                [subsection, make](ParameterHandler &prm) -> std::unique_ptr<Model>
                 {
                   prm.enter_subsection(subsection);
-                  typename ModelType::Parameters parameters;
+                  Parameters parameters;
                   parameters.parse_parameters(prm);
                   prm.leave_subsection();
-                  return std::make_unique<ModelType>(parameters);
+                  return make(parameters);
                 }});
+}
+
+/** add_model() for a class constructed from its `ModelType::Parameters`. */
+template <class ModelType>
+void add_model(Registry<ModelFactory> &registry,
+               const std::string &name,
+               const std::string &subsection,
+               const std::string &documentation)
+{
+  using Parameters = typename ModelType::Parameters;
+  add_model<Parameters>(registry,
+                        name,
+                        subsection,
+                        documentation,
+                        [](const Parameters &p)
+                        { return std::make_unique<ModelType>(p); });
 }
 
 /** Declare the `Model` subsection with the parameters of every model type. */

@@ -1,0 +1,126 @@
+#ifndef hati_model_frame_description_h
+#define hati_model_frame_description_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <hati/model/frame_element.h>
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace hati
+{
+using namespace dealii;
+
+/**
+ * What a 3D frame is made of, as plain data (doc/user_guide.md "Frames"):
+ * named nodes, materials and sections, members between nodes, and the
+ * nodal data (point masses, supports, hinged joints, loads, contacts,
+ * monitors, section-force output) that refer to them by name.
+ *
+ * Three producers fill it: the `Model/Frame` mini-language parser
+ * (frame_parser.h), with the members and nodes of a Gmsh mesh file merged in
+ * (gmsh_frame_reader.h), and the bridge crane generator (bridge_crane.h).
+ * Each further kind of nodal or member data (ropes, wheel friction) is one
+ * more list here. Frame (frame.h) builds the mesh and the discrete system
+ * from a description after validate() has accepted it.
+ *
+ * Errors name the `Model/Frame` entry that holds the wrong item, also for a
+ * generated description: the entries are the frame's vocabulary.
+ */
+struct FrameDescription
+{
+  /** A straight member, or a chain of straight elements (mesh members). */
+  struct Member
+  {
+    std::string name, start, end, section, material;
+    unsigned int n_elements = 1;
+    /** Reference vector of the section's local y axis (global axes; 0: default). */
+    Tensor<1, 3> y_reference;
+    /**
+     * Nodes along the member, start to end, for members read from a mesh
+     * file (one element between consecutive nodes); empty for members of
+     * the Members entry, which are divided into n_elements equal elements.
+     */
+    std::vector<std::string> path;
+  };
+
+  /** A point mass (kg) and rotary inertias about global axes (kg m^2) at a node. */
+  struct PointMassData
+  {
+    std::string node;
+    double mass = 0.;
+    Tensor<1, 3> rotary_inertia;
+  };
+
+  /** A support of a node. */
+  struct Support
+  {
+    std::string node;
+    /** Per DoF: -1 free, 0 fixed, > 0 spring stiffness (N/m, N m/rad). */
+    std::array<double, 6> stiffness{{-1., -1., -1., -1., -1., -1.}};
+  };
+
+  /**
+   * A contact of a node (doc/theory.md 1.2, doc/user_guide.md "Contacts of
+   * frame nodes"): the gap is `g = gap + n . (u_node - u_other)` (`u_other
+   * = 0` for a rigid plane that moves with the base).
+   */
+  struct NodeContact
+  {
+    std::string name, node;
+    /** Node-to-node: the node of the obstacle; empty for a rigid plane. */
+    std::string other_node;
+    /** Normal (unit, global axes) pointing from the obstacle to the node. */
+    Tensor<1, 3> normal;
+    /**
+     * One-sided: the initial gap (m, >= 0). Two-sided: the total clearance
+     * c (m, >= 0), two rows with normals n and -n and initial gaps c / 2.
+     */
+    double gap = 0.;
+    /** Negative: Contact/Restitution coefficient. */
+    double restitution = -1.;
+    /** Two rows, one per side of the clearance, both named `name`. */
+    bool two_sided = false;
+  };
+
+  /** Add the node @p name at @p x (m) at the end of node_order. */
+  void add_node(const std::string &name, const Point<3> &x);
+
+  /**
+   * Check the description as a whole, before anything is built from it:
+   * at least one member; no node, member or support given twice; every
+   * node, section and material a member names exists; no member or mesh
+   * element of zero length and no node coordinates that overflow; every
+   * node that a point mass, support, hinged joint, monitor, nodal load or
+   * contact names is a node of a member; every section-force member exists;
+   * sections, materials, masses, springs and contacts within their ranges.
+   * Throws a one-line error naming the `Model/Frame` entry otherwise.
+   */
+  void validate() const;
+
+  /** Node positions (m, global axes) by name. */
+  std::map<std::string, Point<3>> nodes;
+  /** Node names in the order they were given (every node once). */
+  std::vector<std::string> node_order;
+  std::map<std::string, FrameMaterial> materials;
+  std::map<std::string, FrameSection> sections;
+  std::vector<Member> members;
+  std::vector<PointMassData> point_masses;
+  std::vector<Support> supports;
+  /** Nodes where the members after the first share only the translations. */
+  std::vector<std::string> hinged_joints;
+  /** Constant nodal loads Fx, Fy, Fz, Mx, My, Mz (N, N m, global axes) by node. */
+  std::map<std::string, std::array<double, 6>> nodal_loads;
+  std::vector<NodeContact> contacts;
+  /** Nodes written to history.csv. */
+  std::vector<std::string> monitor_nodes;
+  /** Members whose section forces are written to section_forces.csv. */
+  std::vector<std::string> section_force_members;
+};
+} // namespace hati
+
+#endif

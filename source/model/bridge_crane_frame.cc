@@ -1,0 +1,306 @@
+#include <hati/model/bridge_crane.h>
+#include <hati/model/frame_parser.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hati
+{
+namespace
+{
+using CraneParameters = BridgeCrane::Parameters;
+
+const std::string where = "Model/Bridge crane/";
+
+/**
+ * Stations along a line of length @p L: 0, L, the @p fixed points and the
+ * edges of the @p zones (clipped to [0, L]), each interval divided into equal
+ * elements no longer than @p h, or @p h_zone inside a zone.
+ */
+std::vector<double> stations(const double L,
+                             const std::vector<double> &fixed,
+                             const std::vector<std::pair<double, double>> &zones,
+                             const double h,
+                             const double h_zone)
+{
+  std::vector<double> breaks = {0., L};
+  breaks.insert(breaks.end(), fixed.begin(), fixed.end());
+  for (const auto &[a, b] : zones)
+    for (const double x : {a, b})
+      if (x > 0. && x < L)
+        breaks.push_back(x);
+  std::sort(breaks.begin(), breaks.end());
+  std::vector<double> unique;
+  for (const double x : breaks)
+    if (unique.empty() || x - unique.back() > 1e-9 * L)
+      unique.push_back(x);
+  std::vector<double> s = {0.};
+  for (unsigned int i = 0; i + 1 < unique.size(); ++i)
+  {
+    const double a = unique[i], b = unique[i + 1], mid = 0.5 * (a + b);
+    bool in_zone = false;
+    for (const auto &z : zones)
+      in_zone = in_zone || (mid > z.first && mid < z.second);
+    const unsigned int n = std::max(
+        1u,
+        static_cast<unsigned int>(std::ceil((b - a) / (in_zone ? h_zone : h) - 1e-9)));
+    for (unsigned int k = 1; k <= n; ++k)
+      s.push_back(k == n ? b : a + (b - a) * k / n);
+  }
+  return s;
+}
+
+/** Index of @p x in @p s (it is one of the stations). */
+unsigned int station_index(const std::vector<double> &s, const double x)
+{
+  unsigned int best = 0;
+  for (unsigned int i = 1; i < s.size(); ++i)
+    if (std::abs(s[i] - x) < std::abs(s[best] - x))
+      best = i;
+  return best;
+}
+
+/** Add the node @p name at (x, y, z) (m) to @p f. */
+void add_node(FrameDescription &f,
+              const std::string &name,
+              const double x,
+              const double y,
+              const double z)
+{
+  f.add_node(name, Point<3>(x, y, z));
+}
+
+/** Add a member of steel along the nodes @p path, one element between two. */
+void add_path_member(FrameDescription &f,
+                     const std::string &name,
+                     const std::vector<std::string> &path,
+                     const std::string &section)
+{
+  FrameDescription::Member m;
+  m.name = name;
+  m.path = path;
+  m.start = path.front();
+  m.end = path.back();
+  m.section = section;
+  m.material = "steel";
+  m.n_elements = path.size() - 1;
+  f.members.push_back(m);
+}
+
+/** Add a point mass of @p mass (kg) at @p node. */
+void add_point_mass(FrameDescription &f, const std::string &node, const double mass)
+{
+  FrameDescription::PointMassData p;
+  p.node = node;
+  p.mass = mass;
+  f.point_masses.push_back(p);
+}
+
+/** The material `steel` and the sections `girder`, `end_carriage`, `trolley`. */
+void add_materials_and_sections(const CraneParameters &p, FrameDescription &f)
+{
+  FrameMaterial steel;
+  steel.E = p.E;
+  steel.G = p.E / (2. * (1. + p.nu));
+  steel.rho = p.rho;
+  f.materials["steel"] = steel;
+  f.sections["girder"] = parse_frame_section(p.girder_section, where + "Girder section");
+  f.sections["end_carriage"] =
+      parse_frame_section(p.end_carriage_section, where + "End carriage section");
+  f.sections["trolley"] =
+      parse_frame_section(p.trolley_section, where + "Trolley section");
+}
+
+/**
+ * End carriages along X at Y = 0 and Y = S: crane wheels cw1..cw4 at the
+ * ends, girder joints at x = -a, +a.
+ */
+void add_end_carriages(const CraneParameters &p, FrameDescription &f)
+{
+  const double S = p.span, a = 0.5 * p.girder_spacing, w = 0.5 * p.end_carriage_wheelbase,
+               hz = 0.5 * p.explicit_zone_length;
+  const std::vector<double> xs = stations(2. * w,
+                                          {w - a, w + a},
+                                          {{-hz, hz}, {2. * w - hz, 2. * w + hz}},
+                                          p.element_length,
+                                          p.explicit_element_length);
+  for (unsigned int c = 1; c <= 2; ++c)
+  {
+    const double y = c == 1 ? 0. : S;
+    std::vector<std::string> path;
+    for (unsigned int i = 0; i < xs.size(); ++i)
+    {
+      std::string name = "end_carriage_" + std::to_string(c) + "_" + std::to_string(i);
+      if (i == 0)
+        name = "cw" + std::to_string(2 * c - 1);
+      else if (i + 1 == xs.size())
+        name = "cw" + std::to_string(2 * c);
+      else if (i == station_index(xs, w - a))
+        name = "joint_1_" + std::to_string(c);
+      else if (i == station_index(xs, w + a))
+        name = "joint_2_" + std::to_string(c);
+      add_node(f, name, xs[i] - w, y, 0.);
+      path.push_back(name);
+    }
+    add_path_member(f, "end_carriage_" + std::to_string(c), path, "end_carriage");
+  }
+}
+
+/**
+ * Girders along Y at x = -a (girder_1) and +a (girder_2), a node rail_<i>
+ * under each trolley wheel; the rail mass lumped on their nodes.
+ */
+void add_girders(const CraneParameters &p, FrameDescription &f)
+{
+  const double S = p.span, a = 0.5 * p.girder_spacing, yc = p.trolley_position * S,
+               y1 = yc - 0.5 * p.trolley_wheelbase, y2 = yc + 0.5 * p.trolley_wheelbase,
+               hz = 0.5 * p.explicit_zone_length;
+  const std::vector<double> ys = stations(S,
+                                          {y1, y2},
+                                          {{y1 - hz, y1 + hz}, {y2 - hz, y2 + hz}},
+                                          p.element_length,
+                                          p.explicit_element_length);
+  for (unsigned int g = 1; g <= 2; ++g)
+  {
+    std::vector<std::string> path;
+    for (unsigned int i = 0; i < ys.size(); ++i)
+    {
+      std::string name = "girder_" + std::to_string(g) + "_" + std::to_string(i);
+      if (i == 0)
+        name = "joint_" + std::to_string(g) + "_1";
+      else if (i + 1 == ys.size())
+        name = "joint_" + std::to_string(g) + "_2";
+      else if (i == station_index(ys, y1))
+        name = "rail_" + std::to_string(2 * g - 1);
+      else if (i == station_index(ys, y2))
+        name = "rail_" + std::to_string(2 * g);
+      else
+        add_node(f, name, g == 1 ? -a : a, ys[i], 0.);
+      path.push_back(name);
+      const double tributary = 0.5 * ((i > 0 ? ys[i] - ys[i - 1] : 0.) +
+                                      (i + 1 < ys.size() ? ys[i + 1] - ys[i] : 0.));
+      if (p.rail_mass_per_metre > 0.)
+        add_point_mass(f, name, p.rail_mass_per_metre * tributary);
+    }
+    add_node(f, "rail_" + std::to_string(2 * g - 1), g == 1 ? -a : a, y1, 0.);
+    add_node(f, "rail_" + std::to_string(2 * g), g == 1 ? -a : a, y2, 0.);
+    add_path_member(f, "girder_" + std::to_string(g), path, "girder");
+  }
+}
+
+/**
+ * The trolley frame above the girders: wheels tw1, tw2 on girder_1 (y1,
+ * y2), tw3, tw4 on girder_2; the hoist on a beam across at yc; the trolley
+ * and hoist masses.
+ */
+void add_trolley(const CraneParameters &p, FrameDescription &f)
+{
+  const double S = p.span, a = 0.5 * p.girder_spacing, yc = p.trolley_position * S,
+               y1 = yc - 0.5 * p.trolley_wheelbase, y2 = yc + 0.5 * p.trolley_wheelbase;
+  const double zt = BridgeCrane::trolley_height;
+  add_node(f, "tw1", -a, y1, zt);
+  add_node(f, "tw2", -a, y2, zt);
+  add_node(f, "tw3", a, y1, zt);
+  add_node(f, "tw4", a, y2, zt);
+  add_node(f, "ts1", -a, yc, zt);
+  add_node(f, "ts2", a, yc, zt);
+  add_node(f, "hoist", 0., yc, zt);
+  auto straight = [&](const std::string &name,
+                      const std::string &from,
+                      const std::string &to,
+                      const double length)
+  {
+    FrameDescription::Member m;
+    m.name = name;
+    m.start = from;
+    m.end = to;
+    m.section = "trolley";
+    m.material = "steel";
+    m.n_elements = std::max(
+        1u, static_cast<unsigned int>(std::ceil(length / p.element_length - 1e-9)));
+    f.members.push_back(m);
+  };
+  straight("trolley_side_1a", "tw1", "ts1", 0.5 * p.trolley_wheelbase);
+  straight("trolley_side_1b", "ts1", "tw2", 0.5 * p.trolley_wheelbase);
+  straight("trolley_side_2a", "tw3", "ts2", 0.5 * p.trolley_wheelbase);
+  straight("trolley_side_2b", "ts2", "tw4", 0.5 * p.trolley_wheelbase);
+  straight("trolley_end_1", "tw1", "tw3", p.girder_spacing);
+  straight("trolley_end_2", "tw2", "tw4", p.girder_spacing);
+  straight("trolley_beam_1", "ts1", "hoist", a);
+  straight("trolley_beam_2", "hoist", "ts2", a);
+  for (const char *n : {"tw1", "tw2", "tw3", "tw4"})
+    if (p.trolley_mass > 0.)
+      add_point_mass(f, n, 0.25 * p.trolley_mass);
+  if (p.hoist_mass > 0.)
+    add_point_mass(f, "hoist", p.hoist_mass);
+}
+
+/** Supports: braked crane wheels along the runway; pinned wheels. */
+void add_supports(const CraneParameters &p, FrameDescription &f)
+{
+  if (p.travel == "braked" || p.crane_wheels == "pinned")
+    for (unsigned int k = 1; k <= 4; ++k)
+    {
+      FrameDescription::Support s;
+      s.node = "cw" + std::to_string(k);
+      s.stiffness[0] = 0.;
+      if (p.crane_wheels == "pinned")
+        s.stiffness[1] = s.stiffness[2] = 0.;
+      f.supports.push_back(s);
+    }
+}
+
+/** The wheel contacts of the crane wheels on the rails and the trolley wheels. */
+void add_wheel_contacts(const CraneParameters &p, FrameDescription &f)
+{
+  auto contact = [&](const std::string &name,
+                     const std::string &node_name,
+                     const std::string &other,
+                     const Tensor<1, 3> &normal,
+                     const double gap,
+                     const bool two_sided)
+  {
+    FrameDescription::NodeContact c;
+    c.name = name;
+    c.node = node_name;
+    c.other_node = other;
+    c.normal = normal;
+    c.gap = gap;
+    c.restitution = p.wheel_restitution;
+    c.two_sided = two_sided;
+    f.contacts.push_back(c);
+  };
+  const Tensor<1, 3> ex({1., 0., 0.}), ey({0., 1., 0.}), ez({0., 0., 1.});
+  for (unsigned int k = 1; k <= 4 && p.crane_wheels == "contacts"; ++k)
+  {
+    const std::string cw = "crane_wheel_" + std::to_string(k);
+    contact(cw, "cw" + std::to_string(k), "", ez, 0., false);
+    contact(cw + "_lateral", "cw" + std::to_string(k), "", ey, p.flange_clearance, true);
+  }
+  for (unsigned int k = 1; k <= 4; ++k)
+  {
+    const std::string tw = "trolley_wheel_" + std::to_string(k),
+                      wn = "tw" + std::to_string(k), rn = "rail_" + std::to_string(k);
+    contact(tw, wn, rn, ez, 0., false);
+    contact(tw + "_lateral", wn, rn, ex, p.flange_clearance, true);
+    if (p.travel == "braked")
+      contact(tw + "_travel", wn, rn, ey, 0., true);
+  }
+}
+} // namespace
+
+FrameDescription BridgeCrane::Parameters::frame() const
+{
+  FrameDescription f;
+  add_materials_and_sections(*this, f);
+  add_end_carriages(*this, f);
+  add_girders(*this, f);
+  add_trolley(*this, f);
+  add_supports(*this, f);
+  add_wheel_contacts(*this, f);
+  f.monitor_nodes = {"hoist", "tw1", "tw2", "tw3", "tw4", "cw1", "cw2", "cw3", "cw4"};
+  f.section_force_members = {"girder_1", "girder_2"};
+  return f;
+}
+
+} // namespace hati

@@ -1,0 +1,181 @@
+#include <deal.II/base/exceptions.h>
+
+#include <hati/model/frame_description.h>
+
+#include <cmath>
+#include <set>
+
+namespace hati
+{
+namespace
+{
+/** Throw "Model/Frame/<entry>: <what>" unless @p ok. */
+void require(const bool ok, const std::string &entry, const std::string &what)
+{
+  AssertThrow(ok, ExcMessage("Model/Frame/" + entry + ": " + what));
+}
+
+/** No name twice in @p names: "<kind> '<name>' is <twice>" otherwise. */
+void require_unique(const std::vector<std::string> &names,
+                    const std::string &entry,
+                    const std::string &kind,
+                    const std::string &twice)
+{
+  std::set<std::string> seen;
+  for (const auto &n : names)
+    require(seen.insert(n).second, entry, kind + " '" + n + "' is " + twice);
+}
+
+/** The nodes, materials and sections on their own. */
+void validate_parts(const FrameDescription &d)
+{
+  require_unique(d.node_order, "Nodes", "node", "defined twice");
+  for (const auto &n : d.node_order)
+    require(d.nodes.count(n), "Nodes", "node '" + n + "' has no position");
+  require(d.node_order.size() == d.nodes.size(),
+          "Nodes",
+          "a node is missing from the order of the nodes");
+  for (const auto &[name, m] : d.materials)
+    require(m.E > 0. && m.G > 0. && m.rho > 0.,
+            "Materials",
+            "item '" + name + "' needs E > 0, -1 < nu < 0.5 and rho > 0");
+  for (const auto &[name, s] : d.sections)
+    require(s.A > 0. && s.Iy > 0. && s.Iz > 0. && s.J > 0.,
+            "Sections",
+            "item '" + name + "' needs A, Iy, Iz and J > 0");
+}
+
+/**
+ * The members: names, the nodes, section and material they name, their
+ * lengths; returns the nodes that are ends of a member or of a mesh element.
+ */
+std::set<std::string> validate_members(const FrameDescription &d)
+{
+  require(!d.members.empty(), "Members", "no member is defined");
+  std::vector<std::string> names;
+  for (const auto &m : d.members)
+    names.push_back(m.name);
+  require_unique(names, "Members", "member", "defined twice");
+  std::set<std::string> used_nodes;
+  for (const auto &m : d.members)
+  {
+    const std::string member = "member '" + m.name + "'";
+    for (const auto &n :
+         m.path.empty() ? std::vector<std::string>{m.start, m.end} : m.path)
+    {
+      require(d.nodes.count(n),
+              "Members",
+              member + " names node '" + n + "', which is not in Model/Frame/Nodes");
+      used_nodes.insert(n);
+    }
+    require(d.sections.count(m.section),
+            "Members",
+            member + " names section '" + m.section +
+                "', which is not in Model/Frame/Sections");
+    require(d.materials.count(m.material),
+            "Members",
+            member + " names material '" + m.material +
+                "', which is not in Model/Frame/Materials");
+    require(m.n_elements >= 1 && (m.path.empty() || m.path.size() == m.n_elements + 1),
+            "Members",
+            member + ": the number of elements does not match its nodes");
+    const Point<3> &a = d.nodes.at(m.start), &b = d.nodes.at(m.end);
+    require(a.distance(b) > 0.,
+            "Members",
+            member + " has zero length (both ends at the same point)");
+    require(std::isfinite(a.square()) && std::isfinite(b.square()) &&
+                std::isfinite(a.distance_square(b)),
+            "Members",
+            member + ": the coordinates of its nodes '" + m.start + "', '" + m.end +
+                "' overflow (not finite when squared): node coordinates too large");
+    for (unsigned int i = 0; i + 1 < m.path.size(); ++i)
+      require(d.nodes.at(m.path[i]).distance(d.nodes.at(m.path[i + 1])) > 0.,
+              "Mesh file",
+              member + " has a zero-length element at node '" + m.path[i] + "'");
+  }
+  return used_nodes;
+}
+
+/** The data at nodes: every node they name is a node of a member. */
+void validate_nodal_data(const FrameDescription &d, const std::set<std::string> &used)
+{
+  auto check_node = [&](const std::string &n, const std::string &entry)
+  {
+    require(used.count(n),
+            entry,
+            "node '" + n + "' is not an end of any member in Model/Frame/Members");
+  };
+  for (const auto &p : d.point_masses)
+  {
+    check_node(p.node, "Point masses");
+    require(p.mass >= 0. && p.rotary_inertia[0] >= 0. && p.rotary_inertia[1] >= 0. &&
+                p.rotary_inertia[2] >= 0.,
+            "Point masses",
+            "node '" + p.node +
+                "': the mass (kg) and the rotary inertias (kg m^2) must be >= 0");
+  }
+  std::vector<std::string> supported;
+  for (const auto &s : d.supports)
+  {
+    supported.push_back(s.node);
+    for (const double k : s.stiffness)
+      require(k == -1. || k == 0. || (k > 0. && std::isfinite(k)),
+              "Supports",
+              "node '" + s.node + "': a spring stiffness must be > 0");
+  }
+  require_unique(supported, "Supports", "node", "listed twice");
+  for (const auto &s : d.supports)
+    check_node(s.node, "Supports");
+  for (const auto &n : d.hinged_joints)
+    check_node(n, "Hinged joints");
+  for (const auto &n : d.monitor_nodes)
+    check_node(n, "Monitor nodes");
+  for (const auto &l : d.nodal_loads)
+    check_node(l.first, "Nodal loads");
+}
+
+/** The contacts: their nodes, normals, gaps and restitution coefficients. */
+void validate_contacts(const FrameDescription &d, const std::set<std::string> &used)
+{
+  for (const auto &c : d.contacts)
+  {
+    const std::string contact = "contact '" + c.name + "'";
+    require(c.other_node != c.node,
+            "Contacts",
+            contact + " names the node '" + c.node + "' twice");
+    for (const auto &n : {c.node, c.other_node})
+      require(n.empty() || used.count(n),
+              "Contacts",
+              "node '" + n + "' is not an end of any member in Model/Frame/Members");
+    require(c.normal.norm() > 0., "Contacts", contact + " has a zero normal");
+    require(c.gap >= 0.,
+            "Contacts",
+            contact + ": the " + (c.two_sided ? "clearance" : "gap") +
+                " must be >= 0 (m)");
+    require(c.restitution <= 1.,
+            "Contacts",
+            contact + ": the restitution coefficient must be in [0, 1]");
+  }
+}
+} // namespace
+
+void FrameDescription::add_node(const std::string &name, const Point<3> &x)
+{
+  nodes[name] = x;
+  node_order.push_back(name);
+}
+
+void FrameDescription::validate() const
+{
+  validate_parts(*this);
+  const std::set<std::string> used_nodes = validate_members(*this);
+  validate_nodal_data(*this, used_nodes);
+  validate_contacts(*this, used_nodes);
+  std::set<std::string> member_names;
+  for (const auto &m : members)
+    member_names.insert(m.name);
+  for (const auto &m : section_force_members)
+    require(
+        member_names.count(m), "Section force members", "no member named '" + m + "'");
+}
+} // namespace hati

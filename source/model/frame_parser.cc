@@ -1,0 +1,527 @@
+#include <deal.II/base/utilities.h>
+
+#include <hati/model/frame_parser.h>
+#include <hati/model/gmsh_frame_reader.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <map>
+
+namespace hati
+{
+namespace
+{
+const char *const component_labels[6] = {"x", "y", "z", "rx", "ry", "rz"};
+
+/** Largest number of elements of one member (-). */
+constexpr double max_elements_per_member = 1e7;
+
+/** One item "name: v1, v2, ..." of a list entry. */
+struct Item
+{
+  std::string name;
+  std::vector<std::string> values;
+};
+
+/** Split `name: v, v; name: v, v` into items; @p entry names the parameter in errors. */
+std::vector<Item> parse_items(const std::string &text, const std::string &entry)
+{
+  std::vector<Item> items;
+  for (const std::string &raw : Utilities::split_string_list(text, ';'))
+  {
+    const std::string item = Utilities::trim(raw);
+    if (item.empty())
+      continue;
+    const auto colon = item.find(':');
+    AssertThrow(colon != std::string::npos && colon > 0,
+                ExcMessage("Model/Frame/" + entry + ": item '" + item +
+                           "' is not of the form 'name: values'"));
+    Item it;
+    it.name = Utilities::trim(item.substr(0, colon));
+    for (const std::string &v : Utilities::split_string_list(item.substr(colon + 1), ','))
+      it.values.push_back(Utilities::trim(v));
+    if (it.values.size() == 1 && it.values[0].empty())
+      it.values.clear();
+    items.push_back(it);
+  }
+  return items;
+}
+
+/** Whether @p value is a finite number (a node named like a number is read as one). */
+bool is_number(const std::string &value)
+{
+  char *end = nullptr;
+  const double x = std::strtod(value.c_str(), &end);
+  return !value.empty() && end != nullptr && *end == '\0' && std::isfinite(x);
+}
+
+double to_number(const std::string &value, const std::string &entry, const Item &item)
+{
+  char *end = nullptr;
+  const double x = std::strtod(value.c_str(), &end);
+  AssertThrow(!value.empty() && end != nullptr && *end == '\0' && std::isfinite(x),
+              ExcMessage("Model/Frame/" + entry + ": item '" + item.name + "': '" +
+                         value + "' is not a number"));
+  return x;
+}
+
+/** The values @p first, @p first + 1, @p first + 2 of @p item as a vector. */
+Tensor<1, 3>
+to_vector(const Item &item, const unsigned int first, const std::string &entry)
+{
+  Tensor<1, 3> v;
+  for (unsigned int k = 0; k < 3; ++k)
+    v[k] = to_number(item.values[first + k], entry, item);
+  return v;
+}
+
+void expect_values(const Item &item,
+                   const std::string &entry,
+                   const std::vector<unsigned int> &counts,
+                   const std::string &expected)
+{
+  for (const unsigned int c : counts)
+    if (item.values.size() == c)
+      return;
+  AssertThrow(false,
+              ExcMessage("Model/Frame/" + entry + ": item '" + item.name + "' has " +
+                         std::to_string(item.values.size()) + " values, expected " +
+                         expected));
+}
+} // namespace
+
+void FrameParameters::declare_parameters(ParameterHandler &prm)
+{
+  prm.declare_entry("Nodes",
+                    "",
+                    Patterns::Anything(),
+                    "Named nodes, 'name: x, y, z; ...' (m, global axes).");
+  prm.declare_entry(
+      "Materials",
+      "steel: 2.1e11, 0.3, 7850",
+      Patterns::Anything(),
+      "Named materials, 'name: E, nu, rho; ...' with Young's modulus E (Pa), "
+      "Poisson's ratio nu (-, G = E / (2 (1 + nu))) and density rho (kg/m^3).");
+  prm.declare_entry(
+      "Sections",
+      "",
+      Patterns::Anything(),
+      "Named cross-sections, 'name: kind, values; ...' with kind 'rectangle, b, h' "
+      "(solid, width b along local y, height h along local z, m), 'box, b, h, t_web, "
+      "t_flange' (thin-walled closed box, m) or 'general, A, Iy, Iz, J, Asy, Asz' (m^2, "
+      "m^4, m^4, m^4, m^2, m^2; Iy = int z^2 dA for bending about local y; shear areas "
+      "Asy, Asz, 0 for no shear deformation).");
+  prm.declare_entry(
+      "Members",
+      "",
+      Patterns::Anything(),
+      "Named members, 'name: start node, end node, section, material, number of "
+      "elements[, yx, yy, yz]; ...'. Local x runs from the start to the end node; the "
+      "optional vector (global axes) fixes the section's local y axis (its part "
+      "orthogonal to the member); default: global Y, or global X for members parallel "
+      "to Y.");
+  prm.declare_entry(
+      "Mesh file",
+      "",
+      Patterns::Anything(),
+      "Optional Gmsh mesh (ASCII format 2.2 or 4.1, path relative to the "
+      "current directory) of 2-node line elements: every named physical curve "
+      "is a member (one element per line element), named physical points name "
+      "nodes (for supports, loads, monitors); other nodes are named '@<tag>'. "
+      "Give each member's section and material in 'Member properties'. Members "
+      "and nodes of the Members and Nodes entries are added to those of the "
+      "file.");
+  prm.declare_entry(
+      "Member properties",
+      "",
+      Patterns::Anything(),
+      "Section, material and optional local-y vector of the members read from "
+      "the Mesh file, 'member: section, material[, yx, yy, yz]; ...'.");
+  prm.declare_entry(
+      "Point masses",
+      "",
+      Patterns::Anything(),
+      "Nodal masses, 'node: m[, Ixx, Iyy, Izz]; ...' (kg, kg m^2 about global "
+      "axes through the node).");
+  prm.declare_entry(
+      "Supports",
+      "",
+      Patterns::Anything(),
+      "Supports, 'node: clamped | pinned | c1, c2, c3, c4, c5, c6; ...' with one code "
+      "per "
+      "DoF ux, uy, uz, rx, ry, rz: 'fixed', 'free' or a spring stiffness (N/m for "
+      "translations, N m/rad for rotations). 'pinned' fixes the translations only.");
+  prm.declare_entry(
+      "Hinged joints",
+      "",
+      Patterns::Anything(),
+      "Nodes where the members are hinged, 'node, node, ...': the first "
+      "member at the node keeps the node's rotations, the others share only "
+      "the translations. Joints are rigid by default.");
+  prm.declare_entry(
+      "Contacts",
+      "",
+      Patterns::Anything(),
+      "Unilateral contacts (CD-Lagrange only), 'name: node, nx, ny, nz, gap[, e][, "
+      "two-sided]; ...' for a node on a rigid plane (moving with the base) or 'name: "
+      "node, other node, nx, ny, nz, gap[, e][, two-sided]; ...' for a node against "
+      "another node (recognised by the second value naming a node). n (global axes, "
+      "normalised) points from the obstacle (plane or other node) to the node; the gap "
+      "is g = gap + n . (u_node - u_other) (m, >= 0) and the impulse pushes the two "
+      "apart along n; e is the restitution coefficient (-, default "
+      "Contact/Restitution coefficient). With 'two-sided' the gap value is the total "
+      "clearance c (m, >= 0, e.g. a wheel flange's lateral play): two rows with "
+      "normals n and -n and initial gaps c / 2, both under the one name. Rows sharing "
+      "a name are summed in contacts.csv. With Method = HATI a node-to-node contact "
+      "is explicit if either node touches an explicit cell.");
+  prm.declare_entry(
+      "Nodal loads",
+      "",
+      Patterns::Anything(),
+      "Constant nodal loads, 'node: Fx, Fy, Fz[, Mx, My, Mz]; ...' (N, N m, "
+      "global axes).");
+  prm.declare_entry("Monitor nodes",
+                    "",
+                    Patterns::Anything(),
+                    "Nodes written to history.csv, 'node, node, ...' (columns "
+                    "NODE.ux ... NODE.urz, NODE.vx ... NODE.vrz).");
+  prm.declare_entry("Section force members",
+                    "",
+                    Patterns::Anything(),
+                    "Members whose section forces are written to section_forces.csv at "
+                    "every history row, 'member, member, ...'.");
+}
+
+FrameSection parse_frame_section(const std::string &text, const std::string &where)
+{
+  std::vector<std::string> values;
+  for (const std::string &v : Utilities::split_string_list(text, ','))
+    values.push_back(Utilities::trim(v));
+  AssertThrow(!values.empty() && !values[0].empty(),
+              ExcMessage(where + " has no kind (rectangle, box or general)"));
+  const std::string kind = values[0];
+  std::vector<double> v;
+  for (unsigned int i = 1; i < values.size(); ++i)
+  {
+    char *end = nullptr;
+    const double x = std::strtod(values[i].c_str(), &end);
+    AssertThrow(!values[i].empty() && *end == '\0' && std::isfinite(x),
+                ExcMessage(where + ": '" + values[i] + "' is not a number"));
+    AssertThrow(x >= 0., ExcMessage(where + " has a negative value"));
+    v.push_back(x);
+  }
+  auto expect = [&](const unsigned int count, const std::string &form)
+  {
+    AssertThrow(values.size() == count,
+                ExcMessage(where + " has " + std::to_string(values.size()) +
+                           " values, expected " + form));
+  };
+  FrameSection s;
+  if (kind == "rectangle")
+  {
+    expect(3, "'rectangle, b, h'");
+    AssertThrow(v[0] > 0. && v[1] > 0.,
+                ExcMessage(where + ": a rectangle needs b > 0 and h > 0 (m)"));
+    s = FrameSection::rectangle(v[0], v[1]);
+  }
+  else if (kind == "box")
+  {
+    expect(5, "'box, b, h, t_web, t_flange'");
+    AssertThrow(v[0] > 0. && v[1] > 0. && v[2] > 0. && v[3] > 0. && 2. * v[2] < v[0] &&
+                    2. * v[3] < v[1],
+                ExcMessage(where +
+                           ": a box needs b, h, t_web, t_flange > 0 (m), 2 t_web < b "
+                           "and 2 t_flange < h"));
+    s = FrameSection::box(v[0], v[1], v[2], v[3]);
+  }
+  else if (kind == "general")
+  {
+    expect(7, "'general, A, Iy, Iz, J, Asy, Asz'");
+    s.A = v[0];
+    s.Iy = v[1];
+    s.Iz = v[2];
+    s.J = v[3];
+    s.shear_area_y = v[4];
+    s.shear_area_z = v[5];
+  }
+  else
+    AssertThrow(false,
+                ExcMessage(where + ": unknown kind '" + kind +
+                           "', expected rectangle, box or general"));
+  AssertThrow(s.A > 0. && s.Iy > 0. && s.Iz > 0. && s.J > 0.,
+              ExcMessage(where + " needs A, Iy, Iz and J > 0"));
+  return s;
+}
+
+namespace
+{
+void parse_nodes(ParameterHandler &prm, FrameDescription &d)
+{
+  for (const Item &it : parse_items(prm.get("Nodes"), "Nodes"))
+  {
+    expect_values(it, "Nodes", {3}, "3 (x, y, z)");
+    d.add_node(it.name,
+               Point<3>(to_number(it.values[0], "Nodes", it),
+                        to_number(it.values[1], "Nodes", it),
+                        to_number(it.values[2], "Nodes", it)));
+  }
+}
+
+void parse_materials(ParameterHandler &prm, FrameDescription &d)
+{
+  for (const Item &it : parse_items(prm.get("Materials"), "Materials"))
+  {
+    expect_values(it, "Materials", {3}, "3 (E, nu, rho)");
+    FrameMaterial m;
+    m.E = to_number(it.values[0], "Materials", it);
+    const double nu = to_number(it.values[1], "Materials", it);
+    m.rho = to_number(it.values[2], "Materials", it);
+    AssertThrow(m.E > 0. && nu > -1. && nu < 0.5 && m.rho > 0.,
+                ExcMessage("Model/Frame/Materials: item '" + it.name +
+                           "' needs E > 0, -1 < nu < 0.5 and rho > 0"));
+    m.G = m.E / (2. * (1. + nu));
+    AssertThrow(
+        d.materials.count(it.name) == 0,
+        ExcMessage("Model/Frame/Materials: material '" + it.name + "' is defined twice"));
+    d.materials[it.name] = m;
+  }
+}
+
+void parse_sections(ParameterHandler &prm, FrameDescription &d)
+{
+  for (const Item &it : parse_items(prm.get("Sections"), "Sections"))
+  {
+    AssertThrow(
+        d.sections.count(it.name) == 0,
+        ExcMessage("Model/Frame/Sections: section '" + it.name + "' is defined twice"));
+    std::string text;
+    for (unsigned int i = 0; i < it.values.size(); ++i)
+      text += (i ? ", " : "") + it.values[i];
+    d.sections[it.name] =
+        parse_frame_section(text, "Model/Frame/Sections: item '" + it.name + "'");
+  }
+}
+
+void parse_members(ParameterHandler &prm, FrameDescription &d)
+{
+  for (const Item &it : parse_items(prm.get("Members"), "Members"))
+  {
+    expect_values(it,
+                  "Members",
+                  {5, 8},
+                  "5 or 8 (start, end, section, material, elements[, yx, yy, yz])");
+    FrameDescription::Member m;
+    m.name = it.name;
+    m.start = it.values[0];
+    m.end = it.values[1];
+    m.section = it.values[2];
+    m.material = it.values[3];
+    const double ne = to_number(it.values[4], "Members", it);
+    AssertThrow(ne >= 1. && ne == std::floor(ne) && ne <= max_elements_per_member,
+                ExcMessage("Model/Frame/Members: member '" + it.name +
+                           "': the number of elements must be an integer from 1 to " +
+                           std::to_string(static_cast<long>(max_elements_per_member)) +
+                           ", got " + it.values[4]));
+    m.n_elements = static_cast<unsigned int>(ne);
+    if (it.values.size() == 8)
+    {
+      m.y_reference = to_vector(it, 5, "Members");
+      AssertThrow(m.y_reference.norm() > 0.,
+                  ExcMessage("Model/Frame/Members: member '" + it.name +
+                             "': the section orientation vector (yx, yy, yz) is zero"));
+    }
+    d.members.push_back(m);
+  }
+}
+
+/**
+ * The members and named nodes of the Mesh file, with their sections and
+ * materials from Member properties, added to @p d.
+ */
+void merge_mesh_file(ParameterHandler &prm, FrameDescription &d)
+{
+  const std::string mesh_file = Utilities::trim(prm.get("Mesh file"));
+  if (mesh_file.empty())
+    return;
+  const GmshFrame mesh = read_gmsh_frame(mesh_file);
+  for (const auto &[name, x] : mesh.nodes)
+  {
+    const auto known = d.nodes.find(name);
+    AssertThrow(known == d.nodes.end() || known->second.distance(x) < 1e-12,
+                ExcMessage("Model/Frame/Mesh file: node '" + name +
+                           "' is also in Model/Frame/Nodes at another position"));
+    if (known == d.nodes.end())
+      d.add_node(name, x);
+    else
+      known->second = x;
+  }
+  std::map<std::string, Item> properties;
+  for (const Item &it : parse_items(prm.get("Member properties"), "Member properties"))
+  {
+    expect_values(
+        it, "Member properties", {2, 5}, "2 or 5 (section, material[, yx, yy, yz])");
+    AssertThrow(mesh.members.count(it.name),
+                ExcMessage("Model/Frame/Member properties: the mesh file '" + mesh_file +
+                           "' has no member (physical curve) named '" + it.name + "'"));
+    properties[it.name] = it;
+  }
+  for (const auto &[name, path] : mesh.members)
+  {
+    AssertThrow(properties.count(name),
+                ExcMessage("Model/Frame/Member properties: no section and material for "
+                           "the member '" +
+                           name + "' of the mesh file '" + mesh_file + "'"));
+    const Item &it = properties[name];
+    FrameDescription::Member m;
+    m.name = name;
+    m.path = path;
+    m.start = path.front();
+    m.end = path.back();
+    m.section = it.values[0];
+    m.material = it.values[1];
+    m.n_elements = path.size() - 1;
+    if (it.values.size() == 5)
+      m.y_reference = to_vector(it, 2, "Member properties");
+    d.members.push_back(m);
+  }
+}
+
+void parse_point_masses(ParameterHandler &prm, FrameDescription &d)
+{
+  for (const Item &it : parse_items(prm.get("Point masses"), "Point masses"))
+  {
+    expect_values(it, "Point masses", {1, 4}, "1 or 4 (m[, Ixx, Iyy, Izz])");
+    FrameDescription::PointMassData p;
+    p.node = it.name;
+    p.mass = to_number(it.values[0], "Point masses", it);
+    if (it.values.size() == 4)
+      p.rotary_inertia = to_vector(it, 1, "Point masses");
+    d.point_masses.push_back(p);
+  }
+}
+
+void parse_supports(ParameterHandler &prm, FrameDescription &d)
+{
+  for (const Item &it : parse_items(prm.get("Supports"), "Supports"))
+  {
+    FrameDescription::Support s;
+    s.node = it.name;
+    if (it.values.size() == 1 && it.values[0] == "clamped")
+      s.stiffness = {{0., 0., 0., 0., 0., 0.}};
+    else if (it.values.size() == 1 && it.values[0] == "pinned")
+      s.stiffness = {{0., 0., 0., -1., -1., -1.}};
+    else
+    {
+      expect_values(it, "Supports", {6}, "'clamped', 'pinned' or 6 codes");
+      for (unsigned int c = 0; c < 6; ++c)
+      {
+        const std::string &code = it.values[c];
+        if (code == "fixed")
+          s.stiffness[c] = 0.;
+        else if (code == "free")
+          s.stiffness[c] = -1.;
+        else
+        {
+          s.stiffness[c] = to_number(code, "Supports", it);
+          AssertThrow(s.stiffness[c] > 0.,
+                      ExcMessage("Model/Frame/Supports: node '" + it.name +
+                                 "': a spring stiffness must be > 0"));
+        }
+      }
+    }
+    d.supports.push_back(s);
+  }
+}
+
+/** The names of a list entry 'name, name, ...'. */
+std::vector<std::string> names(const std::string &text)
+{
+  std::vector<std::string> r;
+  for (const auto &s : Utilities::split_string_list(text, ','))
+    if (!Utilities::trim(s).empty())
+      r.push_back(Utilities::trim(s));
+  return r;
+}
+
+void parse_nodal_loads(ParameterHandler &prm, FrameDescription &d)
+{
+  for (const Item &it : parse_items(prm.get("Nodal loads"), "Nodal loads"))
+  {
+    expect_values(it, "Nodal loads", {3, 6}, "3 or 6 (Fx, Fy, Fz[, Mx, My, Mz])");
+    std::array<double, 6> f{{0., 0., 0., 0., 0., 0.}};
+    for (unsigned int c = 0; c < it.values.size(); ++c)
+      f[c] = to_number(it.values[c], "Nodal loads", it);
+    d.nodal_loads[it.name] = f;
+  }
+}
+
+/**
+ * One item of Contacts: 'node, nx, ny, nz, gap[, e][, two-sided]' (rigid
+ * plane) or 'node, other node, nx, ny, nz, gap[, e][, two-sided]' (node to
+ * node, recognised by the second value naming a node of @p d).
+ */
+FrameDescription::NodeContact parse_contact(const Item &it, const FrameDescription &d)
+{
+  std::vector<std::string> v = it.values;
+  FrameDescription::NodeContact c;
+  c.name = it.name;
+  if (!v.empty() && v.back() == "two-sided")
+  {
+    c.two_sided = true;
+    v.pop_back();
+  }
+  const bool node_to_node = v.size() >= 2 && d.nodes.count(v[1]) > 0 && !is_number(v[1]);
+  const unsigned int first = node_to_node ? 2 : 1; // index of nx
+  AssertThrow(v.size() == first + 4 || v.size() == first + 5,
+              ExcMessage("Model/Frame/Contacts: item '" + it.name + "' has " +
+                         std::to_string(it.values.size()) +
+                         " values, expected 'node, nx, ny, nz, gap[, e][, two-sided]' "
+                         "or 'node, other node, nx, ny, nz, gap[, e][, two-sided]'"));
+  c.node = v[0];
+  if (node_to_node)
+    c.other_node = v[1];
+  else
+    AssertThrow(is_number(v[1]),
+                ExcMessage("Model/Frame/Contacts: contact '" + it.name + "': '" + v[1] +
+                           "' is neither a node of Model/Frame/Nodes nor a number "
+                           "(the normal's nx)"));
+  for (unsigned int k = 0; k < 3; ++k)
+    c.normal[k] = to_number(v[first + k], "Contacts", it);
+  AssertThrow(
+      c.normal.norm() > 0.,
+      ExcMessage("Model/Frame/Contacts: contact '" + it.name + "' has a zero normal"));
+  c.normal /= c.normal.norm();
+  c.gap = to_number(v[first + 3], "Contacts", it);
+  AssertThrow(c.gap >= 0.,
+              ExcMessage("Model/Frame/Contacts: contact '" + it.name + "': the " +
+                         (c.two_sided ? "clearance" : "gap") + " must be >= 0 (m), got " +
+                         v[first + 3]));
+  if (v.size() == first + 5)
+  {
+    c.restitution = to_number(v[first + 4], "Contacts", it);
+    AssertThrow(c.restitution >= 0. && c.restitution <= 1.,
+                ExcMessage("Model/Frame/Contacts: contact '" + it.name +
+                           "': the restitution coefficient must be in [0, 1]"));
+  }
+  return c;
+}
+} // namespace
+
+void FrameParameters::parse_parameters(ParameterHandler &prm)
+{
+  FrameDescription &d = description;
+  parse_nodes(prm, d);
+  parse_materials(prm, d);
+  parse_sections(prm, d);
+  parse_members(prm, d);
+  merge_mesh_file(prm, d);
+  parse_point_masses(prm, d);
+  parse_supports(prm, d);
+  d.hinged_joints = names(prm.get("Hinged joints"));
+  d.monitor_nodes = names(prm.get("Monitor nodes"));
+  d.section_force_members = names(prm.get("Section force members"));
+  parse_nodal_loads(prm, d);
+  for (const Item &it : parse_items(prm.get("Contacts"), "Contacts"))
+    d.contacts.push_back(parse_contact(it, d));
+}
+} // namespace hati
