@@ -288,12 +288,9 @@ void BridgeCrane::select_part(const std::vector<unsigned char> &cell_parts,
   frame.select_part(cell_parts, part);
 }
 
-void BridgeCrane::write_vtu(std::ostream &out,
-                            const std::vector<NamedVector> &fields,
-                            const double time,
-                            const unsigned int cycle) const
+void BridgeCrane::write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const
 {
-  frame.write_vtu(out, fields, time, cycle);
+  frame.write_vtu(out, snapshot);
 }
 
 std::vector<Point<3>> BridgeCrane::cell_centres() const { return frame.cell_centres(); }

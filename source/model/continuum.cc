@@ -395,11 +395,9 @@ void Continuum<dim>::build(const CommonModelParameters &common, DiscreteSystem &
 }
 
 template <int dim>
-void Continuum<dim>::write_vtu(std::ostream &out,
-                               const std::vector<NamedVector> &fields,
-                               const double time,
-                               const unsigned int cycle) const
+void Continuum<dim>::write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const
 {
+  const auto &[fields, time, cycle] = snapshot;
   DataOut<dim> data_out;
   data_out.attach_dof_handler(dof_handler);
   // the components of a field form a vector (a scalar in 1D)

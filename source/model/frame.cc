@@ -445,11 +445,9 @@ void Frame::add_monitors(DiscreteSystem &system) const
     system.monitors.push_back(m);
   }
 }
-void Frame::write_vtu(std::ostream &out,
-                      const std::vector<NamedVector> &fields,
-                      const double time,
-                      const unsigned int cycle) const
+void Frame::write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const
 {
+  const auto &[fields, time, cycle] = snapshot;
   DataOut<1, 3> data_out;
   data_out.attach_dof_handler(dof_handler);
   std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(

@@ -55,11 +55,9 @@ void PointMass::build(const CommonModelParameters &common, DiscreteSystem &syste
   system.monitors.push_back({"ball", {"x", "y", "z"}, {0, 1, 2}});
 }
 
-void PointMass::write_vtu(std::ostream &out,
-                          const std::vector<NamedVector> &fields,
-                          const double time,
-                          const unsigned int cycle) const
+void PointMass::write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const
 {
+  const auto &[fields, time, cycle] = snapshot;
   // a single VTK vertex at the current position, 3 components per field
   std::vector<DataOutBase::Patch<0, 3>> patches(1);
   auto &patch = patches[0];

@@ -195,12 +195,12 @@ void OutputWriter::write_vtu(const OutputState &s)
                 ExcMessage("cannot write the output file " + path + ": " +
                            system_error_text(errno)));
     model.write_vtu(out,
-                    {{"displacement", s.displacement},
-                     {"velocity", s.velocity},
-                     {"contact_impulse", &impulse},
-                     {"contact_status", &status}},
-                    s.time,
-                    vtu_files.size());
+                    {{{"displacement", s.displacement},
+                      {"velocity", s.velocity},
+                      {"contact_impulse", &impulse},
+                      {"contact_status", &status}},
+                     s.time,
+                     static_cast<unsigned int>(vtu_files.size())});
     out.close();
     AssertThrow(out,
                 ExcMessage("cannot write the output file " + path + ": " +

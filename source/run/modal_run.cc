@@ -70,7 +70,8 @@ void run_modal_analysis(Problem &problem, RunDirectory &directory)
     char name[64];
     std::snprintf(name, sizeof(name), "mode-%03u.vtu", k + 1);
     std::ofstream out(directory.create(name));
-    problem.model->write_vtu(out, {{"displacement", &r.modes[k]}}, k + 1, k + 1);
+    problem.model->write_vtu(out,
+                             {{{"displacement", &r.modes[k]}}, double(k + 1), k + 1});
     AssertThrow(out.flush(),
                 ExcMessage("cannot write " + directory.path() + "/" + name + ": " +
                            system_error_text(errno)));

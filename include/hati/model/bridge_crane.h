@@ -89,10 +89,7 @@ public:
   void build(const CommonModelParameters &common, DiscreteSystem &system) override;
   /** Model::select_part() for the crane and its frame. */
   void select_part(const std::vector<unsigned char> &cell_parts, const int part) override;
-  void write_vtu(std::ostream &out,
-                 const std::vector<NamedVector> &fields,
-                 const double time,
-                 const unsigned int cycle) const override;
+  void write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const override;
   std::vector<Point<3>> cell_centres() const override;
   std::vector<std::string> cell_members() const override;
   bool has_members() const override { return true; }

@@ -76,6 +76,16 @@ struct DecompositionParameters
 /** A DoF vector to write, with its name. */
 using NamedVector = std::pair<std::string, const Vector<double> *>;
 
+/** What one VTU file holds: named DoF vectors at a time and a cycle. */
+struct VtuSnapshot
+{
+  std::vector<NamedVector> fields;
+  /** Time (s; the mode number of a mode shape). */
+  double time = 0.;
+  /** Number of the snapshot. */
+  unsigned int cycle = 0;
+};
+
 /**
  * A model turns its `.prm` description into a DiscreteSystem (mesh, DoFs,
  * lumped mass, stiffness, loads, contacts, monitors, initial state) and
@@ -90,13 +100,10 @@ public:
   virtual void build(const CommonModelParameters &common, DiscreteSystem &system) = 0;
 
   /**
-   * Write DoF vectors (displacement, velocity, contact fields) as one VTU
-   * file; @p time (s) and @p cycle are stored in the file.
+   * Write the DoF vectors of @p snapshot (displacement, velocity, contact
+   * fields) as one VTU file, with its time and cycle.
    */
-  virtual void write_vtu(std::ostream &out,
-                         const std::vector<NamedVector> &fields,
-                         const double time,
-                         const unsigned int cycle) const = 0;
+  virtual void write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const = 0;
 
   /**
    * Centre of every active cell (m, padded with zeros below three

@@ -24,10 +24,7 @@ public:
 
   explicit PointMass(const Parameters &parameters);
   void build(const CommonModelParameters &common, DiscreteSystem &system) override;
-  void write_vtu(std::ostream &out,
-                 const std::vector<NamedVector> &fields,
-                 const double time,
-                 const unsigned int cycle) const override;
+  void write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const override;
   std::string description() const override;
   std::vector<Point<3>> cell_centres() const override;
 
