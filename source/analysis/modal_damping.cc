@@ -89,12 +89,11 @@ ModalRayleighDamping modal_rayleigh_damping(const DiscreteSystem &system,
   return result;
 }
 
-SummaryEntries apply_default_damping(const Model &model,
+SummaryEntries apply_default_damping(const double zeta,
                                      const DiscreteSystem &system,
                                      const std::string &method,
                                      RayleighDamping &damping)
 {
-  const double zeta = model.default_damping_ratio();
   if (zeta <= 0. || damping.given)
     return {};
   if (method == "event-driven")

@@ -121,8 +121,8 @@ void Problem::prepare_transient()
             system.initial_displacement[part.global_dofs[i]];
         part.system.initial_velocity[i] = system.initial_velocity[part.global_dofs[i]];
       }
-  for (const auto &entry :
-       apply_default_damping(*model, system, time_parameters.method, damping))
+  for (const auto &entry : apply_default_damping(
+           model->default_damping_ratio(), system, time_parameters.method, damping))
     initial_state_summary.push_back(entry);
   AssertThrow(time_parameters.method != "event-driven" ||
                   (damping.a0 == 0. && damping.a1 == 0.),

@@ -4,7 +4,6 @@
 #include <hati/analysis/modal_analysis.h>
 #include <hati/base/summary_value.h>
 #include <hati/model/discrete_system.h>
-#include <hati/model/model.h>
 #include <hati/time/newmark.h>
 
 #include <string>
@@ -57,8 +56,8 @@ ModalRayleighDamping modal_rayleigh_damping(const DiscreteSystem &system,
                                             const double damping_ratio);
 
 /**
- * The default damping of a transient run: if @p model has a
- * default_damping_ratio() > 0, @p damping was not given by the user
+ * The default damping of a transient run: if the model's default damping
+ * ratio @p zeta is > 0, @p damping was not given by the user
  * (`RayleighDamping::given`) and @p method applies Rayleigh damping (every
  * method but event-driven, which is left undamped with a note), set
  * `damping.a0`, `damping.a1` from modal_rayleigh_damping(), print the two
@@ -66,12 +65,12 @@ ModalRayleighDamping modal_rayleigh_damping(const DiscreteSystem &system,
  * `damping_frequencies` ([f_vertical, f_horizontal], Hz), `rayleigh_a0`
  * (1/s) and `rayleigh_a1` (s). Returns no entry otherwise.
  *
- * @param model the model (its default damping ratio, -).
+ * @param zeta the model's default damping ratio (-, Model::default_damping_ratio()).
  * @param system its discrete system, built.
  * @param method Time integration/Method.
  * @param damping the Time integration/Damping of the run, updated.
  */
-SummaryEntries apply_default_damping(const Model &model,
+SummaryEntries apply_default_damping(const double zeta,
                                      const DiscreteSystem &system,
                                      const std::string &method,
                                      RayleighDamping &damping);
