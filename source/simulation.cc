@@ -16,6 +16,7 @@
 #include <hati/time/cd_lagrange.h>
 #include <hati/time/event_driven.h>
 #include <hati/time/newmark.h>
+#include <hati/time/rayleigh_damping.h>
 
 #include <chrono>
 #include <cmath>

@@ -24,6 +24,7 @@
 #include <hati/simulation.h>
 #include <hati/time/hati_coupling.h>
 #include <hati/time/newmark.h>
+#include <hati/time/rayleigh_damping.h>
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 
 #include <hati/model/discrete_system.h>
 #include <hati/time/energies.h>
-#include <hati/time/newmark.h>
+#include <hati/time/rayleigh_damping.h>
 
 #include <array>
 #include <limits>
