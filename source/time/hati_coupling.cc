@@ -28,11 +28,11 @@ double seconds_since(const Clock::time_point start)
 }
 
 /** The row applied to the integer-time velocity of CD-Lagrange (G2). */
-double integer_velocity(const SparseRow &row, const CDLagrange &integrator)
+double integer_velocity(const SparseRow &row, CDLagrange &integrator)
 {
   double s = 0.;
   for (unsigned int i = 0; i < row.dofs.size(); ++i)
-    s += row.coefficients[i] * integrator.integer_velocity(row.dofs[i]);
+    s += row.coefficients[i] * integrator.coupling_view().integer_velocity(row.dofs[i]);
   return s;
 }
 
@@ -305,12 +305,12 @@ void HATICoupling::compute_ramp(const std::vector<bool> &active_set,
                      nR = reach_dofs.size();
   const double dt = explicit_integrator.time_step();
   CDLagrange &ramp = *ramp_integrator;
-  const auto &shapes = ramp.applied_load_shapes();
+  const auto &shapes = ramp.coupling_view().applied_load_shapes();
   const bool with_contacts = !active_set.empty();
   std::vector<bool> prescribed(system.contacts.size(), false);
   for (unsigned int c = 0; c < active_set.size(); ++c)
     prescribed[reach_contacts[c]] = active_set[c];
-  ramp.prescribe_active_set(with_contacts ? &prescribed : nullptr);
+  ramp.coupling_view().prescribe_active_set(with_contacts ? &prescribed : nullptr);
 
   r.state.assign(ramp.linear_state().size(), SparseColumns());
   FullMatrix<double> increment_sum(n_gamma, n_gamma),
@@ -329,7 +329,7 @@ void HATICoupling::compute_ramp(const std::vector<bool> &active_set,
     for (auto *v : ramp.linear_state())
       *v = 0.;
     for (const unsigned int c : reach_contacts)
-      ramp.set_contact_state(c, 0., 0.);
+      ramp.coupling_view().set_contact_state(c, 0., 0.);
     for (unsigned int j = 1; j <= m; ++j)
     {
       const Vector<double> &V = *ramp.linear_state()[1]; // V_{j-1/2}
@@ -346,13 +346,13 @@ void HATICoupling::compute_ramp(const std::vector<bool> &active_set,
       if (with_damping)
         for (unsigned int i = 0; i < nR; ++i)
           velocity_reach[j](i, l) = V[reach_dofs[i]];
-      ramp.predict();
-      ramp.free_velocity(false);
-      ramp.add_force(rows_E[l], double(j) / m); // unit ramp (j/m) e_l
+      ramp.coupling_view().predict();
+      ramp.coupling_view().free_velocity(false);
+      ramp.coupling_view().add_force(rows_E[l], double(j) / m); // unit ramp (j/m) e_l
       if (j == m)
         for (unsigned int k = 0; k < n_gamma; ++k)
           H_E(k, l) = integer_velocity(rows_E[k], ramp);
-      ramp.finish_step(with_contacts);
+      ramp.coupling_view().finish_step(with_contacts);
       for (unsigned int c = 0; c < nrc; ++c)
       {
         const auto &row = system.contacts[reach_contacts[c]];
@@ -373,7 +373,7 @@ void HATICoupling::compute_ramp(const std::vector<bool> &active_set,
     for (unsigned int s = 0; s < state.size(); ++s)
       r.state[s].add_column(*state[s]);
   }
-  ramp.prescribe_active_set(nullptr);
+  ramp.coupling_view().prescribe_active_set(nullptr);
   // stored sparse with the micro steps stacked, row j nrc + c
   const auto store = [nrc, n_gamma](const std::vector<FullMatrix<double>> &dense)
   {
@@ -540,14 +540,14 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
       increment_weighted[k] += weight * du;
     }
     // (G2) Lambda_j = (1 - j/m) Lambda_n [+ (j/m) Lambda_{n+m}] over the step
-    explicit_integrator.predict();
+    explicit_integrator.coupling_view().predict();
     if (record_damping)
-      explicit_integrator.record_stiffness_velocity(
+      explicit_integrator.coupling_view().record_stiffness_velocity(
           reach_is_all ? pass_stiffness_reach[j].data() : stiffness_velocity_full.data());
-    explicit_integrator.free_velocity();
+    explicit_integrator.coupling_view().free_velocity();
     if (record_damping)
     {
-      explicit_integrator.record_stiffness_velocity(nullptr);
+      explicit_integrator.coupling_view().record_stiffness_velocity(nullptr);
       if (!reach_is_all)
         for (unsigned int r = 0; r < reach_dofs.size(); ++r)
           pass_stiffness_reach[j][r] = stiffness_velocity_full[reach_dofs[r]];
@@ -557,15 +557,16 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
     {
       const double lambda = w0 * lambda_n[k] + w1 * lambda_end[k];
       if (lambda != 0.)
-        explicit_integrator.add_dof_force(dofs_E[k], lambda);
+        explicit_integrator.coupling_view().add_dof_force(dofs_E[k], lambda);
     }
     if (j == m)
       for (unsigned int k = 0; k < n_gamma; ++k)
-        v_end[k] = explicit_integrator.integer_velocity(dofs_E[k]);
-    explicit_integrator.finish_step();
+        v_end[k] = explicit_integrator.coupling_view().integer_velocity(dofs_E[k]);
+    explicit_integrator.coupling_view().finish_step();
     if (pass)
       for (unsigned int s = 0; s < n_loads; ++s)
-        pass_load_weight[s * m + j - 1] = explicit_integrator.load_step_weight(s);
+        pass_load_weight[s * m + j - 1] =
+            explicit_integrator.coupling_view().load_step_weight(s);
     if (record_damping)
     {
       const Vector<double> &d = *explicit_integrator.linear_state()[3];
@@ -817,9 +818,9 @@ bool HATICoupling::superpose(const RampResponse &r, const Vector<double> &lambda
         work += 0.5 * (total_normal[i] * (total_impulse[h] + total_impulse[i]) -
                        pass_normal[i] * (pass_impulse[h] + pass_impulse[i]));
       }
-    explicit_integrator.add_contact_work(work);
+    explicit_integrator.coupling_view().add_contact_work(work);
     for (unsigned int c = 0; c < nrc; ++c)
-      explicit_integrator.set_contact_state(
+      explicit_integrator.coupling_view().set_contact_state(
           reach_contacts[c], total_gap[m * nrc + c], total_impulse[m * nrc + c]);
     for (unsigned int j = 1; j <= m && j <= n_recorded; ++j)
     {
@@ -854,7 +855,7 @@ bool HATICoupling::superpose(const RampResponse &r, const Vector<double> &lambda
         p += w[l] * lambda[l];
       work += pass_load_weight[s * m + j - 1] * p;
     }
-  explicit_integrator.add_external_work(work);
+  explicit_integrator.coupling_view().add_external_work(work);
   if (!reach_dofs.empty())
     explicit_integrator.add_dissipated(ramp_dissipation(r, lambda));
   if (after_micro_step)
