@@ -6,6 +6,8 @@
 
 namespace hati
 {
+using namespace dealii;
+
 void RayleighDamping::declare_parameters(ParameterHandler &prm)
 {
   prm.declare_entry("Mass coefficient",

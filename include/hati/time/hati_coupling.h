@@ -19,8 +19,6 @@
 
 namespace hati
 {
-using namespace dealii;
-
 /** The `Time integration/HATI` subsection. */
 struct HATIParameters
 {

@@ -3,37 +3,20 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+// The damping models of `Time integration/Damping`, one header each
+// (time/<name>_damping.h); the integrators (CDLagrange, Newmark,
+// HATICoupling) take the Rayleigh coefficients a0, a1.
 namespace hati
 {
-using namespace dealii;
-
 /**
- * Rayleigh damping `C = a0 M + a1 K` (algorithms.md section 2, A7), the
- * damping model of the `Time integration/Damping` subsection, given either
- * by its two coefficients or by a damping ratio zeta reached exactly at two
- * frequencies f1, f2: with `w_i = 2 pi f_i`,
+ * Rayleigh damping `C = a0 M + a1 K` (algorithms.md section 2, A7), given
+ * either by its two coefficients or by a damping ratio zeta reached exactly
+ * at two frequencies f1, f2: with `w_i = 2 pi f_i`,
  * `a0 = 2 zeta w1 w2 / (w1 + w2)`, `a1 = 2 zeta / (w1 + w2)`
  * (the modal damping ratio is `zeta(w) = a0 / (2 w) + a1 w / 2`).
- *
- * The integrators (CDLagrange, Newmark, HATICoupling) take the two
- * coefficients; the damping models of the family sit beside this one, one
- * header each (time/<name>_damping.h).
  */
 struct RayleighDamping
 {
-  /**
-   * Declare "Mass coefficient", "Stiffness coefficient", "Damping ratio",
-   * "First frequency" and "Second frequency" in the current subsection.
-   */
-  static void declare_parameters(ParameterHandler &prm);
-
-  /**
-   * Read the entries from the current subsection and compute a0, a1 from the
-   * damping ratio if it is > 0. Throws if both the damping ratio and a
-   * coefficient are given, or if a frequency is missing.
-   */
-  void parse_parameters(ParameterHandler &prm);
-
   /** Mass-proportional coefficient a0 (1/s). */
   double a0 = 0.;
   /** Stiffness-proportional coefficient a1 (s). */
@@ -43,6 +26,19 @@ struct RayleighDamping
    * damping; a model's default damping is then not applied).
    */
   bool given = false;
+
+  /**
+   * Declare "Mass coefficient", "Stiffness coefficient", "Damping ratio",
+   * "First frequency" and "Second frequency" in the current subsection.
+   */
+  static void declare_parameters(dealii::ParameterHandler &prm);
+
+  /**
+   * Read the entries from the current subsection and compute a0, a1 from the
+   * damping ratio if it is > 0. Throws if both the damping ratio and a
+   * coefficient are given, or if a frequency is missing.
+   */
+  void parse_parameters(dealii::ParameterHandler &prm);
 };
 } // namespace hati
 
