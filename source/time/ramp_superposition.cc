@@ -295,50 +295,6 @@ void RampSuperposition::start_pass(const CDLagrange &integrator, const bool cont
     }
 }
 
-void RampSuperposition::record_velocity(const unsigned int j,
-                                        const Vector<double> &velocity)
-{
-  gather_reach(velocity, pass_velocity_reach[j]);
-}
-
-double *RampSuperposition::stiffness_velocity_buffer(const unsigned int j)
-{
-  return reach_is_all ? pass_stiffness_reach[j].data() : stiffness_velocity_full.data();
-}
-
-void RampSuperposition::record_stiffness_velocity(const unsigned int j)
-{
-  if (!reach_is_all)
-    for (unsigned int r = 0; r < reach_dofs.size(); ++r)
-      pass_stiffness_reach[j][r] = stiffness_velocity_full[reach_dofs[r]];
-}
-
-void RampSuperposition::record_load_weights(const unsigned int j,
-                                            const CDLagrange::CouplingView &view)
-{
-  const unsigned int n_loads = system.time_dependent_loads.size();
-  for (unsigned int s = 0; s < n_loads; ++s)
-    pass_load_weight[s * m + j - 1] = view.load_step_weight(s);
-}
-
-void RampSuperposition::record_damping_force(const unsigned int j,
-                                             const Vector<double> &d)
-{
-  gather_reach(d, pass_damping_reach[j]);
-}
-
-void RampSuperposition::record_contacts(const unsigned int j, const ContactSample &sample)
-{
-  const unsigned int nrc = reach_contacts.size();
-  for (unsigned int c = 0; c < nrc; ++c)
-  {
-    const unsigned int k = reach_contacts[c];
-    pass_impulse[j * nrc + c] = sample.impulses[k];
-    pass_gap[j * nrc + c] = sample.gaps[k];
-    pass_normal[(j + 1) * nrc + c] = sample.normal_velocities[k];
-  }
-}
-
 bool RampSuperposition::superpose(const Response &r,
                                   const Vector<double> &lambda,
                                   CDLagrange &integrator,
@@ -539,13 +495,4 @@ double RampSuperposition::ramp_dissipation(const Response &ramp,
   return 0.5 * (dissipation_g * lambda - alpha * impulse_term + lambda * dissipation_q);
 }
 
-void RampSuperposition::gather_reach(const Vector<double> &source,
-                                     Vector<double> &reach) const
-{
-  if (reach_is_all)
-    std::copy(source.begin(), source.begin() + reach.size(), reach.begin());
-  else
-    for (unsigned int r = 0; r < reach_dofs.size(); ++r)
-      reach[r] = source[reach_dofs[r]];
-}
 } // namespace hati

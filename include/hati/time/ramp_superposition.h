@@ -9,6 +9,7 @@
 #include <hati/time/interface_problem.h>
 #include <hati/time/rayleigh_damping.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <vector>
@@ -262,6 +263,62 @@ private:
   mutable Vector<double> dissipation_p, dissipation_p_prev, dissipation_c, dissipation_g,
       dissipation_q;
 };
+
+// the pass record runs every micro step: inline
+inline void RampSuperposition::record_velocity(const unsigned int j,
+                                               const Vector<double> &velocity)
+{
+  gather_reach(velocity, pass_velocity_reach[j]);
+}
+
+inline double *RampSuperposition::stiffness_velocity_buffer(const unsigned int j)
+{
+  return reach_is_all ? pass_stiffness_reach[j].data() : stiffness_velocity_full.data();
+}
+
+inline void RampSuperposition::record_stiffness_velocity(const unsigned int j)
+{
+  if (!reach_is_all)
+    for (unsigned int r = 0; r < reach_dofs.size(); ++r)
+      pass_stiffness_reach[j][r] = stiffness_velocity_full[reach_dofs[r]];
+}
+
+inline void RampSuperposition::record_load_weights(const unsigned int j,
+                                                   const CDLagrange::CouplingView &view)
+{
+  const unsigned int n_loads = system.time_dependent_loads.size();
+  for (unsigned int s = 0; s < n_loads; ++s)
+    pass_load_weight[s * m + j - 1] = view.load_step_weight(s);
+}
+
+inline void RampSuperposition::record_damping_force(const unsigned int j,
+                                                    const Vector<double> &d)
+{
+  gather_reach(d, pass_damping_reach[j]);
+}
+
+inline void RampSuperposition::record_contacts(const unsigned int j,
+                                               const ContactSample &sample)
+{
+  const unsigned int nrc = reach_contacts.size();
+  for (unsigned int c = 0; c < nrc; ++c)
+  {
+    const unsigned int k = reach_contacts[c];
+    pass_impulse[j * nrc + c] = sample.impulses[k];
+    pass_gap[j * nrc + c] = sample.gaps[k];
+    pass_normal[(j + 1) * nrc + c] = sample.normal_velocities[k];
+  }
+}
+
+inline void RampSuperposition::gather_reach(const Vector<double> &source,
+                                            Vector<double> &reach) const
+{
+  if (reach_is_all)
+    std::copy(source.begin(), source.begin() + reach.size(), reach.begin());
+  else
+    for (unsigned int r = 0; r < reach_dofs.size(); ++r)
+      reach[r] = source[reach_dofs[r]];
+}
 } // namespace hati
 
 #endif
