@@ -22,6 +22,7 @@
 
 #include <hati/model/discrete_system.h>
 #include <hati/time/cd_lagrange.h>
+#include <hati/time/rayleigh_damping.h>
 
 #include <algorithm>
 #include <cmath>

@@ -21,6 +21,7 @@
 #include <hati/analysis/static_analysis.h>
 #include <hati/model/discrete_system.h>
 #include <hati/time/newmark.h>
+#include <hati/time/rayleigh_damping.h>
 
 #include <cmath>
 #include <iomanip>

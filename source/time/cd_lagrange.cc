@@ -9,31 +9,59 @@
 #include <limits>
 #include <numeric>
 #include <sstream>
+#include <type_traits>
+#include <utility>
 
 namespace hati
 {
 namespace
 {
-/** Padded row widths with a compiled kernel; wider rows use the generic one. */
-constexpr unsigned int kernel_widths[] = {2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 81, 96};
+/**
+ * Padded row widths with a compiled kernel (the row loop unrolled,
+ * bench/explicit_throughput.sh); wider rows use the kernel whose width is
+ * known at run time only (W = 0).
+ */
+using KernelWidths =
+    std::integer_sequence<unsigned int, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 81, 96>;
 
-unsigned int padded_width(const unsigned int w)
+/** The padded width of rows of at most @p w entries. */
+template <unsigned int... W>
+unsigned int padded_width(const unsigned int w, std::integer_sequence<unsigned int, W...>)
 {
   if (w == 0)
     return 0;
-  for (const unsigned int k : kernel_widths)
+  for (const unsigned int k : {W...})
     if (w <= k)
       return k;
   return w;
 }
 
 /**
+ * `kernel(std::integral_constant<unsigned int, W>())` with the compiled
+ * width W equal to @p width, or with W = 0 (the width known at run time
+ * only: wider rows, or no stiffness); returns what the kernel returns.
+ */
+template <typename Kernel, unsigned int... W>
+double with_kernel_width(const unsigned int width,
+                         const Kernel &kernel,
+                         std::integer_sequence<unsigned int, W...>)
+{
+  double result = 0.;
+  const bool compiled =
+      ((width == W &&
+        ((result = kernel(std::integral_constant<unsigned int, W>())), true)) ||
+       ...);
+  return compiled ? result : kernel(std::integral_constant<unsigned int, 0>());
+}
+
+/**
  * v_new = v + a - S u for a row-padded operator S of width W (A2-A3 with
- * S = dt M^-1 K, a = dt M^-1 F_ext). W is a compile-time constant so that
- * the row loop is unrolled.
+ * S = dt M^-1 K, a = dt M^-1 F_ext); W = 0: the runtime @p width. W is a
+ * compile-time constant so that the row loop is unrolled.
  */
 template <unsigned int W>
-void free_velocity_rows(const unsigned int n,
+void free_velocity_rows(const unsigned int width,
+                        const unsigned int n,
                         const unsigned int *__restrict col,
                         const double *__restrict val,
                         const double *__restrict u,
@@ -41,64 +69,25 @@ void free_velocity_rows(const unsigned int n,
                         const double *__restrict a,
                         double *__restrict v_new)
 {
+  const unsigned int w = W > 0 ? W : width;
   for (unsigned int i = 0; i < n; ++i)
   {
     double ku = 0.;
-    for (unsigned int k = 0; k < W; ++k)
-      ku += val[std::size_t(i) * W + k] * u[col[std::size_t(i) * W + k]];
+    for (unsigned int k = 0; k < w; ++k)
+      ku += val[std::size_t(i) * w + k] * u[col[std::size_t(i) * w + k]];
     v_new[i] = v[i] + a[i] - ku;
-  }
-}
-
-void free_velocity_kernel(const unsigned int width,
-                          const unsigned int n,
-                          const unsigned int *col,
-                          const double *val,
-                          const double *u,
-                          const double *v,
-                          const double *a,
-                          double *v_new)
-{
-  switch (width)
-  {
-#define HATI_KERNEL(W)                                                                   \
-  case W:                                                                                \
-    return free_velocity_rows<W>(n, col, val, u, v, a, v_new);
-    HATI_KERNEL(0)
-    HATI_KERNEL(2)
-    HATI_KERNEL(3)
-    HATI_KERNEL(4)
-    HATI_KERNEL(6)
-    HATI_KERNEL(8)
-    HATI_KERNEL(12)
-    HATI_KERNEL(16)
-    HATI_KERNEL(24)
-    HATI_KERNEL(32)
-    HATI_KERNEL(48)
-    HATI_KERNEL(64)
-    HATI_KERNEL(81)
-    HATI_KERNEL(96)
-#undef HATI_KERNEL
-  default:
-    for (unsigned int i = 0; i < n; ++i)
-    {
-      double ku = 0.;
-      for (unsigned int k = 0; k < width; ++k)
-        ku += val[std::size_t(i) * width + k] * u[col[std::size_t(i) * width + k]];
-      v_new[i] = v[i] + a[i] - ku;
-    }
   }
 }
 
 /**
  * The damped free velocity (A7) for a row-padded operator S = dt M^-1 K of
- * width W (the runtime @p width if Runtime): with a = dt M^-1 F_ext,
+ * width W (W = 0: the runtime @p width): with a = dt M^-1 F_ext,
  * `v_new = c1 v + c2 (a - S u - a1 S v)`, and the damping force of the
  * update `d_new = dt M^-1 D = a - S u - (v_new - v)`, stored in place of
  * the previous one in @p d. Returns the work of the damping force on the
  * increment dt v, `1/2 sum_i m_i v_i (d_old,i + d_new,i)` (J).
  */
-template <unsigned int W, bool Runtime = false>
+template <unsigned int W>
 double damped_free_velocity_rows(const unsigned int width,
                                  const unsigned int n,
                                  const unsigned int *__restrict col,
@@ -114,7 +103,7 @@ double damped_free_velocity_rows(const unsigned int width,
                                  double *__restrict v_new,
                                  double *__restrict kv_out)
 {
-  const unsigned int w = Runtime ? width : W;
+  const unsigned int w = W > 0 ? W : width;
   double work = 0.;
   for (unsigned int i = 0; i < n; ++i)
   {
@@ -136,48 +125,6 @@ double damped_free_velocity_rows(const unsigned int width,
   }
   return 0.5 * work;
 }
-
-double damped_free_velocity_kernel(const unsigned int width,
-                                   const unsigned int n,
-                                   const unsigned int *col,
-                                   const double *val,
-                                   const double *u,
-                                   const double *v,
-                                   const double *a,
-                                   const double *m,
-                                   const double c1,
-                                   const double c2,
-                                   const double a1,
-                                   double *d,
-                                   double *v_new,
-                                   double *kv_out)
-{
-  switch (width)
-  {
-#define HATI_KERNEL(W)                                                                   \
-  case W:                                                                                \
-    return damped_free_velocity_rows<W>(                                                 \
-        width, n, col, val, u, v, a, m, c1, c2, a1, d, v_new, kv_out);
-    HATI_KERNEL(0)
-    HATI_KERNEL(2)
-    HATI_KERNEL(3)
-    HATI_KERNEL(4)
-    HATI_KERNEL(6)
-    HATI_KERNEL(8)
-    HATI_KERNEL(12)
-    HATI_KERNEL(16)
-    HATI_KERNEL(24)
-    HATI_KERNEL(32)
-    HATI_KERNEL(48)
-    HATI_KERNEL(64)
-    HATI_KERNEL(81)
-    HATI_KERNEL(96)
-#undef HATI_KERNEL
-  default:
-    return damped_free_velocity_rows<0, true>(
-        width, n, col, val, u, v, a, m, c1, c2, a1, d, v_new, kv_out);
-  }
-}
 } // namespace
 
 CDLagrange::CDLagrange(const DiscreteSystem &system,
@@ -194,6 +141,31 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
   AssertThrow(a0 >= 0. && a1 >= 0. && std::isfinite(a0) && std::isfinite(a1),
               ExcMessage("Rayleigh damping: a0 and a1 must be >= 0 and finite."));
 
+  check_time_step(safety_factor);
+  for (unsigned int i = 0; i < n; ++i)
+    AssertThrow(
+        system.fixed[i] || system.lumped_mass[i] > 0.,
+        ExcMessage("CD-Lagrange needs a positive lumped mass on every free DoF."));
+
+  dt_minv.reinit(n);
+  minv.reinit(n);
+  mass.reinit(n);
+  zero_force.reinit(n);
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    minv[i] = system.fixed[i] ? 0. : 1. / system.lumped_mass[i];
+    mass[i] = system.fixed[i] ? 0. : system.lumped_mass[i];
+    dt_minv[i] = dt * minv[i];
+  }
+
+  build_stiffness_operator();
+  build_loads();
+  initial_state();
+  build_contacts();
+}
+
+void CDLagrange::check_time_step(const double safety_factor)
+{
   // Stability (algorithms.md section 1, A7): dt <= safety * dt_crit with
   // dt_crit = (2/omega_max) (sqrt(1 + xi^2) - xi), xi = a1 omega_max / 2,
   // written 2 / (omega_max (sqrt(1 + xi^2) + xi)) to avoid the cancellation.
@@ -224,23 +196,11 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
     s << ".";
     AssertThrow(false, ExcMessage(s.str()));
   }
+}
 
-  for (unsigned int i = 0; i < n; ++i)
-    AssertThrow(
-        system.fixed[i] || system.lumped_mass[i] > 0.,
-        ExcMessage("CD-Lagrange needs a positive lumped mass on every free DoF."));
-
-  dt_minv.reinit(n);
-  minv.reinit(n);
-  mass.reinit(n);
-  zero_force.reinit(n);
-  for (unsigned int i = 0; i < n; ++i)
-  {
-    minv[i] = system.fixed[i] ? 0. : 1. / system.lumped_mass[i];
-    mass[i] = system.fixed[i] ? 0. : system.lumped_mass[i];
-    dt_minv[i] = dt * minv[i];
-  }
-
+void CDLagrange::build_stiffness_operator()
+{
+  const unsigned int n = system.n_dofs();
   // dt M^-1 K in padded rows of a fixed width (ELLPACK): rows of fixed DoFs
   // are empty, padding entries are zeros pointing at the row itself
   row_width = 0;
@@ -249,7 +209,7 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
     for (unsigned int i = 0; i < n; ++i)
       if (!system.fixed[i])
         row_width = std::max<unsigned int>(row_width, system.stiffness.get_row_length(i));
-    row_width = padded_width(row_width);
+    row_width = padded_width(row_width, KernelWidths());
     column.assign(std::size_t(n) * row_width, 0);
     value.assign(std::size_t(n) * row_width, 0.);
     for (unsigned int i = 0; i < n; ++i)
@@ -267,7 +227,11 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
         column[std::size_t(i) * row_width + k] = i;
     }
   }
+}
 
+void CDLagrange::build_loads()
+{
+  const unsigned int n = system.n_dofs();
   // External forces with the lumped mass for the acceleration loads (gravity,
   // base excitation): -M_lumped r a instead of the consistent M r a of the
   // system, so that a rigid motion (free flight) is exact with CD.
@@ -292,7 +256,11 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
     shape.scale(dt_minv);
     dt_minv_load_shapes.push_back(shape);
   }
+}
 
+void CDLagrange::initial_state()
+{
+  const unsigned int n = system.n_dofs();
   // initial state
   U = system.initial_displacement;
   U0 = U;
@@ -322,7 +290,10 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
     (*V)[i] = v0[i] + 0.5 * g;
     (*V_prev)[i] = (*V)[i] - g; // stands for V_{-1/2}
   }
+}
 
+void CDLagrange::build_contacts()
+{
   // contacts: which contacts are coupled through a common free DoF
   const unsigned int nc = system.contacts.size();
   gap.resize(nc);
@@ -385,15 +356,19 @@ void CDLagrange::free_velocity(const bool with_loads)
   if (n_loads > 0)
     a = load_step_force();
   const bool damped = this->damped();
+  const unsigned int n = U.size();
+  const unsigned int *const col = column.data();
+  const double *const val = value.data(), *const u = U.data(), *const v = V->data();
+  double *const v_new = V_prev->data();
   if (!damped)
-    free_velocity_kernel(row_width,
-                         U.size(),
-                         column.data(),
-                         value.data(),
-                         U.data(),
-                         V->data(),
-                         a,
-                         V_prev->data());
+    with_kernel_width(
+        row_width,
+        [&](auto w)
+        {
+          free_velocity_rows<decltype(w)::value>(row_width, n, col, val, u, v, a, v_new);
+          return 0.;
+        },
+        KernelWidths());
   else
     // (A7) (1 + a0 dt/2) V_free = (1 - a0 dt/2) V_{n+1/2}
     //        + dt M^-1 (F_ext(t_{n+1}) - K U_{n+1} - a1 K V_{n+1/2}),
@@ -401,20 +376,26 @@ void CDLagrange::free_velocity(const bool with_loads)
     // its work on dU = dt V_{n+1/2} is 1/2 dU . (D_n + D_{n+1}) (the
     // time-dependent loads enter V_free scaled by c2 and the rest, (1 - c2)
     // of them, the damping force and its work)
-    dissipated += damped_free_velocity_kernel(row_width,
-                                              U.size(),
-                                              column.data(),
-                                              value.data(),
-                                              U.data(),
-                                              V->data(),
-                                              a,
-                                              mass.data(),
-                                              c1,
-                                              c2,
-                                              a1,
-                                              d_prev.data(),
-                                              V_prev->data(),
-                                              stiffness_velocity_out);
+    dissipated += with_kernel_width(
+        row_width,
+        [&](auto w)
+        {
+          return damped_free_velocity_rows<decltype(w)::value>(row_width,
+                                                               n,
+                                                               col,
+                                                               val,
+                                                               u,
+                                                               v,
+                                                               a,
+                                                               mass.data(),
+                                                               c1,
+                                                               c2,
+                                                               a1,
+                                                               d_prev.data(),
+                                                               v_new,
+                                                               stiffness_velocity_out);
+        },
+        KernelWidths());
 }
 
 template <unsigned int L>
@@ -510,11 +491,6 @@ const double *CDLagrange::load_step_force()
     time_dependent_work +=
         0.5 * (load_previous_amplitude[l] + load_amplitude[l]) * dt * load_velocity[l];
   return a;
-}
-
-void CDLagrange::add_force(const SparseRow &row, const double force)
-{
-  row.add_transpose(force, dt_minv, *V_prev);
 }
 
 void CDLagrange::finish_step(const bool with_contacts)

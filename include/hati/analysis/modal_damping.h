@@ -4,7 +4,7 @@
 #include <hati/analysis/modal_analysis.h>
 #include <hati/base/summary_value.h>
 #include <hati/model/discrete_system.h>
-#include <hati/time/newmark.h>
+#include <hati/time/rayleigh_damping.h>
 
 #include <string>
 #include <utility>

@@ -11,6 +11,7 @@
 #include <hati/parameters/run_parameters.h>
 #include <hati/time/hati_coupling.h>
 #include <hati/time/newmark.h>
+#include <hati/time/rayleigh_damping.h>
 
 #include <array>
 #include <functional>

@@ -5,7 +5,7 @@
 
 #include <hati/model/discrete_system.h>
 #include <hati/time/energies.h>
-#include <hati/time/newmark.h>
+#include <hati/time/rayleigh_damping.h>
 
 #include <array>
 #include <limits>
@@ -61,68 +61,17 @@ public:
    */
   void step();
 
-  /**
-   * @name Phases of a step, for the coupling (G2): predict(), then
-   * free_velocity(), then any add_force(), then finish_step().
-   */
-  /** @{ */
-  /** (A1) `U_{n+1} = U_n + dt V_{n+1/2}`; the time advances to t_{n+1}. */
-  void predict();
-
-  /**
-   * (A2)-(A3) the free velocity `V_free = V_{n+1/2} + dt M^-1 (F_ext(t_{n+1})
-   * - K U_{n+1})`; with damping (A7)
-   * `(1 + a0 dt/2) V_free = (1 - a0 dt/2) V_{n+1/2} + dt M^-1 (F_ext(t_{n+1})
-   * - K U_{n+1} - a1 K V_{n+1/2})`, i.e. the damping force
-   * `D_{n+1} = a0 M (V_{n+1/2} + V_free)/2 + a1 K V_{n+1/2}`, whose work
-   * is booked in dissipated_energy(). Without the external loads if
-   * @p with_loads is false (the homogeneous response of the coupling's unit
-   * ramp, G3').
-   */
-  void free_velocity(const bool with_loads = true);
-
-  /**
-   * Add a force @p force (N) along the row @p row acting over the whole step:
-   * `V_free += dt M^-1 row^T force` (the interface force `C_E^T Lambda_j`
-   * of G2). It is not scaled by the damping factor `c2` and not part of the
-   * damping force D_{n+1} (A7).
-   */
-  void add_force(const SparseRow &row, const double force);
-  /**
-   * With a non-null @p out (n_dofs() entries), the damped steps write
-   * `S V_{n+1/2}`, `S = dt M^-1 K`, the stiffness part of the damping
-   * force (A7), into it (the coupling's dissipated energy, G3');
-   * nullptr stops it.
-   */
-  void record_stiffness_velocity(double *out) { stiffness_velocity_out = out; }
-  /** add_force() for a row with the coefficient 1 on DoF @p i alone. */
-  void add_dof_force(const unsigned int i, const double force)
-  {
-    (*V_prev)[i] += dt_minv[i] * force;
-  }
-
-  /**
-   * The velocity at the integer time t_{n+1} of DoF @p i,
-   * `(V_{n+1/2} + V_free) / 2 = V_{n+1/2} + dt/2 M^-1 F_{n+1}` (G2), with
-   * `F_{n+1}` the whole force of the update (damping D_{n+1} included, A7),
-   * valid between free_velocity() and finish_step().
-   */
-  double integer_velocity(const unsigned int i) const
-  {
-    return 0.5 * ((*V)[i] + (*V_prev)[i]);
-  }
-
-  /** V_free becomes V_{n+3/2}; then the contacts (A4)-(A6) if @p with_contacts. */
-  void finish_step(const bool with_contacts = true);
-  /** @} */
+  class CouplingView;
+  /** The integrator as the coupling drives it (HATICoupling, G2-G3'). */
+  CouplingView coupling_view();
 
   /**
    * The vectors of the linear state between two steps, {U_n, V_{n+1/2},
-   * V_{n-1/2}, d_n}, for the coupling: it adds the response to the interface
-   * multiplier by superposition (G3') and reads and sets the state.
-   * `d_n = dt M^-1 D_n` (m/s) is the damping force of the last update (A7),
-   * all zeros without damping. The dissipated energy is quadratic in the
-   * state: the coupling corrects it with add_dissipated().
+   * V_{n-1/2}, d_n}: the coupling adds the response to the interface
+   * multiplier by superposition (G3') and reads and sets the state (the
+   * macro-step map). `d_n = dt M^-1 D_n` (m/s) is the damping force of the
+   * last update (A7), all zeros without damping. The dissipated energy is
+   * quadratic in the state: the coupling corrects it with add_dissipated().
    */
   std::array<Vector<double> *, 4> linear_state() { return {{&U, V, V_prev, &d_prev}}; }
 
@@ -138,24 +87,6 @@ public:
   };
   void save(Snapshot &snapshot) const;
   void restore(const Snapshot &snapshot);
-
-  /**
-   * The time-dependent load shapes as this integrator applies them (N per
-   * unit amplitude; acceleration loads with the lumped mass).
-   */
-  const std::vector<Vector<double>> &applied_load_shapes() const { return load_shapes; }
-
-  /**
-   * The trapezoidal weight `1/2 (a_l(t_n) + a_l(t_{n+1}))` of time-dependent
-   * load @p l over the last step (its amplitudes as the step took them).
-   */
-  double load_step_weight(const unsigned int l) const
-  {
-    return 0.5 * (load_previous_amplitude[l] + load_amplitude[l]);
-  }
-
-  /** Add @p work (J) to the external work (the coupling's superposition). */
-  void add_external_work(const double work) { time_dependent_work += work; }
 
   /** Diagonal of M^-1 (1/kg), zero on fixed DoFs. */
   const Vector<double> &inverse_mass() const { return minv; }
@@ -200,32 +131,26 @@ public:
   /** Add @p energy (J) to dissipated_energy() (corrections of the coupling). */
   void add_dissipated(const double energy) { dissipated += energy; }
 
-  /**
-   * @name Contacts as the coupling's superposition needs them (G3')
-   */
-  /** @{ */
-  /**
-   * With a non-null @p pattern (one flag per contact), the next steps take
-   * the contacts flagged as active whatever their gap and solve (A5) as
-   * bilateral constraints, `W lambda = -q` without the sign condition: the
-   * linear response of the explicit part for a given active set (the
-   * coupling's ramp responses). nullptr restores (A4)-(A5).
-   */
-  void prescribe_active_set(const std::vector<bool> *pattern) { prescribed = pattern; }
-  /** Set the gap (m) and impulse (N s) of contact @p k (superposition). */
-  void set_contact_state(const unsigned int k, const double gap_k, const double impulse)
-  {
-    gap[k] = gap_k;
-    lambda[k] = impulse;
-  }
-  /** Add @p work (J) to the contact work (superposition). */
-  void add_contact_work(const double work) { contact_work += work; }
-  /** @} */
-
   /** Discrete energies at t_n (computes K U_n: call at output times). */
   Energies energies() const;
 
 private:
+  /** (A1), see CouplingView::predict(). */
+  void predict();
+  /** (A2)-(A3), (A7), see CouplingView::free_velocity(). */
+  void free_velocity(const bool with_loads = true);
+  /** V_free becomes V_{n+3/2}, then (A4)-(A6), see CouplingView::finish_step(). */
+  void finish_step(const bool with_contacts = true);
+  /** The stability check of the constructor (A7): throws if dt > safety dt_crit. */
+  void check_time_step(const double safety_factor);
+  /** dt M^-1 K in padded rows (ELLPACK), see `column`, `value`. */
+  void build_stiffness_operator();
+  /** The constant force and the load shapes as this integrator applies them. */
+  void build_loads();
+  /** V_{1/2}, V_{-1/2} and d_0 from the initial state (A7, doc/theory.md 1.1). */
+  void initial_state();
+  /** Initial gaps and which contacts share a free DoF (A5 clusters). */
+  void build_contacts();
   void apply_contacts();
   /**
    * `dt M^-1 F_ext(t_{n+1})` with the time-dependent loads, in one pass
@@ -300,6 +225,142 @@ private:
   double contact_work = 0.;
   double time_dependent_work = 0.;
 };
+/**
+ * The explicit integrator as the HATI coupling drives it (G2-G3',
+ * HATICoupling, RampSuperposition): the phases of a step, the interface
+ * force, the integer-time velocity and what the superposition of the unit
+ * ramp responses writes back (state vectors, contact state, works). One
+ * seam instead of public access to the integrator's internals; every call
+ * is inline, so the coupling's micro-step loop costs what direct access
+ * would. A view refers to its integrator, which must outlive it.
+ *
+ * A micro step: predict(), free_velocity(), any add_force() or
+ * add_dof_force(), integer_velocity() if needed, then finish_step().
+ */
+class CDLagrange::CouplingView
+{
+public:
+  explicit CouplingView(CDLagrange &integrator) : integrator(&integrator) {}
+
+  /** (A1) `U_{n+1} = U_n + dt V_{n+1/2}`; the time advances to t_{n+1}. */
+  void predict() { integrator->predict(); }
+
+  /**
+   * (A2)-(A3) the free velocity `V_free = V_{n+1/2} + dt M^-1 (F_ext(t_{n+1})
+   * - K U_{n+1})`; with damping (A7)
+   * `(1 + a0 dt/2) V_free = (1 - a0 dt/2) V_{n+1/2} + dt M^-1 (F_ext(t_{n+1})
+   * - K U_{n+1} - a1 K V_{n+1/2})`, i.e. the damping force
+   * `D_{n+1} = a0 M (V_{n+1/2} + V_free)/2 + a1 K V_{n+1/2}`, whose work
+   * is booked in dissipated_energy(). Without the external loads if
+   * @p with_loads is false (the homogeneous response of the coupling's unit
+   * ramp, G3').
+   */
+  void free_velocity(const bool with_loads = true)
+  {
+    integrator->free_velocity(with_loads);
+  }
+
+  /**
+   * Add a force @p force (N) along the row @p row acting over the whole step:
+   * `V_free += dt M^-1 row^T force` (the interface force `C_E^T Lambda_j`
+   * of G2). It is not scaled by the damping factor `c2` and not part of the
+   * damping force D_{n+1} (A7).
+   */
+  void add_force(const SparseRow &row, const double force)
+  {
+    row.add_transpose(force, integrator->dt_minv, *integrator->V_prev);
+  }
+  /** add_force() for a row with the coefficient 1 on DoF @p i alone. */
+  void add_dof_force(const unsigned int i, const double force)
+  {
+    (*integrator->V_prev)[i] += integrator->dt_minv[i] * force;
+  }
+
+  /**
+   * The velocity at the integer time t_{n+1} of DoF @p i,
+   * `(V_{n+1/2} + V_free) / 2 = V_{n+1/2} + dt/2 M^-1 F_{n+1}` (G2), with
+   * `F_{n+1}` the whole force of the update (damping D_{n+1} included, A7),
+   * valid between free_velocity() and finish_step().
+   */
+  double integer_velocity(const unsigned int i) const
+  {
+    return 0.5 * ((*integrator->V)[i] + (*integrator->V_prev)[i]);
+  }
+
+  /** V_free becomes V_{n+3/2}; then the contacts (A4)-(A6) if @p with_contacts. */
+  void finish_step(const bool with_contacts = true)
+  {
+    integrator->finish_step(with_contacts);
+  }
+
+  /**
+   * With a non-null @p out (n_dofs() entries), the damped steps write
+   * `S V_{n+1/2}`, `S = dt M^-1 K`, the stiffness part of the damping
+   * force (A7), into it (the coupling's dissipated energy, G3');
+   * nullptr stops it.
+   */
+  void record_stiffness_velocity(double *out)
+  {
+    integrator->stiffness_velocity_out = out;
+  }
+
+  /** `d_n = dt M^-1 D_n` (m/s), the damping force of the last update (A7). */
+  const Vector<double> &damping_force() const { return integrator->d_prev; }
+
+  /**
+   * The time-dependent load shapes as the integrator applies them (N per
+   * unit amplitude; acceleration loads with the lumped mass).
+   */
+  const std::vector<Vector<double>> &applied_load_shapes() const
+  {
+    return integrator->load_shapes;
+  }
+
+  /**
+   * The trapezoidal weight `1/2 (a_l(t_n) + a_l(t_{n+1}))` of time-dependent
+   * load @p l over the last step (its amplitudes as the step took them).
+   */
+  double load_step_weight(const unsigned int l) const
+  {
+    return 0.5 * (integrator->load_previous_amplitude[l] + integrator->load_amplitude[l]);
+  }
+
+  /**
+   * With a non-null @p pattern (one flag per contact), the next steps take
+   * the contacts flagged as active whatever their gap and solve (A5) as
+   * bilateral constraints, `W lambda = -q` without the sign condition: the
+   * linear response of the explicit part for a given active set (the
+   * coupling's ramp responses). nullptr restores (A4)-(A5).
+   */
+  void prescribe_active_set(const std::vector<bool> *pattern)
+  {
+    integrator->prescribed = pattern;
+  }
+
+  /** @name What the superposition (G3') adds to the integrator's record */
+  /** @{ */
+  /** Set the gap (m) and impulse (N s) of contact @p k. */
+  void set_contact_state(const unsigned int k, const double gap_k, const double impulse)
+  {
+    integrator->gap[k] = gap_k;
+    integrator->lambda[k] = impulse;
+  }
+  /** Add @p work (J) to the contact work. */
+  void add_contact_work(const double work) { integrator->contact_work += work; }
+  /** Add @p work (J) to the external work. */
+  void add_external_work(const double work) { integrator->time_dependent_work += work; }
+  /** Add @p energy (J) to the dissipated energy. */
+  void add_dissipated(const double energy) { integrator->add_dissipated(energy); }
+  /** @} */
+
+private:
+  CDLagrange *integrator;
+};
+
+inline CDLagrange::CouplingView CDLagrange::coupling_view()
+{
+  return CouplingView(*this);
+}
 } // namespace hati
 
 #endif

@@ -1,0 +1,79 @@
+#ifndef hati_time_column_matrices_h
+#define hati_time_column_matrices_h
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace hati
+{
+using namespace dealii;
+
+/**
+ * Columns of a sparse matrix (the explicit response to a unit interface
+ * ramp, G3'): only the entries the response reaches are stored.
+ */
+class SparseColumns
+{
+public:
+  /** Append the column @p v (its nonzero entries). */
+  void add_column(const Vector<double> &v);
+  /** The nonzero entries of @p matrix, column by column. */
+  explicit SparseColumns(const FullMatrix<double> &matrix);
+  SparseColumns() = default;
+  /** y += sum_k column_k x_k. */
+  void add_multiply(Vector<double> &y, const Vector<double> &x) const;
+  /** y = sum_k column_k x_k (@p y keeps its size). */
+  void vmult(Vector<double> &y, const Vector<double> &x) const
+  {
+    y = 0.;
+    add_multiply(y, x);
+  }
+  /** g_k += column_k . c for every column k (@p c: as many entries as rows). */
+  void Tvmult_add(Vector<double> &g, const double *c) const;
+  /** Rows with an entry in any column. */
+  std::vector<unsigned int> rows() const;
+
+private:
+  std::vector<std::size_t> start{0};
+  std::vector<unsigned int> row;
+  std::vector<double> value;
+};
+
+/**
+ * A small dense matrix stored column by column, the product taking four
+ * columns per pass over the result (the coupling's dense operators: the
+ * link columns M_eff^-1 C_I^T, H_I and H^-1 of G3'-G4, applied once or
+ * twice per macro step).
+ */
+class DenseColumns
+{
+public:
+  /** An @p m x @p n matrix of zeros. */
+  void reinit(const unsigned int m, const unsigned int n)
+  {
+    n_rows = m;
+    n_columns = n;
+    value.assign(std::size_t(m) * n, 0.);
+  }
+  bool empty() const { return value.empty(); }
+  double &operator()(const unsigned int i, const unsigned int j)
+  {
+    return value[std::size_t(j) * n_rows + i];
+  }
+  double operator()(const unsigned int i, const unsigned int j) const
+  {
+    return value[std::size_t(j) * n_rows + i];
+  }
+  /** y = A x (@p y keeps its size, m entries). */
+  void vmult(Vector<double> &y, const Vector<double> &x) const;
+
+private:
+  unsigned int n_rows = 0, n_columns = 0;
+  std::vector<double> value;
+};
+} // namespace hati
+
+#endif

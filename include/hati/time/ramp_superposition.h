@@ -1,0 +1,324 @@
+#ifndef hati_time_ramp_superposition_h
+#define hati_time_ramp_superposition_h
+
+#include <deal.II/lac/vector.h>
+
+#include <hati/model/discrete_system.h>
+#include <hati/time/cd_lagrange.h>
+#include <hati/time/column_matrices.h>
+#include <hati/time/interface_problem.h>
+#include <hati/time/rayleigh_damping.h>
+
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace hati
+{
+using namespace dealii;
+
+/** The contact state of the explicit subdomain after one micro step. */
+struct ContactSample
+{
+  double time = 0.;
+  std::vector<double> gaps, normal_velocities, impulses;
+  std::vector<bool> active;
+};
+
+/**
+ * What the micro steps of a macro step give the interface problem, one
+ * entry per interface pair (G3', G5).
+ */
+struct InterfaceIncrements
+{
+  /** `C_E V` at the integer time t_{n+m} (m/s). */
+  Vector<double> v_end;
+  /** `sum_j dt C_E V_{j-1/2}` (m), the interface displacement increment. */
+  Vector<double> increment_sum;
+  /** `sum_j (2j - 1)/(2m) dt C_E V_{j-1/2}` (m), for the work of the ramp (G5). */
+  Vector<double> increment_weighted;
+};
+
+/**
+ * The explicit response to unit interface ramps and its superposition
+ * (doc/theory.md 9.2 and 9.6, G3'). The micro steps of a macro step run
+ * with the guess `Lambda_{n+m} = Lambda_n` (the pass); the correction
+ * `dLambda` is then added to the explicit state by superposition of the
+ * response to the unit ramps `(j/m) e_l` from rest, computed once with the
+ * explicit integrator's own code path (a private CDLagrange, without
+ * loads).
+ *
+ * Contacts within reach of that response (its nonzero DoFs): the pass
+ * records their impulses, gaps and normal velocities; while their pushing
+ * set (impulse > 0, and bilateral rows) stays the same over the pass, the
+ * response computed with that set bilateral is used (cached per set, up to
+ * max_cached_patterns) after superpose() has checked that the LCP of every
+ * micro step keeps the set; otherwise HATICoupling redoes the micro steps
+ * (max_corrections, continuity_tolerance). With damping (A7) the
+ * dissipated energy is quadratic in the state: the pass records the
+ * velocities, `S V` and damping forces on the reach, and
+ * ramp_dissipation() adds the ramp's part.
+ *
+ * The limits are the named constants below.
+ */
+class RampSuperposition
+{
+public:
+  /**
+   * @name Limits
+   */
+  /** @{ */
+  /**
+   * At most this many pattern responses are cached; the cache is emptied
+   * when full (each holds about m (contacts + reach) n_G entries).
+   */
+  static constexpr unsigned int max_cached_patterns = 64;
+  /**
+   * A contact pushes in a micro step of the pass if its impulse is above
+   * this fraction of the largest impulse of the pass (round-off, A5).
+   */
+  static constexpr double pushing_impulse_fraction = 1e-10;
+  /**
+   * superpose(): relative tolerance of the LCP checks, on the impulses
+   * (fraction of the largest one) and on the normal velocities (fraction
+   * of the largest one, plus velocity_tolerance_floor m/s).
+   */
+  static constexpr double lcp_check_tolerance = 1e-9;
+  /** Absolute part of the velocity check of superpose() (m/s). */
+  static constexpr double velocity_tolerance_floor = 1e-15;
+  /**
+   * Redone macro steps: the macro-end continuity holds when the residual is
+   * at most this fraction of the largest interface velocity (or zero).
+   */
+  static constexpr double continuity_tolerance = 1e-8;
+  /** Redone macro steps: corrections of Lambda_{n+m} before giving up. */
+  static constexpr unsigned int max_corrections = 50;
+  /** @} */
+
+  /**
+   * The explicit response to the unit ramps, its reach and contacts
+   * within reach, for the explicit subdomain @p system, micro step @p dt
+   * (s), @p m micro steps per macro step and the interface @p interface
+   * (H^-1 for each response). The arguments must outlive this object.
+   */
+  RampSuperposition(const DiscreteSystem &system,
+                    const double dt,
+                    const unsigned int m,
+                    const RayleighDamping &damping,
+                    const InterfaceProblem &interface);
+
+  /**
+   * The explicit response to the unit ramps `(j/m) e_l` from rest, for one
+   * active set of the contacts within reach (none: the open response),
+   * with what the superposition needs: the state columns, the interface
+   * increments, the load work, the velocities on the reach and the
+   * quadratic form of its dissipation (damped), the impulse and gap of each
+   * contact within reach after every micro step and its normal velocity
+   * `L V_{j-1/2}` before it, and the inverse of the interface matrix
+   * `H = C_E V_ramp + gamma DT C_I M_eff^-1 C_I^T` (G3').
+   */
+  struct Response
+  {
+    std::vector<SparseColumns> state;
+    SparseColumns increment_sum, increment_weighted, H_E;
+    std::vector<std::vector<Vector<double>>> load_work;
+    // per micro step, sparse: the response spreads at the wave speed and
+    // stays within the connected part of the subdomain
+    /**
+     * The velocities V_{j-1/2} on the reach, j = 1 .. m + 1, and the
+     * quadratic form of the ramp's own dissipation,
+     * `Q = sum_j V_j^T M (D_{j-1} + D_j)` (ramp_dissipation()).
+     */
+    std::vector<SparseColumns> velocity_on_reach;
+    DenseColumns dissipation_quadratic;
+    // (rows j * n_contacts + c: contact c of the reach after micro step j,
+    // its normal velocity before it)
+    SparseColumns impulse, gap, normal_velocity;
+    /** H^-1 (inverted once, one product per solve). */
+    DenseColumns H_inverse;
+  };
+
+  /** Whether contacts are within reach of the ramp response. */
+  bool contacts_in_reach() const { return !reach_contacts.empty(); }
+  /** Whether the pass records the damping on the reach (damped). */
+  bool records_damping() const { return !reach_dofs.empty(); }
+  /** Active sets of the contacts within reach whose response was computed. */
+  unsigned long ramp_patterns() const { return n_patterns; }
+
+  /**
+   * @name The pass (G2), recorded by HATICoupling::micro_steps()
+   */
+  /** @{ */
+  /**
+   * Before micro step 1: the contact state of the contacts within reach of
+   * @p integrator if @p contacts (then record_damping_force() with j = 0 if
+   * damped).
+   */
+  void start_pass(const CDLagrange &integrator, const bool contacts);
+  /** Before micro step @p j: V_{j-1/2} on the reach. */
+  void record_velocity(const unsigned int j, const Vector<double> &velocity);
+  /** Where micro step @p j writes `S V_{j-1/2}` (n_dofs() or reach entries). */
+  double *stiffness_velocity_buffer(const unsigned int j);
+  /** After the free velocity of micro step @p j: `S V_{j-1/2}` on the reach. */
+  void record_stiffness_velocity(const unsigned int j);
+  /** After micro step @p j: the load weights of its step. */
+  void record_load_weights(const unsigned int j, const CDLagrange::CouplingView &view);
+  /** After micro step @p j (before the first: j = 0): d_j on the reach. */
+  void record_damping_force(const unsigned int j, const Vector<double> &d);
+  /** After micro step @p j: the contacts within reach from @p sample. */
+  void record_contacts(const unsigned int j, const ContactSample &sample);
+  /** @} */
+
+  /**
+   * The response for the pass: with contacts within reach, the response of
+   * their pushing set if it stayed the same over the pass (computed on
+   * first use and cached), else the open response and @p same_active_set
+   * false (the micro steps are to be redone).
+   */
+  const Response &response_for_pass(bool &same_active_set);
+
+  /**
+   * Check that the pass plus the ramp response `r lambda` keeps the active
+   * set of the pass (impulses of active contacts >= 0, gaps of inactive
+   * ones > 0 at every micro step); if so add it to the state of
+   * @p integrator, its works, @p increments and the @p n_samples recorded
+   * contact @p samples of the pass and return true.
+   */
+  bool superpose(const Response &r,
+                 const Vector<double> &lambda,
+                 CDLagrange &integrator,
+                 InterfaceIncrements &increments,
+                 std::vector<ContactSample> &samples,
+                 const unsigned int n_samples);
+
+private:
+  /**
+   * Compute @p r for the active set @p pattern of the contacts within reach
+   * (empty: all open), the contacts of the pattern taken as bilateral
+   * (CDLagrange::CouplingView::prescribe_active_set()).
+   */
+  void
+  compute_ramp(const std::vector<bool> &pattern, Response &r, const bool with_damping);
+  /** The velocities on the reach and the quadratic form Q of @p r (damped). */
+  void store_dissipation(const std::vector<FullMatrix<double>> &velocity_reach,
+                         const std::vector<FullMatrix<double>> &damping_reach,
+                         Response &r) const;
+  /** The ramp response of @p pattern, computed on first use and cached. */
+  const Response &ramp_for(const std::vector<bool> &pattern);
+  /** The reach, the contacts within it and the damping records (set-up). */
+  void find_reach();
+  /** The contacts of superpose(): false if the active set does not hold. */
+  bool superpose_contacts(const Response &r,
+                          const Vector<double> &lambda,
+                          CDLagrange &integrator,
+                          std::vector<ContactSample> &samples,
+                          const unsigned int n_samples);
+  /** The dissipated energy of the ramp part @p r Lambda after the pass (G3', A7). */
+  double ramp_dissipation(const Response &r, const Vector<double> &lambda) const;
+  /** @p reach = @p source on reach_dofs. */
+  void gather_reach(const Vector<double> &source, Vector<double> &reach) const;
+
+  const DiscreteSystem &system;
+  const double dt;
+  const unsigned int m;
+  const InterfaceProblem &interface;
+  const bool damped;
+  /** The explicit integrator of the ramp responses (from rest, no loads). */
+  std::unique_ptr<CDLagrange> ramp_integrator;
+  Response open_ramp;
+  std::map<std::vector<bool>, Response> pattern_ramps;
+  unsigned long n_patterns = 0;
+
+  // contacts within reach of the ramp response (indices)
+  std::vector<unsigned int> reach_contacts;
+  // the pass over the contacts within reach: impulses, gaps, normal
+  // velocities and active flags per micro step (row-major, j x contact)
+  std::vector<double> pass_impulse, pass_gap, pass_normal;
+  std::vector<double> total_impulse, total_gap, total_normal;
+  std::vector<bool> pass_active, pattern;
+  // the ramp's part of the contact quantities of all micro steps (superpose())
+  Vector<double> ramp_impulse, ramp_gap, ramp_normal;
+  // the pass's trapezoidal load weights, load s at micro step j: s m + j - 1
+  std::vector<double> pass_load_weight;
+
+  // With damping (A7) the dissipated energy is bilinear in the explicit
+  // state: its part from the ramp response needs, on the DoFs the ramp
+  // reaches, the ramp's velocities V_{j-1/2} per micro step (|R| x n_G) and
+  // the velocities, S V and damping forces of the first pass
+  // (ramp_dissipation()).
+  std::vector<unsigned int> reach_dofs;
+  /** reach_dofs is every explicit DoF in order (contacts within reach). */
+  bool reach_is_all = false;
+  /** Lumped mass on the reach (kg). */
+  Vector<double> reach_mass;
+  std::vector<Vector<double>> pass_velocity_reach, pass_damping_reach;
+  /** S V_{j-1/2} of the pass on the reach (S = dt M^-1 K, A7), per micro step. */
+  std::vector<Vector<double>> pass_stiffness_reach;
+  /** S V of a micro step on every explicit DoF (reach not all DoFs). */
+  Vector<double> stiffness_velocity_full;
+  /** Reach index of the explicit DoF of each interface pair. */
+  std::vector<unsigned int> interface_reach_index;
+  /** Work vectors of ramp_dissipation(). */
+  mutable Vector<double> dissipation_p, dissipation_p_prev, dissipation_c, dissipation_g,
+      dissipation_q;
+};
+
+// the pass record runs every micro step: inline
+inline void RampSuperposition::record_velocity(const unsigned int j,
+                                               const Vector<double> &velocity)
+{
+  gather_reach(velocity, pass_velocity_reach[j]);
+}
+
+inline double *RampSuperposition::stiffness_velocity_buffer(const unsigned int j)
+{
+  return reach_is_all ? pass_stiffness_reach[j].data() : stiffness_velocity_full.data();
+}
+
+inline void RampSuperposition::record_stiffness_velocity(const unsigned int j)
+{
+  if (!reach_is_all)
+    for (unsigned int r = 0; r < reach_dofs.size(); ++r)
+      pass_stiffness_reach[j][r] = stiffness_velocity_full[reach_dofs[r]];
+}
+
+inline void RampSuperposition::record_load_weights(const unsigned int j,
+                                                   const CDLagrange::CouplingView &view)
+{
+  const unsigned int n_loads = system.time_dependent_loads.size();
+  for (unsigned int s = 0; s < n_loads; ++s)
+    pass_load_weight[s * m + j - 1] = view.load_step_weight(s);
+}
+
+inline void RampSuperposition::record_damping_force(const unsigned int j,
+                                                    const Vector<double> &d)
+{
+  gather_reach(d, pass_damping_reach[j]);
+}
+
+inline void RampSuperposition::record_contacts(const unsigned int j,
+                                               const ContactSample &sample)
+{
+  const unsigned int nrc = reach_contacts.size();
+  for (unsigned int c = 0; c < nrc; ++c)
+  {
+    const unsigned int k = reach_contacts[c];
+    pass_impulse[j * nrc + c] = sample.impulses[k];
+    pass_gap[j * nrc + c] = sample.gaps[k];
+    pass_normal[(j + 1) * nrc + c] = sample.normal_velocities[k];
+  }
+}
+
+inline void RampSuperposition::gather_reach(const Vector<double> &source,
+                                            Vector<double> &reach) const
+{
+  if (reach_is_all)
+    std::copy(source.begin(), source.begin() + reach.size(), reach.begin());
+  else
+    for (unsigned int r = 0; r < reach_dofs.size(); ++r)
+      reach[r] = source[reach_dofs[r]];
+}
+} // namespace hati
+
+#endif

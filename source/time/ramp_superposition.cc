@@ -1,0 +1,498 @@
+#include <deal.II/base/exceptions.h>
+
+#include <hati/time/ramp_superposition.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hati
+{
+namespace
+{
+/** The unit vector e_l of size n. */
+Vector<double> unit_vector(const unsigned int n, const unsigned int l)
+{
+  Vector<double> e(n);
+  e[l] = 1.;
+  return e;
+}
+
+/** The row applied to the integer-time velocity of CD-Lagrange (G2). */
+double integer_velocity(const SparseRow &row, const CDLagrange::CouplingView &integrator)
+{
+  double s = 0.;
+  for (unsigned int i = 0; i < row.dofs.size(); ++i)
+    s += row.coefficients[i] * integrator.integer_velocity(row.dofs[i]);
+  return s;
+}
+} // namespace
+
+RampSuperposition::RampSuperposition(const DiscreteSystem &system,
+                                     const double dt,
+                                     const unsigned int m,
+                                     const RayleighDamping &damping,
+                                     const InterfaceProblem &interface)
+    : system(system), dt(dt), m(m), interface(interface),
+      damped(damping.a0 != 0. || damping.a1 != 0.),
+      // the explicit integrator's own code path, from rest, without loads
+      ramp_integrator(std::make_unique<CDLagrange>(system, dt, 1., damping))
+{
+  compute_ramp({}, open_ramp, false);
+  find_reach();
+  if (contacts_in_reach() || damped)
+    compute_ramp({}, open_ramp, damped);
+  const unsigned int nrc = reach_contacts.size();
+  pass_impulse.resize((m + 1) * nrc);
+  pass_gap.resize((m + 1) * nrc);
+  pass_normal.resize((m + 2) * nrc);
+  pass_active.resize(m * nrc);
+  pattern.resize(nrc);
+}
+
+void RampSuperposition::find_reach()
+{
+  // contacts within reach of the ramp response
+  std::vector<bool> reach(system.n_dofs(), false);
+  for (const auto &columns : open_ramp.state)
+    for (const auto i : columns.rows())
+      reach[i] = true;
+  for (unsigned int c = 0; c < system.contacts.size(); ++c)
+    for (const auto d : system.contacts[c].dofs)
+      if (reach[d])
+      {
+        reach_contacts.push_back(c);
+        break;
+      }
+  if (!damped)
+    return;
+
+  // damped: the ramp's velocities and damping forces on the reach, per step
+  // (every explicit DoF when contacts are within reach: a bilateral contact
+  // carries the response from one body to the other)
+  for (unsigned int i = 0; i < reach.size(); ++i)
+    if (reach[i] || contacts_in_reach())
+      reach_dofs.push_back(i);
+  const unsigned int nR = reach_dofs.size();
+  reach_is_all = nR == system.n_dofs();
+  reach_mass.reinit(nR);
+  for (unsigned int r = 0; r < nR; ++r)
+    reach_mass[r] = system.lumped_mass[reach_dofs[r]];
+  pass_velocity_reach.assign(m + 1, Vector<double>(nR));
+  pass_damping_reach.assign(m + 1, Vector<double>(nR));
+  pass_stiffness_reach.assign(m + 1, Vector<double>(nR));
+  if (!reach_is_all)
+    stiffness_velocity_full.reinit(system.n_dofs());
+  std::vector<int> index(system.n_dofs(), -1);
+  for (unsigned int r = 0; r < nR; ++r)
+    index[reach_dofs[r]] = r;
+  interface_reach_index.clear();
+  for (const unsigned int d : interface.explicit_dofs())
+  {
+    AssertThrow(index[d] >= 0, ExcInternalError());
+    interface_reach_index.push_back(index[d]);
+  }
+  for (auto *v : {&dissipation_p, &dissipation_p_prev, &dissipation_c})
+    v->reinit(nR);
+  dissipation_g.reinit(interface.size());
+  dissipation_q.reinit(interface.size());
+}
+
+void RampSuperposition::compute_ramp(const std::vector<bool> &active_set,
+                                     Response &r,
+                                     const bool with_damping)
+{
+  const std::vector<SparseRow> &rows_E = interface.explicit_rows();
+  const unsigned int n_gamma = rows_E.size(), nrc = reach_contacts.size(),
+                     nR = reach_dofs.size();
+  CDLagrange &integrator = *ramp_integrator;
+  CDLagrange::CouplingView ramp = integrator.coupling_view();
+  const auto &shapes = ramp.applied_load_shapes();
+  const bool with_contacts = !active_set.empty();
+  std::vector<bool> prescribed(system.contacts.size(), false);
+  for (unsigned int c = 0; c < active_set.size(); ++c)
+    prescribed[reach_contacts[c]] = active_set[c];
+  ramp.prescribe_active_set(with_contacts ? &prescribed : nullptr);
+
+  r.state.assign(integrator.linear_state().size(), SparseColumns());
+  FullMatrix<double> increment_sum(n_gamma, n_gamma),
+      increment_weighted(n_gamma, n_gamma);
+  FullMatrix<double> H_E(n_gamma, n_gamma);
+  r.load_work.assign(shapes.size(),
+                     std::vector<Vector<double>>(m, Vector<double>(n_gamma)));
+  // filled as dense per micro step, stored sparse
+  std::vector<FullMatrix<double>> impulse(m + 1, FullMatrix<double>(nrc, n_gamma)),
+      gap(m + 1, FullMatrix<double>(nrc, n_gamma)),
+      normal_velocity(m + 2, FullMatrix<double>(nrc, n_gamma)),
+      velocity_reach(with_damping ? m + 1 : 0, FullMatrix<double>(nR, n_gamma)),
+      damping_reach(with_damping ? m + 1 : 0, FullMatrix<double>(nR, n_gamma));
+  for (unsigned int l = 0; l < n_gamma; ++l)
+  {
+    for (auto *v : integrator.linear_state())
+      *v = 0.;
+    for (const unsigned int c : reach_contacts)
+      ramp.set_contact_state(c, 0., 0.);
+    for (unsigned int j = 1; j <= m; ++j)
+    {
+      const Vector<double> &V = integrator.velocity(); // V_{j-1/2}
+      for (unsigned int s = 0; s < shapes.size(); ++s)
+        r.load_work[s][j - 1][l] = dt * (shapes[s] * V);
+      for (unsigned int k = 0; k < n_gamma; ++k)
+      {
+        const double du = dt * rows_E[k].apply(V);
+        increment_sum(k, l) += du;
+        increment_weighted(k, l) += (2. * j - 1.) / (2. * m) * du;
+      }
+      for (unsigned int c = 0; c < nrc; ++c)
+        normal_velocity[j](c, l) = system.contacts[reach_contacts[c]].apply(V);
+      if (with_damping)
+        for (unsigned int i = 0; i < nR; ++i)
+          velocity_reach[j](i, l) = V[reach_dofs[i]];
+      ramp.predict();
+      ramp.free_velocity(false);
+      ramp.add_force(rows_E[l], double(j) / m); // unit ramp (j/m) e_l
+      if (j == m)
+        for (unsigned int k = 0; k < n_gamma; ++k)
+          H_E(k, l) = integer_velocity(rows_E[k], ramp);
+      ramp.finish_step(with_contacts);
+      for (unsigned int c = 0; c < nrc; ++c)
+      {
+        const auto &row = system.contacts[reach_contacts[c]];
+        impulse[j](c, l) = with_contacts ? integrator.impulses()[reach_contacts[c]] : 0.;
+        gap[j](c, l) = row.apply(integrator.displacement());
+      }
+      if (with_damping)
+      {
+        const Vector<double> &d = ramp.damping_force();
+        for (unsigned int i = 0; i < nR; ++i)
+          damping_reach[j](i, l) = d[reach_dofs[i]];
+      }
+    }
+    for (unsigned int c = 0; c < nrc; ++c)
+      normal_velocity[m + 1](c, l) =
+          system.contacts[reach_contacts[c]].apply(integrator.velocity());
+    const auto state = integrator.linear_state();
+    for (unsigned int s = 0; s < state.size(); ++s)
+      r.state[s].add_column(*state[s]);
+  }
+  ramp.prescribe_active_set(nullptr);
+  // stored sparse with the micro steps stacked, row j nrc + c
+  const auto store = [nrc, n_gamma](const std::vector<FullMatrix<double>> &dense)
+  {
+    FullMatrix<double> stacked(dense.size() * nrc, n_gamma);
+    for (unsigned int j = 0; j < dense.size(); ++j)
+      for (unsigned int c = 0; c < nrc; ++c)
+        for (unsigned int l = 0; l < n_gamma; ++l)
+          stacked(j * nrc + c, l) = dense[j](c, l);
+    return SparseColumns(stacked);
+  };
+  r.impulse = store(impulse);
+  r.gap = store(gap);
+  r.normal_velocity = store(normal_velocity);
+  r.velocity_on_reach.clear();
+  r.dissipation_quadratic = DenseColumns();
+  if (with_damping)
+    store_dissipation(velocity_reach, damping_reach, r);
+  r.increment_sum = SparseColumns(increment_sum);
+  r.increment_weighted = SparseColumns(increment_weighted);
+  r.H_E = SparseColumns(H_E);
+  interface.invert(H_E, r.H_inverse);
+}
+
+void RampSuperposition::store_dissipation(
+    const std::vector<FullMatrix<double>> &velocity_reach,
+    const std::vector<FullMatrix<double>> &damping_reach,
+    Response &r) const
+{
+  const unsigned int n_gamma = interface.size(), nR = reach_dofs.size();
+  // V_j on the reach for j = 1 .. m, then V_{m+1/2} (the final state)
+  r.velocity_on_reach.resize(m + 2);
+  for (unsigned int j = 1; j <= m; ++j)
+    r.velocity_on_reach[j] = SparseColumns(velocity_reach[j]);
+  FullMatrix<double> final_velocity(nR, n_gamma);
+  for (unsigned int l = 0; l < n_gamma; ++l)
+  {
+    Vector<double> column(system.n_dofs());
+    for (unsigned int i = 0; i < system.n_dofs(); ++i)
+      column[i] = 0.;
+    r.state[1].add_multiply(column, unit_vector(n_gamma, l));
+    for (unsigned int i = 0; i < nR; ++i)
+      final_velocity(i, l) = column[reach_dofs[i]];
+  }
+  r.velocity_on_reach[m + 1] = SparseColumns(final_velocity);
+  // Q = sum_j V_j^T M (D_{j-1} + D_j), D_0 = 0 (the ramp starts at rest)
+  r.dissipation_quadratic.reinit(n_gamma, n_gamma);
+  for (unsigned int j = 1; j <= m; ++j)
+    for (unsigned int i = 0; i < nR; ++i)
+      for (unsigned int l = 0; l < n_gamma; ++l)
+      {
+        const double v = velocity_reach[j](i, l);
+        if (v == 0.)
+          continue;
+        for (unsigned int k = 0; k < n_gamma; ++k)
+          r.dissipation_quadratic(l, k) +=
+              reach_mass[i] * v * (damping_reach[j - 1](i, k) + damping_reach[j](i, k));
+      }
+}
+
+const RampSuperposition::Response &
+RampSuperposition::ramp_for(const std::vector<bool> &active_set)
+{
+  if (std::find(active_set.begin(), active_set.end(), true) == active_set.end())
+    return open_ramp;
+  auto it = pattern_ramps.find(active_set);
+  if (it != pattern_ramps.end())
+    return it->second;
+  if (pattern_ramps.size() >= max_cached_patterns)
+    pattern_ramps.clear();
+  ++n_patterns;
+  Response &r = pattern_ramps[active_set];
+  compute_ramp(active_set, r, damped);
+  return r;
+}
+
+const RampSuperposition::Response &
+RampSuperposition::response_for_pass(bool &same_active_set)
+{
+  same_active_set = true;
+  if (!contacts_in_reach())
+    return open_ramp;
+  // the pushing set of every micro step: the contacts with an impulse
+  // above round-off (A5) and the bilateral ones
+  const unsigned int nrc = reach_contacts.size();
+  double impulse_scale = 0.;
+  for (const double l : pass_impulse)
+    impulse_scale = std::max(impulse_scale, std::abs(l));
+  for (unsigned int j = 1; j <= m; ++j)
+    for (unsigned int c = 0; c < nrc; ++c)
+      pass_active[(j - 1) * nrc + c] =
+          system.contacts[reach_contacts[c]].bilateral ||
+          pass_impulse[j * nrc + c] > pushing_impulse_fraction * impulse_scale;
+  for (unsigned int c = 0; c < nrc; ++c)
+    pattern[c] = pass_active[c];
+  for (unsigned int j = 1; j < m && same_active_set; ++j)
+    for (unsigned int c = 0; c < nrc; ++c)
+      if (pass_active[j * nrc + c] != pattern[c])
+      {
+        same_active_set = false;
+        break;
+      }
+  return same_active_set ? ramp_for(pattern) : open_ramp;
+}
+
+void RampSuperposition::start_pass(const CDLagrange &integrator, const bool contacts)
+{
+  pass_load_weight.resize(system.time_dependent_loads.size() * m);
+  // the normal velocities L V_{j-1/2} before each micro step: the first
+  // here, the others from the sample after the step before
+  const unsigned int nrc = reach_contacts.size();
+  if (contacts)
+    for (unsigned int c = 0; c < nrc; ++c)
+    {
+      pass_impulse[c] = integrator.impulses()[reach_contacts[c]];
+      pass_gap[c] = integrator.gaps()[reach_contacts[c]];
+      pass_normal[nrc + c] =
+          system.contacts[reach_contacts[c]].apply(integrator.velocity());
+    }
+}
+
+bool RampSuperposition::superpose(const Response &r,
+                                  const Vector<double> &lambda,
+                                  CDLagrange &integrator,
+                                  InterfaceIncrements &increments,
+                                  std::vector<ContactSample> &samples,
+                                  const unsigned int n_samples)
+{
+  if (contacts_in_reach() &&
+      !superpose_contacts(r, lambda, integrator, samples, n_samples))
+    return false;
+
+  // superposition of the ramp response: the state, the interface
+  // increments and the work of the time-dependent loads
+  CDLagrange::CouplingView view = integrator.coupling_view();
+  const auto state = integrator.linear_state();
+  for (unsigned int s = 0; s < state.size(); ++s)
+    r.state[s].add_multiply(*state[s], lambda);
+  r.increment_sum.add_multiply(increments.increment_sum, lambda);
+  r.increment_weighted.add_multiply(increments.increment_weighted, lambda);
+  r.H_E.add_multiply(increments.v_end, lambda);
+  // with the amplitudes of the pass's micro steps
+  const unsigned int n_gamma = lambda.size();
+  double work = 0.;
+  for (unsigned int s = 0; s < r.load_work.size(); ++s)
+    for (unsigned int j = 1; j <= m; ++j)
+    {
+      const double *const w = r.load_work[s][j - 1].data();
+      double p = 0.;
+      for (unsigned int l = 0; l < n_gamma; ++l)
+        p += w[l] * lambda[l];
+      work += pass_load_weight[s * m + j - 1] * p;
+    }
+  view.add_external_work(work);
+  if (records_damping())
+    view.add_dissipated(ramp_dissipation(r, lambda));
+  return true;
+}
+
+bool RampSuperposition::superpose_contacts(const Response &r,
+                                           const Vector<double> &lambda,
+                                           CDLagrange &integrator,
+                                           std::vector<ContactSample> &samples,
+                                           const unsigned int n_samples)
+{
+  // the contact quantities of pass + ramp, and the check that the active
+  // set of the pass still holds
+  const unsigned int nrc = reach_contacts.size();
+  total_impulse.resize((m + 1) * nrc);
+  total_gap.resize((m + 1) * nrc);
+  total_normal.resize((m + 2) * nrc);
+  // the ramp's part of the impulses, gaps and normal velocities of all
+  // micro steps, one product each
+  for (auto *y : {&ramp_impulse, &ramp_gap})
+    if (y->size() != (m + 1) * nrc)
+      y->reinit((m + 1) * nrc);
+  if (ramp_normal.size() != (m + 2) * nrc)
+    ramp_normal.reinit((m + 2) * nrc);
+  r.impulse.vmult(ramp_impulse, lambda);
+  r.gap.vmult(ramp_gap, lambda);
+  r.normal_velocity.vmult(ramp_normal, lambda);
+  double scale = 0.;
+  for (unsigned int c = 0; c < nrc; ++c)
+  {
+    total_impulse[c] = pass_impulse[c];
+    total_gap[c] = pass_gap[c];
+  }
+  for (unsigned int i = nrc; i < (m + 1) * nrc; ++i)
+  {
+    total_impulse[i] = pass_impulse[i] + ramp_impulse[i];
+    scale = std::max({scale, std::abs(pass_impulse[i]), std::abs(ramp_impulse[i])});
+    total_gap[i] = pass_gap[i] + ramp_gap[i];
+  }
+  for (unsigned int i = nrc; i < (m + 2) * nrc; ++i)
+    total_normal[i] = pass_normal[i] + ramp_normal[i];
+  // the LCP (A5) of every micro step keeps the pushing set of the pass:
+  // impulses >= 0 on it; elsewhere the contact is open (gap > 0) or its
+  // velocity after the step satisfies the law without impulse, w >= 0
+  double velocity_scale = 0.;
+  for (const double v : total_normal)
+    velocity_scale = std::max(velocity_scale, std::abs(v));
+  const double impulse_tolerance = lcp_check_tolerance * scale,
+               velocity_tolerance =
+                   lcp_check_tolerance * velocity_scale + velocity_tolerance_floor;
+  for (unsigned int j = 1; j <= m; ++j)
+    for (unsigned int c = 0; c < nrc; ++c)
+    {
+      const unsigned int i = j * nrc + c;
+      if (pass_active[(j - 1) * nrc + c])
+      {
+        if (!system.contacts[reach_contacts[c]].bilateral &&
+            total_impulse[i] < -impulse_tolerance)
+          return false;
+      }
+      else if (total_gap[i] <= 0.)
+      {
+        const double e = system.contacts[reach_contacts[c]].restitution,
+                     w = total_normal[i + nrc] + e * total_normal[i];
+        if (w < -velocity_tolerance)
+          return false;
+      }
+    }
+
+  // contact work of the total, sum_j 1/2 (L V_{j-1/2}) (lambda_{j-1} +
+  // lambda_j), minus what the pass booked
+  double work = 0.;
+  for (unsigned int j = 1; j <= m; ++j)
+    for (unsigned int c = 0; c < nrc; ++c)
+    {
+      const unsigned int i = j * nrc + c, h = (j - 1) * nrc + c;
+      work += 0.5 * (total_normal[i] * (total_impulse[h] + total_impulse[i]) -
+                     pass_normal[i] * (pass_impulse[h] + pass_impulse[i]));
+    }
+  CDLagrange::CouplingView view = integrator.coupling_view();
+  view.add_contact_work(work);
+  for (unsigned int c = 0; c < nrc; ++c)
+    view.set_contact_state(
+        reach_contacts[c], total_gap[m * nrc + c], total_impulse[m * nrc + c]);
+  for (unsigned int j = 1; j <= m && j <= n_samples; ++j)
+  {
+    ContactSample &s = samples[j - 1];
+    for (unsigned int c = 0; c < nrc; ++c)
+    {
+      const unsigned int k = reach_contacts[c];
+      s.gaps[k] = total_gap[j * nrc + c];
+      s.impulses[k] = total_impulse[j * nrc + c];
+      s.normal_velocities[k] = total_normal[(j + 1) * nrc + c];
+    }
+  }
+  return true;
+}
+
+double RampSuperposition::ramp_dissipation(const Response &ramp,
+                                           const Vector<double> &lambda) const
+{
+  // With a = V_r Lambda (the ramp's velocities V_{j-1/2}) the ramp's damping
+  // force is d_r,j = alpha (a_j + a_{j+1} - f_j) + a1 S a_j (A7, alpha =
+  // a0 dt / 2, f_j: the velocity jumps of its interface ramp and contact
+  // impulses, M f_j = dt (j/m) C_E^T Lambda + L^T lambda_j), and K is
+  // symmetric, so the part of the pass and the ramp
+  //   1/2 sum_j [v_a,j . M (d_r,j-1 + d_r,j) + a_j . M (D_a,j + d_r,j-1 + d_r,j)]
+  // is 1/2 [sum_{j=1}^{m+1} c_j . a_j - alpha sum_j p_j . M f_j + Lambda^T Q
+  // Lambda] with p_j = v_a,j + v_a,j+1 (p_m = v_a,m), D_a,j = d_a,j-1 +
+  // d_a,j, c_j = alpha M (p_j + p_{j-1}) + a1 M S p_j + M D_a,j (p_0 = 0),
+  // c_{m+1} = alpha M p_m: one pass over the ramp's velocities only
+  const unsigned int nR = reach_dofs.size(), n_gamma = interface.size();
+  const double alpha = 0.5 * ramp_integrator->mass_damping_coefficient() * dt,
+               a1 = ramp_integrator->stiffness_damping_coefficient();
+  const double *__restrict const mass = reach_mass.data();
+  double *__restrict const cj = dissipation_c.data();
+  dissipation_p_prev = 0.;
+  dissipation_g = 0.;
+  double impulse_term = 0.;
+  const unsigned int nrc = reach_contacts.size();
+  // the contacts' impulses of the ramp part, computed by superpose_contacts()
+  const bool with_impulses = contacts_in_reach() && ramp_impulse.size() == (m + 1) * nrc;
+  const auto &contacts = system.contacts;
+  for (unsigned int j = 1; j <= m; ++j)
+  {
+    const double *__restrict const v0 = pass_velocity_reach[j].data(),
+                                   *__restrict const k0 = pass_stiffness_reach[j].data(),
+                                   *__restrict const d0 =
+                                       pass_damping_reach[j - 1].data(),
+                                   *__restrict const d1 = pass_damping_reach[j].data();
+    const double *__restrict const v1 =
+        j < m ? pass_velocity_reach[j + 1].data() : nullptr,
+                                   *__restrict const k1 =
+                                       j < m ? pass_stiffness_reach[j + 1].data()
+                                             : nullptr;
+    double *__restrict const p = dissipation_p.data();
+    const double *__restrict const p_prev = dissipation_p_prev.data();
+    for (unsigned int r = 0; r < nR; ++r)
+    {
+      const double pr = v0[r] + (v1 ? v1[r] : 0.);
+      const double spr = k0[r] + (k1 ? k1[r] : 0.);
+      cj[r] = mass[r] * (alpha * (pr + p_prev[r]) + a1 * spr + d0[r] + d1[r]);
+      p[r] = pr;
+    }
+    ramp.velocity_on_reach[j].Tvmult_add(dissipation_g, cj);
+    // the interface ramp's and the contacts' velocity jumps in the ramp's
+    // free velocity
+    const double s = dt * double(j) / m;
+    for (unsigned int l = 0; l < n_gamma; ++l)
+      impulse_term += p[interface_reach_index[l]] * s * lambda[l];
+    if (with_impulses)
+      for (unsigned int c = 0; c < nrc; ++c)
+      {
+        const double impulse = ramp_impulse[j * nrc + c];
+        if (impulse != 0.)
+          impulse_term += contacts[reach_contacts[c]].apply(dissipation_p) * impulse;
+      }
+    dissipation_p_prev.swap(dissipation_p);
+  }
+  // c_{m+1} = alpha M p_m (p_m is now in dissipation_p_prev)
+  for (unsigned int r = 0; r < nR; ++r)
+    cj[r] = mass[r] * alpha * dissipation_p_prev[r];
+  ramp.velocity_on_reach[m + 1].Tvmult_add(dissipation_g, cj);
+  ramp.dissipation_quadratic.vmult(dissipation_q, lambda); // Q Lambda
+  return 0.5 * (dissipation_g * lambda - alpha * impulse_term + lambda * dissipation_q);
+}
+
+} // namespace hati
