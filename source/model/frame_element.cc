@@ -192,19 +192,35 @@ frame_bending_shape_functions(const double xi, const double L, const double Phi)
   return N;
 }
 
-FullMatrix<double> local_stiffness(const double L,
-                                   const FrameSection &section,
-                                   const FrameMaterial &material)
+namespace
+{
+/**
+ * The shear parameters `Phi_y`, `Phi_z` of the xy and xz planes of an
+ * element (shear_parameter()), after checking its length, section and
+ * elastic constants.
+ */
+std::array<double, 2> checked_shear_parameters(const double L,
+                                               const FrameSection &section,
+                                               const FrameMaterial &material)
 {
   check_length(L);
   check_section(section);
   check_elastic(material);
   const double E = material.E, G = material.G;
+  return {{shear_parameter(E, section.Iz, G, section.shear_area_y, L),
+           shear_parameter(E, section.Iy, G, section.shear_area_z, L)}};
+}
+} // namespace
+
+FullMatrix<double> local_stiffness(const double L,
+                                   const FrameSection &section,
+                                   const FrameMaterial &material)
+{
+  const auto [Phi_y, Phi_z] = checked_shear_parameters(L, section, material);
+  const double E = material.E, G = material.G;
   FullMatrix<double> k(12, 12);
   add_two_node(k, 0, 6, E * section.A / L, false);
   add_two_node(k, 3, 9, G * section.J / L, false);
-  const double Phi_y = shear_parameter(E, section.Iz, G, section.shear_area_y, L);
-  const double Phi_z = shear_parameter(E, section.Iy, G, section.shear_area_z, L);
   add_plane(k, plane_stiffness(E * section.Iz, Phi_y, L), xy_plane_dofs, xy_plane_signs);
   add_plane(k, plane_stiffness(E * section.Iy, Phi_z, L), xz_plane_dofs, xz_plane_signs);
   return k;
@@ -214,16 +230,12 @@ FullMatrix<double> local_consistent_mass(const double L,
                                          const FrameSection &section,
                                          const FrameMaterial &material)
 {
-  check_length(L);
-  check_section(section);
-  check_elastic(material);
+  const auto [Phi_y, Phi_z] = checked_shear_parameters(L, section, material);
   check_density(material);
-  const double rho = material.rho, E = material.E, G = material.G;
+  const double rho = material.rho;
   FullMatrix<double> m(12, 12);
   add_two_node(m, 0, 6, rho * section.A * L / 6., true);
   add_two_node(m, 3, 9, rho * (section.Iy + section.Iz) * L / 6., true);
-  const double Phi_y = shear_parameter(E, section.Iz, G, section.shear_area_y, L);
-  const double Phi_z = shear_parameter(E, section.Iy, G, section.shear_area_z, L);
   add_plane(m,
             plane_mass(rho * section.A, rho * section.Iz, Phi_y, L),
             xy_plane_dofs,

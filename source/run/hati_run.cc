@@ -49,7 +49,8 @@ void run_hati(Problem &problem, RunDirectory &directory)
   const std::unique_ptr<HATICoupling> coupling = make_coupling(problem);
   timer.leave_subsection();
   const auto &parts = problem.decomposition->parts;
-  std::cout << "  HATI (G3'): explicit subdomain " << parts[0].system.n_dofs()
+  std::cout << "  HATI (" << problem.hati_parameters.coupling_method
+            << ", G3'): explicit subdomain " << parts[0].system.n_dofs()
             << " DoFs (CD-Lagrange, dt = " << coupling->micro_time_step()
             << " s, dt_crit = " << coupling->critical_time_step()
             << " s), implicit subdomain " << parts[1].system.n_dofs()
@@ -60,6 +61,8 @@ void run_hati(Problem &problem, RunDirectory &directory)
                 problem,
                 directory,
                 timer,
-                {{"method", "HATI"}, {"dt_crit", coupling->critical_time_step()}});
+                {{"method", "HATI"},
+                 {"coupling_method", problem.hati_parameters.coupling_method},
+                 {"dt_crit", coupling->critical_time_step()}});
 }
 } // namespace hati

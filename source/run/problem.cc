@@ -6,6 +6,7 @@
 #include <hati/loading/base_excitation.h>
 #include <hati/run/analysis_registry.h>
 #include <hati/run/problem.h>
+#include <hati/time/damping.h>
 
 #include <algorithm>
 #include <iomanip>
@@ -24,7 +25,7 @@ void Problem::declare_parameters(ParameterHandler &prm)
   NewmarkParameters::declare_parameters(prm);
   prm.leave_subsection();
   prm.enter_subsection("Damping");
-  RayleighDamping::declare_parameters(prm);
+  declare_damping_parameters(prm);
   prm.leave_subsection();
   prm.enter_subsection("HATI");
   HATIParameters::declare_parameters(prm);
@@ -42,7 +43,7 @@ Problem::Problem(ParameterHandler &prm, const ConditionalOStream &out) : out(out
   newmark_parameters.parse_parameters(prm);
   prm.leave_subsection();
   prm.enter_subsection("Damping");
-  damping.parse_parameters(prm);
+  damping = parse_damping_parameters(prm);
   prm.leave_subsection();
   prm.enter_subsection("HATI");
   hati_parameters.parse_parameters(prm);

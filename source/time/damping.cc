@@ -1,0 +1,40 @@
+#include <hati/time/damping.h>
+
+namespace hati
+{
+const Registry<DampingFactory> &damping_registry()
+{
+  static const Registry<DampingFactory> registry = []
+  {
+    Registry<DampingFactory> r("Time integration/Damping/Type");
+    r.add({"Rayleigh",
+           "Rayleigh: C = a0 M + a1 K in CD-Lagrange (A7) and Newmark, from the "
+           "coefficients or from a damping ratio at two frequencies",
+           RayleighDamping::declare_parameters,
+           [](dealii::ParameterHandler &prm)
+           {
+             RayleighDamping damping;
+             damping.parse_parameters(prm);
+             return damping;
+           }});
+    return r;
+  }();
+  return registry;
+}
+
+void declare_damping_parameters(dealii::ParameterHandler &prm)
+{
+  const auto &models = damping_registry();
+  prm.declare_entry("Type",
+                    "Rayleigh",
+                    dealii::Patterns::Selection(models.selection()),
+                    "Damping model of a transient run: " + models.join("; ", "; ", true) +
+                        ". Static and modal analyses ignore damping.");
+  models.declare_parameters(prm);
+}
+
+RayleighDamping parse_damping_parameters(dealii::ParameterHandler &prm)
+{
+  return damping_registry().get(prm.get("Type")).create(prm);
+}
+} // namespace hati
