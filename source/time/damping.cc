@@ -4,21 +4,18 @@ namespace hati
 {
 const Registry<DampingFactory> &damping_registry()
 {
-  static const Registry<DampingFactory> registry = []
-  {
-    Registry<DampingFactory> r("Time integration/Damping/Type");
-    r.add({"Rayleigh",
-           "Rayleigh: C = a0 M + a1 K in CD-Lagrange (A7) and Newmark, from the "
-           "coefficients or from a damping ratio at two frequencies",
-           RayleighDamping::declare_parameters,
-           [](dealii::ParameterHandler &prm)
-           {
-             RayleighDamping damping;
-             damping.parse_parameters(prm);
-             return damping;
-           }});
-    return r;
-  }();
+  static const Registry<DampingFactory> registry(
+      "Time integration/Damping/Type",
+      {{"Rayleigh",
+        "Rayleigh: C = a0 M + a1 K in CD-Lagrange (A7) and Newmark, from the "
+        "coefficients or from a damping ratio at two frequencies",
+        RayleighDamping::declare_parameters,
+        [](dealii::ParameterHandler &prm)
+        {
+          RayleighDamping damping;
+          damping.parse_parameters(prm);
+          return damping;
+        }}});
   return registry;
 }
 

@@ -36,8 +36,16 @@ public:
     Factory create;
   };
 
-  /** @p parameter: the selecting parameter (`Model/Type`), for messages. */
-  explicit Registry(std::string parameter) : parameter(std::move(parameter)) {}
+  /**
+   * @p parameter: the selecting parameter (`Model/Type`), for messages;
+   * @p entries: the implementations, in the order of the documentation.
+   */
+  explicit Registry(std::string parameter, std::vector<Entry> entries = {})
+      : parameter(std::move(parameter))
+  {
+    for (Entry &e : entries)
+      add(std::move(e));
+  }
 
   /** Register @p entry; a second entry of the same name is a programming error. */
   void add(Entry entry)

@@ -17,7 +17,7 @@ namespace hati
  * A result computed from the states of a transient run at its history rows
  * (peaks, envelopes, spectra): it sees each row's OutputState and, at the
  * end, adds its summary.json entries and its lines of the terminal summary.
- * Registered in source/output/postprocessor_registry.cc; every registered
+ * Registered in source/output/postprocessor.cc; every registered
  * post-processor that applies to the model (its factory returns one) runs.
  */
 class Postprocessor

@@ -9,8 +9,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <iomanip>
-#include <iostream>
 #include <sstream>
 
 namespace hati
@@ -57,42 +55,16 @@ OutputState contact_state(const Integrator &integrator, const double impulse_dur
 class Progress
 {
 public:
-  Progress(const double interval, const double end_time)
-      : interval(interval), end_time(end_time), start(std::chrono::steady_clock::now()),
-        last(start)
-  {
-  }
+  Progress(const double interval, const double end_time);
 
   /** Whether a progress line is due (and, if so, the next one counts from now). */
-  bool due()
-  {
-    const auto now = std::chrono::steady_clock::now();
-    if (std::chrono::duration<double>(now - last).count() < interval)
-      return false;
-    last = now;
-    return true;
-  }
+  bool due();
 
   /** Print the simulated time @p t (s), its fraction, the step and the remaining time. */
-  void print(const double t, const unsigned long step) const
-  {
-    const double wall = wall_time();
-    const double fraction = t / end_time;
-    const auto precision = std::cout.precision();
-    std::cout << "  t = " << std::setw(12) << std::setprecision(6) << t << " s ("
-              << std::setw(5) << std::fixed << std::setprecision(1) << 100. * fraction
-              << " %), step " << step << ", wall " << std::setprecision(1) << wall
-              << " s, remaining ~"
-              << (fraction > 0. ? wall * (1. - fraction) / fraction : 0.) << " s"
-              << std::defaultfloat << std::setprecision(precision) << std::endl;
-  }
+  void print(const double t, const unsigned long step) const;
 
   /** Wall time since the construction (s). */
-  double wall_time() const
-  {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-        .count();
-  }
+  double wall_time() const;
 
 private:
   const double interval, end_time;
