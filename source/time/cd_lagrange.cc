@@ -398,50 +398,35 @@ void CDLagrange::free_velocity(const bool with_loads)
         KernelWidths());
 }
 
-template <unsigned int L>
-void CDLagrange::load_pass(const unsigned int n, double *__restrict a)
+template <unsigned int L, bool Accumulate>
+void CDLagrange::load_pass(const unsigned int n,
+                           double *__restrict a,
+                           const unsigned int first)
 {
-  // L loads known at compile time (0: any number): the amplitudes,
-  // velocities and shapes in registers
-  const unsigned int n_loads = L > 0 ? L : load_amplitude.size();
-  constexpr unsigned int N = L > 0 ? L : 1;
-  if (L == 0)
+  // L loads known at compile time: the amplitudes, velocities and shapes in
+  // registers
+  double s[L], w[L];
+  const double *__restrict g[L], *__restrict shape[L];
+  for (unsigned int l = 0; l < L; ++l)
   {
-    const double *const f = dt_minv_force.data(), *const v = V->data();
-    for (unsigned int i = 0; i < n; ++i)
-    {
-      double ai = f[i];
-      for (unsigned int l = 0; l < n_loads; ++l)
-      {
-        ai += load_amplitude[l] * load_force_data[l][i];
-        load_velocity[l] += load_shape_data[l][i] * v[i];
-      }
-      a[i] = ai;
-    }
-    return;
-  }
-  double s[N], w[N];
-  const double *__restrict g[N], *__restrict shape[N];
-  for (unsigned int l = 0; l < N; ++l)
-  {
-    s[l] = load_amplitude[l];
+    s[l] = load_amplitude[first + l];
     w[l] = 0.;
-    g[l] = load_force_data[l];
-    shape[l] = load_shape_data[l];
+    g[l] = load_force_data[first + l];
+    shape[l] = load_shape_data[first + l];
   }
   const double *__restrict f = dt_minv_force.data(), *__restrict v = V->data();
   for (unsigned int i = 0; i < n; ++i)
   {
-    double ai = f[i];
-    for (unsigned int l = 0; l < N; ++l)
+    double ai = Accumulate ? a[i] : f[i];
+    for (unsigned int l = 0; l < L; ++l)
     {
       ai += s[l] * g[l][i];
       w[l] += shape[l][i] * v[i];
     }
     a[i] = ai;
   }
-  for (unsigned int l = 0; l < N; ++l)
-    load_velocity[l] = w[l];
+  for (unsigned int l = 0; l < L; ++l)
+    load_velocity[first + l] = w[l];
 }
 
 const double *CDLagrange::load_step_force()
@@ -473,19 +458,19 @@ const double *CDLagrange::load_step_force()
   if (step_force.size() != n)
     step_force.reinit(n);
   double *const a = step_force.data();
-  switch (n_loads)
+  unsigned int first = 0;
+  for (; n_loads - first > 3; first += 3)
+    first == 0 ? load_pass<3, false>(n, a, first) : load_pass<3, true>(n, a, first);
+  switch (n_loads - first)
   {
   case 1:
-    load_pass<1>(n, a);
+    first == 0 ? load_pass<1, false>(n, a, first) : load_pass<1, true>(n, a, first);
     break;
   case 2:
-    load_pass<2>(n, a);
+    first == 0 ? load_pass<2, false>(n, a, first) : load_pass<2, true>(n, a, first);
     break;
   case 3:
-    load_pass<3>(n, a);
-    break;
-  default:
-    load_pass<0>(n, a);
+    first == 0 ? load_pass<3, false>(n, a, first) : load_pass<3, true>(n, a, first);
   }
   for (unsigned int l = 0; l < n_loads; ++l)
     time_dependent_work +=

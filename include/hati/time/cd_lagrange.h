@@ -157,8 +157,14 @@ private:
    * that also books their work on the step (A2-A3); returns step_force.
    */
   const double *load_step_force();
-  /** The pass of load_step_force() for @p L loads (0: any number). */
-  template <unsigned int L> void load_pass(const unsigned int n, double *a);
+  /**
+   * The pass of load_step_force() for the @p L loads from @p first on,
+   * starting from `dt M^-1 F_constant` or, with @p Accumulate, from @p a
+   * (the loads before them): more than three loads go in groups of three,
+   * each load added in the same order as in one pass.
+   */
+  template <unsigned int L, bool Accumulate>
+  void load_pass(const unsigned int n, double *a, const unsigned int first);
 
   const DiscreteSystem &system;
   const double dt;
