@@ -309,22 +309,36 @@ FullMatrix<double> to_global(const FullMatrix<double> &local, const Tensor<2, 3>
   return global;
 }
 
+namespace
+{
+/**
+ * `T^T x` (@p to_global: local to global axes) or `T x` (global to local)
+ * for the 12 end values @p x of an element, T = transformation(R).
+ */
+Vector<double>
+rotate(const Vector<double> &x, const Tensor<2, 3> &R, const bool to_global)
+{
+  AssertThrow(x.size() == 12,
+              ExcMessage(std::string(to_global ? "to_global: the local"
+                                               : "to_local: the global") +
+                         " vector must have 12 entries."));
+  Vector<double> y(12);
+  if (to_global)
+    transformation(R).Tvmult(y, x);
+  else
+    transformation(R).vmult(y, x);
+  return y;
+}
+} // namespace
+
 Vector<double> to_global(const Vector<double> &local12, const Tensor<2, 3> &R)
 {
-  AssertThrow(local12.size() == 12,
-              ExcMessage("to_global: the local vector must have 12 entries."));
-  Vector<double> global(12);
-  transformation(R).Tvmult(global, local12);
-  return global;
+  return rotate(local12, R, true);
 }
 
 Vector<double> to_local(const Vector<double> &global12, const Tensor<2, 3> &R)
 {
-  AssertThrow(global12.size() == 12,
-              ExcMessage("to_local: the global vector must have 12 entries."));
-  Vector<double> local(12);
-  transformation(R).vmult(local, global12);
-  return local;
+  return rotate(global12, R, false);
 }
 
 std::array<double, 12> section_forces(const Vector<double> &local_end_forces)

@@ -6,7 +6,7 @@
 
 namespace hati
 {
-void PointMass::Parameters::declare_parameters(ParameterHandler &prm)
+void PointMassParameters::declare_parameters(ParameterHandler &prm)
 {
   prm.declare_entry("Mass", "1", Patterns::Double(0.), "Mass of the ball (kg), > 0.");
   prm.declare_entry("Initial height",
@@ -19,7 +19,7 @@ void PointMass::Parameters::declare_parameters(ParameterHandler &prm)
                     "Vertical velocity v0 at t = 0 (m/s), positive upwards.");
 }
 
-void PointMass::Parameters::parse_parameters(ParameterHandler &prm)
+void PointMassParameters::parse_parameters(ParameterHandler &prm)
 {
   mass = prm.get_double("Mass");
   AssertThrow(mass > 0., ExcMessage("Model/Point mass/Mass must be > 0 (kg)."));

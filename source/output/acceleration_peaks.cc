@@ -5,12 +5,18 @@
 
 namespace hati
 {
-std::unique_ptr<Postprocessor>
-AccelerationPeaks::create(const PostprocessorInputs &inputs)
+Registry<PostprocessorFactory>::Entry AccelerationPeaks::registration()
 {
-  if (inputs.system.monitors.empty())
-    return nullptr;
-  return std::make_unique<AccelerationPeaks>(inputs);
+  return {
+      "absolute accelerations",
+      "largest absolute acceleration of every monitor point (max_absolute_acceleration)",
+      {},
+      [](const PostprocessorInputs &inputs) -> std::unique_ptr<Postprocessor>
+      {
+        if (inputs.system.monitors.empty())
+          return nullptr;
+        return std::make_unique<AccelerationPeaks>(inputs);
+      }};
 }
 
 AccelerationPeaks::AccelerationPeaks(const PostprocessorInputs &inputs)

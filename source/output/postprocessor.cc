@@ -5,14 +5,9 @@ namespace hati
 {
 const Registry<PostprocessorFactory> &postprocessor_registry()
 {
-  // one entry per post-processor: name, documentation, parameters, factory
+  // one line per post-processor; each class gives its own entry
   static const Registry<PostprocessorFactory> registry(
-      "post-processor",
-      {{"absolute accelerations",
-        "largest absolute acceleration of every monitor point "
-        "(max_absolute_acceleration)",
-        {},
-        AccelerationPeaks::create}});
+      "post-processor", {AccelerationPeaks::registration()});
   return registry;
 }
 } // namespace hati

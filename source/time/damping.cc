@@ -2,20 +2,27 @@
 
 namespace hati
 {
+namespace
+{
+/** Rayleigh damping: RayleighDamping read from its entries. */
+RayleighDamping read_rayleigh_damping(dealii::ParameterHandler &prm)
+{
+  RayleighDamping damping;
+  damping.parse_parameters(prm);
+  return damping;
+}
+} // namespace
+
 const Registry<DampingFactory> &damping_registry()
 {
+  // one entry per damping model: name, documentation, parameters, reader
   static const Registry<DampingFactory> registry(
       "Time integration/Damping/Type",
       {{"Rayleigh",
         "Rayleigh: C = a0 M + a1 K in CD-Lagrange (A7) and Newmark, from the "
         "coefficients or from a damping ratio at two frequencies",
         RayleighDamping::declare_parameters,
-        [](dealii::ParameterHandler &prm)
-        {
-          RayleighDamping damping;
-          damping.parse_parameters(prm);
-          return damping;
-        }}});
+        read_rayleigh_damping}});
   return registry;
 }
 

@@ -29,12 +29,8 @@ using namespace dealii;
  */
 struct FrameSection
 {
-  double A = 0.;
-  double Iy = 0.;
-  double Iz = 0.;
-  double J = 0.;
-  double shear_area_y = 0.;
-  double shear_area_z = 0.;
+  double A = 0., Iy = 0., Iz = 0., J = 0.;
+  double shear_area_y = 0., shear_area_z = 0.;
 
   /**
    * Solid rectangle, width `b` along local y and height `h` along local z:

@@ -5,22 +5,27 @@
 
 namespace hati
 {
+/** The `Model/Point mass` subsection: the ball's mass and initial state. */
+struct PointMassParameters
+{
+  double mass = 1.;             ///< kg
+  double initial_height = 1.;   ///< m, above the ground
+  double initial_velocity = 0.; ///< m/s, vertical, positive upwards
+
+  /** Declare the entries (the caller enters the subsection). */
+  static void declare_parameters(ParameterHandler &prm);
+  void parse_parameters(ParameterHandler &prm);
+};
+
 /**
  * A rigid point mass with three translational DoFs above a rigid ground
- * plane z = 0 (the bouncing ball, algorithms.md 6.1). The contact row is
+ * plane z = 0 (the bouncing ball, doc/theory.md). The contact row is
  * `L = [0 0 1]`, the gap `g = z0 + u_z`. Monitor point `ball`.
  */
 class PointMass : public Model
 {
 public:
-  struct Parameters
-  {
-    static void declare_parameters(ParameterHandler &prm);
-    void parse_parameters(ParameterHandler &prm);
-    double mass = 1.;             ///< kg
-    double initial_height = 1.;   ///< m, above the ground
-    double initial_velocity = 0.; ///< m/s, vertical, positive upwards
-  };
+  using Parameters = PointMassParameters;
 
   explicit PointMass(const Parameters &parameters);
   void build(const CommonModelParameters &common, DiscreteSystem &system) override;

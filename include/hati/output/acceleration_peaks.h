@@ -17,8 +17,11 @@ namespace hati
 class AccelerationPeaks : public Postprocessor
 {
 public:
-  /** None for a system without monitor points. */
-  static std::unique_ptr<Postprocessor> create(const PostprocessorInputs &inputs);
+  /**
+   * Its entry of postprocessor_registry(), `absolute accelerations`: none
+   * for a system without monitor points.
+   */
+  static Registry<PostprocessorFactory>::Entry registration();
 
   explicit AccelerationPeaks(const PostprocessorInputs &inputs);
   void history_row(const OutputState &s) override;
