@@ -61,9 +61,21 @@ def read_csv(path):
     return np.atleast_1d(np.genfromtxt(path, delimiter=",", names=True, dtype=None, encoding=None))
 
 
+TIMING_KEYS = ("wall_time", "stepping_wall_time", "ns_per_dof_per_step", "factorization_time",
+               "wall_time_explicit", "wall_time_implicit", "wall_time_interface",
+               "wall_time_setup")
+
+
 def read_summary(out):
+    """summary.json of the run in `out`; every timing entry must be >= 0
+    (issue #19: wall-time figures from one monotonic clock)."""
     with open(os.path.join(out, "summary.json")) as f:
-        return json.load(f)
+        s = json.load(f)
+    for key in TIMING_KEYS:
+        value = s.get(key)
+        if isinstance(value, (int, float)) and not value >= 0:
+            raise SystemExit("FAIL %s/summary.json: %s = %r is negative" % (out, key, value))
+    return s
 
 
 def contact_phases(contacts):
