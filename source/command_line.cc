@@ -31,6 +31,11 @@ void apply_override(ParameterHandler &prm, const std::string &assignment)
     start = slash + 1;
   }
   const std::string entry = Utilities::trim(path.substr(start));
+  constexpr unsigned int max_depth = 64;
+  AssertThrow(parts.size() <= max_depth,
+              ExcMessage("--set '" + assignment.substr(0, 60) + "...': " +
+                         std::to_string(parts.size()) + " subsection levels, at most " +
+                         std::to_string(max_depth) + " (see hati --print-parameters)"));
 
   for (const auto &p : parts)
     prm.enter_subsection(p);

@@ -175,9 +175,34 @@ void sync_file(const std::string &filename)
   sync_directory_of(filename);
 }
 
+void check_output_directory(const std::string &path)
+{
+  std::error_code ec;
+  // the folder as it would be reached (symbolic links and .. resolved as far
+  // as the path exists)
+  const std::filesystem::path folder =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
+  const std::string where =
+      "Output/Output directory = '" + path + "' (" + folder.string() + "): ";
+  AssertThrow(!ec && !folder.empty(),
+              ExcMessage(where + "cannot be resolved: " + ec.message()));
+  AssertThrow(folder != folder.root_path(),
+              ExcMessage(where + "the root folder; give a folder of your own"));
+  const std::string top = (*std::next(folder.begin())).string(); // after "/"
+  const bool system_tree = top == "etc" || top == "usr" || top == "bin" ||
+                           top == "sbin" || top == "boot" || top == "dev" ||
+                           top == "proc" || top == "sys" || top.rfind("lib", 0) == 0;
+  const bool system_folder = folder == folder.root_path() / "var";
+  AssertThrow(!system_tree && !system_folder,
+              ExcMessage(where + "a system folder (/etc, /usr, /bin, /sbin, /boot, /dev, "
+                                 "/proc, /sys, /lib*, or /var itself); give a folder of "
+                                 "your own"));
+}
+
 RunDirectory::RunDirectory(const std::string &path, const std::string &parameters)
     : dir(path), parameters(parameters)
 {
+  check_output_directory(path);
 }
 
 RunDirectory::~RunDirectory()

@@ -29,7 +29,7 @@ class RunDirectory
 public:
   /**
    * @p path: the directory; @p parameters: the text of `parameters.prm`.
-   * Touches nothing.
+   * Touches nothing; refuses a system folder (check_output_directory()).
    */
   RunDirectory(const std::string &path, const std::string &parameters);
   /** Releases the lock. */
@@ -62,6 +62,15 @@ private:
   int manifest_fd = -1;
   std::set<std::string> registered;
 };
+
+/**
+ * Refuse (one-line message naming `Output/Output directory`) an output
+ * folder that is the root folder, lies in /etc, /usr, /bin, /sbin, /boot,
+ * /dev, /proc, /sys or /lib*, or is /var itself (symbolic links resolved as
+ * far as the path exists): hati usually runs as root here, and a run
+ * writes about ten files into its folder.
+ */
+void check_output_directory(const std::string &path);
 
 /**
  * Replace @p filename by a file holding @p content atomically: the content
