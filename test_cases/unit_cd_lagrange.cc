@@ -20,6 +20,7 @@
 
 #include "test_tools.h"
 
+#include <hati/base/mpi_environment.h>
 #include <hati/model/discrete_system.h>
 #include <hati/time/cd_lagrange.h>
 #include <hati/time/rayleigh_damping.h>
@@ -535,6 +536,7 @@ void test_state()
 
 int main(int argc, char **argv)
 {
+  const hati::MpiEnvironment mpi_environment; // own Open MPI session folder
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
   {

@@ -28,6 +28,7 @@
 
 #include "test_tools.h"
 
+#include <hati/base/mpi_environment.h>
 #include <hati/loading/base_excitation.h>
 #include <hati/model/discrete_system.h>
 #include <hati/time/cd_lagrange.h>
@@ -358,6 +359,7 @@ void test_chain_contact()
 
 int main(int argc, char **argv)
 {
+  const hati::MpiEnvironment mpi_environment; // own Open MPI session folder
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
   {

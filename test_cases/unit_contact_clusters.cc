@@ -33,6 +33,7 @@
 
 #include "test_tools.h"
 
+#include <hati/base/mpi_environment.h>
 #include <hati/model/discrete_system.h>
 #include <hati/time/cd_lagrange.h>
 
@@ -392,6 +393,7 @@ void test_line()
 
 int main(int argc, char **argv)
 {
+  const hati::MpiEnvironment mpi_environment; // own Open MPI session folder
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
   {

@@ -14,6 +14,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <hati/base/mpi_environment.h>
 #include <hati/model/decomposition.h>
 #include <hati/model/model.h>
 #include <hati/run/problem.h>
@@ -90,6 +91,7 @@ double spectral_radius(HATICoupling &coupling, double &smallest)
 
 int main(int argc, char **argv)
 {
+  const hati::MpiEnvironment mpi_environment; // own Open MPI session folder
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   unsigned int failures = 0;
   for (const std::string masses : {"", "A1: 500; B1: 500; C1: 500; D1: 500"})

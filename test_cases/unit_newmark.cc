@@ -19,6 +19,7 @@
 
 #include <hati/analysis/modal_analysis.h>
 #include <hati/analysis/static_analysis.h>
+#include <hati/base/mpi_environment.h>
 #include <hati/model/discrete_system.h>
 #include <hati/time/newmark.h>
 #include <hati/time/rayleigh_damping.h>
@@ -603,6 +604,7 @@ void test_point_mass()
 
 int main(int argc, char **argv)
 {
+  const hati::MpiEnvironment mpi_environment; // own Open MPI session folder
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
   {
