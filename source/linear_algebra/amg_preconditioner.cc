@@ -37,14 +37,17 @@ public:
       }
       ::close(null);
     }
-    std::string pattern =
-        (std::filesystem::temp_directory_path() / "hati-quiet-XXXXXX").string();
+    // (the error_code overload: nothing may throw once the streams moved)
+    std::error_code error;
+    std::filesystem::path folder = std::filesystem::temp_directory_path(error);
+    if (error)
+      folder = "/tmp";
+    std::string pattern = (folder / "hati-quiet-XXXXXX").string();
     cwd = ::open(".", O_RDONLY | O_DIRECTORY);
     if (cwd >= 0 && ::mkdtemp(pattern.data()) != nullptr)
     {
       scratch = pattern;
-      if (::chdir(scratch.c_str()) != 0)
-        scratch.clear();
+      moved = ::chdir(scratch.c_str()) == 0;
     }
   }
 
@@ -59,13 +62,11 @@ public:
         ::dup2(saved[fd - 1], fd);
         ::close(saved[fd - 1]);
       }
-    if (cwd >= 0)
-    {
-      if (::fchdir(cwd) != 0)
-      { // nothing better to do: the folder was there a moment ago
-      }
-      ::close(cwd);
+    if (moved && ::fchdir(cwd) != 0)
+    { // nothing better to do: the folder was there a moment ago
     }
+    if (cwd >= 0)
+      ::close(cwd);
     if (!scratch.empty())
     {
       std::error_code ignored;
@@ -79,6 +80,7 @@ public:
 private:
   int saved[2] = {-1, -1};
   int cwd = -1;
+  bool moved = false;
   std::string scratch;
 };
 } // namespace
