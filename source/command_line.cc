@@ -48,9 +48,21 @@ void apply_override(ParameterHandler &prm, const std::string &assignment)
   {
     problem = "no parameter '" + path + "' is declared";
   }
-  catch (const std::exception &)
+  catch (const std::exception &e)
   {
     problem = "the value '" + value + "' does not match the pattern of '" + path + "'";
+    // deal.II's exception holds the pattern: name it (the bounds, with units
+    // in --print-parameters)
+    if (const auto *d = dynamic_cast<const ExceptionBase *>(&e))
+    {
+      std::ostringstream info;
+      d->print_info(info);
+      const std::string text = info.str();
+      const std::string given = "given pattern <";
+      const auto open = text.find(given), close = text.rfind('>');
+      if (open != std::string::npos && close > open + given.size())
+        problem += " " + text.substr(open + given.size(), close - open - given.size());
+    }
   }
   for (unsigned int i = 0; i < parts.size(); ++i)
     prm.leave_subsection();

@@ -62,7 +62,9 @@ expect_error("trolley off the span", ["Model/Bridge crane/Trolley position=0.97"
 expect_error("explicit zone longer than a girder", ["Model/Bridge crane/Explicit zone length=25"],
              "Explicit zone length", "longer than a girder")
 expect_error("negative flange clearance", ["Model/Bridge crane/Flange clearance=-0.01"],
-             "Flange clearance", ">= 0")
-expect_error("damping ratio >= 1", ["Model/Bridge crane/Damping ratio=1.5"],
+             "'Model/Bridge crane/Flange clearance' [Double 0...0.5 (inclusive)]")
+expect_error("damping ratio > 1", ["Model/Bridge crane/Damping ratio=1.5"],
+             "'Model/Bridge crane/Damping ratio' [Double 0...1 (inclusive)]")
+expect_error("damping ratio = 1", ["Model/Bridge crane/Damping ratio=1"],
              "Damping ratio", "[0, 1)")
 ctx.finish()

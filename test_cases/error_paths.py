@@ -2,12 +2,15 @@
 """Error messages whose numbers are checked: a time step above the critical
 one (the message must print dt_crit, checked against the analytical h / c
 of the lumped linear bar, and its value with stiffness damping); a .prm
-with a UTF-8 byte-order mark runs; --print-parameters and --help. The bad
-inputs checked by the fragments of their one-line message are the table
-test_cases/bad_inputs/cases.ini (bad_inputs.py)."""
+with a UTF-8 byte-order mark runs; --print-parameters and --help; refusals
+by a bound and of a FIFO within a second (issue #19), no Trilinos output on
+a singular static case. The bad inputs checked by the fragments of their
+one-line message are the table test_cases/bad_inputs/cases.ini
+(bad_inputs.py)."""
 import os
 import re
 import subprocess
+import time
 
 import numpy as np
 
@@ -66,4 +69,73 @@ for entry in ("Initial height", "Restitution coefficient", "Time step", "End tim
               "Initial velocity", "Initial gap", "Number of elements"):
     ctx.check_true("--print-parameters lists '%s'" % entry, "set " + entry in rc.stdout)
 ctx.check_true("--help exits 0", subprocess.run([ctx.hati, "--help"], capture_output=True).returncode == 0)
+
+
+# issue #19, finding 2: no runaway. Refusals by a bound, or of a FIFO, come
+# at once: at most 1 s more than hati takes to start (`--help`, measured here
+# as the best of three, as is each case), instead of minutes at 100 % CPU (a
+# span of 1e6 m meshed quadratically) or a hang (open() of a FIFO blocks)
+def best_seconds(args, cwd):
+    best, p = None, None
+    for _ in range(3):
+        start = time.monotonic()
+        try:
+            p = subprocess.run([ctx.hati, *args], capture_output=True, text=True, timeout=20,
+                               cwd=cwd)
+        except subprocess.TimeoutExpired:
+            return 20.0, None
+        elapsed = time.monotonic() - start
+        best = elapsed if best is None else min(best, elapsed)
+    return best, p
+
+
+start_up, _ = best_seconds(["--help"], ctx.work)
+crane = ctx.prm("bridge_crane_hati.prm")
+fifo = os.path.join(ctx.work, "record.AT2")
+if not os.path.exists(fifo):
+    os.mkfifo(fifo)
+frame_mesh = ["--set", "Model/Frame/Nodes=", "--set", "Model/Frame/Members=",
+              "--set", "Model/Frame/Member properties=east: s, steel; west: s, steel; "
+              "north: s, steel; south: s, steel"]
+for what, args, fragment in [
+        ("crane Span = 1e6 m", [crane, "--set", "Model/Bridge crane/Span=1e6"],
+         "'Model/Bridge crane/Span' [Double 1...200 (inclusive)]"),
+        ("crane End carriage wheelbase = 1e6 m",
+         [crane, "--set", "Model/Bridge crane/End carriage wheelbase=1e6"],
+         "'Model/Bridge crane/End carriage wheelbase' [Double 0...50 (inclusive)]"),
+        ("an accelerogram that is a FIFO",
+         [ctx.prm("portal_frame_elcentro.prm"), "--set", "Loading/Accelerogram X=" + fifo],
+         "Loading/Accelerogram X: '%s' is not a regular file (a FIFO)" % fifo),
+        ("a mesh file that is a FIFO",
+         [ctx.prm("frame_joints.prm"), *frame_mesh, "--set", "Model/Frame/Mesh file=" + fifo],
+         "Model/Frame/Mesh file: '%s' is not a regular file (a FIFO)" % fifo)]:
+    seconds, p = best_seconds(args + ["--set", "Output/Output directory=" +
+                                      os.path.join(ctx.work, "refused")], ctx.work)
+    err = p.stderr.strip() if p else "(no exit within 20 s)"
+    ctx.check_true("%s refused with one line naming the entry" % what,
+                   p is not None and p.returncode == 1 and len(err.splitlines()) == 1
+                   and err.startswith("hati: error: ") and fragment in err, err)
+    ctx.check_true("%s refused within 1 s of the start-up time" % what,
+                   seconds < start_up + 1.0,
+                   "(%.2f s, start-up %.2f s)" % (seconds, start_up))
+
+# finding 8: a singular static case solved by CG + AMG: ML's coarse solver
+# fails; neither its "ERROR:" line nor its amesos-failure.dat reaches the
+# user (working directory, standard output and error)
+singular = os.path.join(ctx.work, "singular_cwd")
+os.makedirs(singular, exist_ok=True)
+p = subprocess.run([ctx.hati, ctx.prm("cantilever_static.prm"),
+                    "--set", "Model/Frame/Supports=root: pinned",
+                    "--set", "Time integration/Newmark/Linear solver=iterative",
+                    "--set", "Output/Output directory=" + os.path.join(singular, "out")],
+                   capture_output=True, text=True, timeout=120, cwd=singular)
+err = p.stderr.strip()
+ctx.check_true("singular K with CG + AMG: one line naming the singular stiffness",
+               p.returncode == 1 and len(err.splitlines()) == 1
+               and "the stiffness matrix is singular" in err, err)
+ctx.check_true("singular K with CG + AMG: no amesos-failure.dat in the working directory",
+               not os.path.exists(os.path.join(singular, "amesos-failure.dat")),
+               str(os.listdir(singular)))
+ctx.check_true("singular K with CG + AMG: no Trilinos ERROR line on the standard output",
+               "ERROR" not in p.stdout, p.stdout[-500:])
 ctx.finish()

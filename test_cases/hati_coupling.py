@@ -251,7 +251,7 @@ expect_error("no interface", frame,
 expect_error("an explicit step above the explicit dt_crit", frame,
              ["Time integration/Time step=2e-4"], "explicit subdomain", "dt_crit")
 expect_error("a time step ratio of 0", bar, ["Time integration/HATI/Time step ratio=0"],
-             "Time step ratio must be an integer >= 1")
+             "'Time integration/HATI/Time step ratio' [Integer range 1...10000 (inclusive)]")
 expect_error("an unknown explicit member", frame,
              ["Model/Decomposition/Explicit members=colZ"], "no member named 'colZ'")
 ctx.finish()

@@ -1,12 +1,15 @@
 #include <deal.II/base/exceptions.h>
 
+#include <hati/base/input_file.h>
 #include <hati/loading/accelerogram.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 namespace hati
 {
@@ -14,10 +17,13 @@ using dealii::ExcMessage;
 
 namespace
 {
-std::string where(const std::string &file, const unsigned int line)
-{
-  return "accelerogram file '" + file + "', line " + std::to_string(line) + ": ";
-}
+/** Shortest and longest AT2 sample interval DT (s). */
+constexpr double min_dt = 1e-6, max_dt = 1.;
+/** Largest number of samples of a record (-): 8e8 bytes per vector. */
+constexpr long max_samples = 100000000;
+
+/** "<entry>: " or nothing. */
+std::string prefix(const std::string &entry) { return entry.empty() ? "" : entry + ": "; }
 
 bool is_at2(const std::string &file)
 {
@@ -47,12 +53,83 @@ bool numbers(const std::string &line, std::vector<double> &v)
 }
 } // namespace
 
+namespace
+{
+/** Where an error is: "<entry>: accelerogram file '<file>', line <n>: ". */
+class Position
+{
+public:
+  Position(const std::string &file, const std::string &entry) : file(file), entry(entry)
+  {
+  }
+
+  std::string at(const unsigned int line) const
+  {
+    return prefix(entry) + "accelerogram file '" + file + "', line " +
+           std::to_string(line) + ": ";
+  }
+
+  std::string whole() const { return prefix(entry) + "accelerogram file '" + file + "'"; }
+
+private:
+  const std::string file, entry;
+};
+
+/**
+ * NPTS and DT (s) of the fourth line @p line of an AT2 header, both in
+ * their bounds (0 < NPTS <= max_samples, min_dt <= DT <= max_dt).
+ */
+std::pair<long, double> at2_header(const std::string &line, const Position &where)
+{
+  std::string upper = line;
+  std::transform(upper.begin(),
+                 upper.end(),
+                 upper.begin(),
+                 [](unsigned char c) { return std::toupper(c); });
+  long npts = -1;
+  double dt = -1.;
+  const auto p_n = upper.find("NPTS="), p_d = upper.find("DT=");
+  if (p_n != std::string::npos && p_d != std::string::npos)
+  {
+    npts = std::strtol(upper.c_str() + p_n + 5, nullptr, 10);
+    dt = std::strtod(upper.c_str() + p_d + 3, nullptr);
+  }
+  else if (upper.find("NPTS") != std::string::npos)
+  {
+    std::istringstream s(upper);
+    s >> npts >> dt;
+    if (!s)
+      npts = -1;
+  }
+  AssertThrow(npts > 0 && dt > 0. && std::isfinite(dt),
+              ExcMessage(where.at(4) +
+                         "expected 'NPTS= n, DT= dt SEC' or 'n dt NPTS, DT' with n > 0 "
+                         "and finite dt > 0, got '" +
+                         line + "'"));
+  if (!(npts <= max_samples && dt >= min_dt && dt <= max_dt))
+  {
+    std::ostringstream s;
+    s << where.at(4) << "NPTS = " << npts << ", DT = " << dt << " s: expected at most "
+      << double(max_samples) << " samples and " << min_dt << " s <= DT <= " << max_dt
+      << " s";
+    AssertThrow(false, ExcMessage(s.str()));
+  }
+  return {npts, dt};
+}
+} // namespace
+
 Accelerogram Accelerogram::read(const std::string &filename,
                                 const std::string &units,
-                                const double scale)
+                                const double scale,
+                                const std::string &entry)
 {
+  // stat first: opening a FIFO would block, a device would never end
+  require_regular_file(filename, entry, "accelerogram");
+  const Position where(filename, entry);
   std::ifstream in(filename);
-  AssertThrow(in, ExcMessage("cannot open the accelerogram file '" + filename + "'"));
+  AssertThrow(
+      in,
+      ExcMessage(prefix(entry) + "cannot open the accelerogram file '" + filename + "'"));
   Accelerogram g;
   std::string line;
   unsigned int number = 0;
@@ -63,41 +140,19 @@ Accelerogram Accelerogram::read(const std::string &filename,
     for (unsigned int i = 0; i < 4; ++i)
     {
       AssertThrow(std::getline(in, line),
-                  ExcMessage(where(filename, number + 1) +
+                  ExcMessage(where.at(number + 1) +
                              "the file ends inside the 4-line AT2 header"));
       ++number;
     }
-    std::string upper = line;
-    std::transform(upper.begin(),
-                   upper.end(),
-                   upper.begin(),
-                   [](unsigned char c) { return std::toupper(c); });
-    long npts = -1;
-    double dt = -1.;
-    const auto p_n = upper.find("NPTS="), p_d = upper.find("DT=");
-    if (p_n != std::string::npos && p_d != std::string::npos)
-    {
-      npts = std::strtol(upper.c_str() + p_n + 5, nullptr, 10);
-      dt = std::strtod(upper.c_str() + p_d + 3, nullptr);
-    }
-    else if (upper.find("NPTS") != std::string::npos)
-    {
-      std::istringstream s(upper);
-      s >> npts >> dt;
-      if (!s)
-        npts = -1;
-    }
-    AssertThrow(npts > 0 && dt > 0. && std::isfinite(dt),
-                ExcMessage(where(filename, 4) +
-                           "expected 'NPTS= n, DT= dt SEC' or 'n dt NPTS, DT' with n > 0 "
-                           "and finite dt > 0, got '" +
-                           line + "'"));
+    const auto [npts, dt] = at2_header(line, where);
     while (std::getline(in, line))
     {
       ++number;
-      AssertThrow(
-          numbers(line, v),
-          ExcMessage(where(filename, number) + "not a list of numbers: '" + line + "'"));
+      AssertThrow(numbers(line, v),
+                  ExcMessage(where.at(number) + "not a list of numbers: '" + line + "'"));
+      AssertThrow(long(g.a.size() + v.size()) <= npts,
+                  ExcMessage(where.at(number) + "the header announces NPTS = " +
+                             std::to_string(npts) + " values, the file has more"));
       for (const double x : v)
       {
         g.t.push_back(g.a.size() * dt);
@@ -105,8 +160,8 @@ Accelerogram Accelerogram::read(const std::string &filename,
       }
     }
     AssertThrow(long(g.a.size()) == npts,
-                ExcMessage("accelerogram file '" + filename +
-                           "': the header announces NPTS = " + std::to_string(npts) +
+                ExcMessage(where.whole() +
+                           ": the header announces NPTS = " + std::to_string(npts) +
                            " values, the file has " + std::to_string(g.a.size())));
   }
   else
@@ -128,17 +183,18 @@ Accelerogram Accelerogram::read(const std::string &filename,
       if (first == std::string::npos || line[first] == '#')
         continue;
       AssertThrow(numbers(line, v) && v.size() == 2,
-                  ExcMessage(where(filename, number) +
+                  ExcMessage(where.at(number) +
                              "expected two numbers 'time value', got '" + line + "'"));
       AssertThrow(g.t.empty() || v[0] > g.t.back(),
-                  ExcMessage(where(filename, number) + "times must increase"));
+                  ExcMessage(where.at(number) + "times must increase"));
+      AssertThrow(long(g.a.size()) < max_samples,
+                  ExcMessage(where.at(number) + "more than " +
+                             std::to_string(max_samples) + " samples"));
       g.t.push_back(v[0]);
       g.a.push_back(v[1] * factor * scale);
     }
   }
-  AssertThrow(
-      g.a.size() >= 2,
-      ExcMessage("accelerogram file '" + filename + "' has fewer than two samples"));
+  AssertThrow(g.a.size() >= 2, ExcMessage(where.whole() + " has fewer than two samples"));
   return g;
 }
 

@@ -15,6 +15,10 @@ const std::string where = "Model/Bridge crane/";
 
 /** Largest number of elements of one member (-), as for Model/Type = frame. */
 constexpr double max_elements_per_member = 1e7;
+/** Largest Young's modulus (Pa) and density (kg/m^3) of the Material. */
+constexpr double max_young_modulus = 1e13, max_density = 1e5;
+/** Largest mass of the girders, end carriages and rails (kg, mass_bridge()). */
+constexpr double max_structure_mass = 1e8;
 
 double section_area(const std::string &text, const std::string &entry)
 {
@@ -30,8 +34,8 @@ void declare_masses_contacts_and_mesh(ParameterHandler &prm)
   prm.declare_entry(
       "Rail mass per metre",
       "25",
-      Patterns::Double(),
-      "Mass of the trolley rail on each girder (kg/m), >= 0, lumped on the "
+      Patterns::Double(0., 1e4),
+      "Mass of the trolley rail on each girder (kg/m), from 0 to 1e4 kg/m, lumped on the "
       "girder nodes. Default 25 kg/m (light rail or 50 x 50 bar, 20-40 "
       "kg/m, doc/crane_data.md section 2). Diaphragms, walkway, drives (about "
       "+50 % of the plates) are not in the default model: add them here "
@@ -39,33 +43,35 @@ void declare_masses_contacts_and_mesh(ParameterHandler &prm)
   prm.declare_entry(
       "Trolley mass",
       "3000",
-      Patterns::Double(),
-      "Trolley (crab) machinery (kg), >= 0, a quarter on each trolley wheel "
+      Patterns::Double(0., 1e7),
+      "Trolley (crab) machinery (kg), from 0 to 1e7 kg, a quarter on each trolley wheel "
       "node. Default 3 t: European compact double-rail crab for 20 t, 2-4 t "
       "(doc/crane_data.md section 4; a classic open-winch crab is 6-8 t).");
-  prm.declare_entry("Hoist mass",
-                    "20350",
-                    Patterns::Double(),
-                    "Lifted load and hook block (kg), >= 0, rigidly at the trolley's "
-                    "centre (no rope pendulum). Default: the rated 20 t plus a 0.35 t "
-                    "hook block (doc/crane_data.md section 0).");
-  prm.declare_entry("Flange clearance",
-                    "0.02",
-                    Patterns::Double(),
-                    "Total lateral play of a wheel between its flanges (m), >= 0, for "
-                    "the crane and the trolley wheels (two-sided contacts, +-c/2). "
-                    "Default 20 mm: CMAA practice 19-25 mm for bridge wheels, 15-30 mm "
-                    "in Europe (doc/crane_data.md section 5).");
+  prm.declare_entry(
+      "Hoist mass",
+      "20350",
+      Patterns::Double(0., 1e7),
+      "Lifted load and hook block (kg), from 0 to 1e7 kg, rigidly at the trolley's "
+      "centre (no rope pendulum). Default: the rated 20 t plus a 0.35 t "
+      "hook block (doc/crane_data.md section 0).");
+  prm.declare_entry(
+      "Flange clearance",
+      "0.02",
+      Patterns::Double(0., 0.5),
+      "Total lateral play of a wheel between its flanges (m), from 0 to 0.5 m, for "
+      "the crane and the trolley wheels (two-sided contacts, +-c/2). "
+      "Default 20 mm: CMAA practice 19-25 mm for bridge wheels, 15-30 mm "
+      "in Europe (doc/crane_data.md section 5).");
   prm.declare_entry("Wheel restitution",
                     "0",
-                    Patterns::Double(),
+                    Patterns::Double(0., 1.),
                     "Newton's restitution coefficient of every wheel contact (-), in "
                     "[0, 1]. Default 0: plastic impact, the usual choice for "
                     "finite-element contact.");
   prm.declare_entry(
       "Damping ratio",
       "0.02",
-      Patterns::Double(),
+      Patterns::Double(0., 1.),
       "Rayleigh damping ratio zeta (-), in [0, 1), of a transient run when "
       "Time integration/Damping is not set: a0, a1 such that the first mode "
       "dominated by vertical (Z) and the first dominated by horizontal (X "
@@ -90,24 +96,28 @@ void declare_masses_contacts_and_mesh(ParameterHandler &prm)
                     "wheels can lift off).");
   prm.declare_entry("Explicit element length",
                     "0.5",
-                    Patterns::Double(),
+                    Patterns::Double(0., 200.),
                     "Largest element length inside the explicit zones around the wheels "
-                    "(m), > 0. Default 0.5 m: half the Element length, so that the zone "
+                    "(m), > 0 and at most 200 m. Default 0.5 m: half the Element length, "
+                    "so that the zone "
                     "has a node between the wheel and the interface on each side. With "
                     "the stiffness part of the Rayleigh damping the explicit critical "
                     "step falls about with the square of this length (A7).");
-  prm.declare_entry("Element length",
-                    "1",
-                    Patterns::Double(),
-                    "Largest element length outside the explicit zones and in the "
-                    "trolley frame (m), > 0. Default 1 m: 20 elements over a 20 m "
-                    "girder, enough for the envelope of its section forces.");
+  prm.declare_entry(
+      "Element length",
+      "1",
+      Patterns::Double(0., 200.),
+      "Largest element length outside the explicit zones and in the "
+      "trolley frame (m), > 0 and at most 200 m. Default 1 m: 20 elements over a 20 m "
+      "girder, enough for the envelope of its section forces.");
   prm.declare_entry("Explicit zone length",
                     "1",
-                    Patterns::Double(),
+                    Patterns::Double(0., 200.),
                     "Length of girder and of end carriage centred on each wheel that is "
-                    "meshed with the Explicit element length (m), >= 0 and not longer "
-                    "than a girder (the span).");
+                    "meshed with the Explicit element length (m), from 0 to 200 m and "
+                    "not longer than a girder (the span). Method = HATI without "
+                    "Model/Decomposition needs a length > 0: the zones are its explicit "
+                    "subdomain, where the wheel contacts are.");
 }
 } // namespace
 
@@ -116,36 +126,38 @@ void BridgeCrane::Parameters::declare_parameters(ParameterHandler &prm)
   // defaults: a 20 t, 20 m span double-girder crane, doc/crane_data.md
   prm.declare_entry("Span",
                     "20",
-                    Patterns::Double(),
-                    "Distance between the runway rails (m, along Y), > 0. Default: the "
+                    Patterns::Double(1., 200.),
+                    "Distance between the runway rails (m, along Y), from 1 to 200 m. "
+                    "Default: the "
                     "20 t / 20 m reference crane (doc/crane_data.md section 0; spans "
                     "10.5-31.5 m in 3 m steps).");
   prm.declare_entry(
       "Girder spacing",
       "2",
-      Patterns::Double(),
+      Patterns::Double(0., 50.),
       "Distance between the two girders = trolley rail gauge (m, along X), "
-      "> 0 and < End carriage wheelbase. Default 2 m: trolley gauges are "
+      "> 0, at most 50 m and < End carriage wheelbase. Default 2 m: trolley gauges are "
       "1.4-2.5 m, classic 20/5 t crabs about 2 m (doc/crane_data.md section 4, "
       "estimate).");
   prm.declare_entry(
       "End carriage wheelbase",
       "3.5",
-      Patterns::Double(),
+      Patterns::Double(0., 50.),
       "Distance between the two wheels of an end carriage (m, along X), > "
-      "Girder spacing. Default 3.5 m: anti-skew rule wheelbase >= span/7 "
+      "Girder spacing and at most 50 m. Default 3.5 m: anti-skew rule wheelbase >= "
+      "span/7 "
       "(2.9 m) and the IS 800 25 t / 16 m example (doc/crane_data.md section "
       "3).");
-  prm.declare_entry(
-      "Trolley wheelbase",
-      "1.8",
-      Patterns::Double(),
-      "Distance between the trolley's two wheels on one girder (m, along "
-      "Y), > 0. Default 1.8 m (range 1.2-2.5 m, doc/crane_data.md section 4, "
-      "estimate).");
+  prm.declare_entry("Trolley wheelbase",
+                    "1.8",
+                    Patterns::Double(0., 50.),
+                    "Distance between the trolley's two wheels on one girder (m, along "
+                    "Y), > 0, at most 50 m and shorter than the Span. Default 1.8 m "
+                    "(range 1.2-2.5 m, doc/crane_data.md section 4, "
+                    "estimate).");
   prm.declare_entry("Trolley position",
                     "0.5",
-                    Patterns::Double(),
+                    Patterns::Double(0., 1.),
                     "Position of the trolley's centre, where the hoist stands, as a "
                     "fraction of the span from the rail at Y = 0 (-); all trolley wheels "
                     "must lie strictly inside the span. Default 0.5 (mid-span: largest "
@@ -174,8 +186,10 @@ void BridgeCrane::Parameters::declare_parameters(ParameterHandler &prm)
   prm.declare_entry("Material",
                     "2.1e11, 0.3, 7850",
                     Patterns::List(Patterns::Double(), 3, 3, ","),
-                    "E (Pa), nu (-), rho (kg/m^3) of every member. Default: structural "
-                    "steel.");
+                    "E (Pa), nu (-), rho (kg/m^3) of every member: 0 < E <= 1e13 Pa, "
+                    "-1 < nu < 0.5, 0 < rho <= 1e5 kg/m^3. Default: structural steel. "
+                    "The girders and end carriages with their rails (mass_bridge) may "
+                    "weigh at most 1e8 kg.");
   declare_masses_contacts_and_mesh(prm);
 }
 
@@ -202,8 +216,12 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   E = m[0];
   nu = m[1];
   rho = m[2];
-  AssertThrow(E > 0. && nu > -1. && nu < 0.5 && rho > 0.,
-              ExcMessage(where + "Material: expected E > 0, -1 < nu < 0.5, rho > 0"));
+  AssertThrow(E > 0. && E <= max_young_modulus && nu > -1. && nu < 0.5 && rho > 0. &&
+                  rho <= max_density,
+              ExcMessage(where +
+                         "Material: expected 0 < E <= 1e13 Pa, -1 < nu < 0.5, "
+                         "0 < rho <= 1e5 kg/m^3, got " +
+                         prm.get("Material")));
   rail_mass_per_metre = positive("Rail mass per metre", true);
   trolley_mass = positive("Trolley mass", true);
   hoist_mass = positive("Hoist mass", true);
@@ -225,6 +243,14 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   AssertThrow(girder_spacing < end_carriage_wheelbase,
               ExcMessage(where + "Girder spacing: expected less than the End carriage "
                                  "wheelbase (the girders sit between the wheels)"));
+  if (!(trolley_wheelbase < span))
+  {
+    std::ostringstream t;
+    t << where << "Trolley wheelbase: " << trolley_wheelbase
+      << " m is not shorter than the Span (" << span
+      << " m): the trolley's wheels cannot stand between the rails";
+    AssertThrow(false, ExcMessage(t.str()));
+  }
   const double y1 = (trolley_position - 0.5 * trolley_wheelbase / span) * span,
                y2 = y1 + trolley_wheelbase;
   std::ostringstream s;
@@ -253,6 +279,14 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   section_area(girder_section, "Girder section");
   section_area(end_carriage_section, "End carriage section");
   section_area(trolley_section, "Trolley section");
+  if (!(mass_bridge() <= max_structure_mass))
+  {
+    std::ostringstream b;
+    b << where << "Girder section, End carriage section, Material, Rail mass per metre: "
+      << "the girders and end carriages would weigh " << mass_bridge()
+      << " kg, more than " << max_structure_mass << " kg";
+    AssertThrow(false, ExcMessage(b.str()));
+  }
 }
 
 double BridgeCrane::Parameters::mass_bridge() const
@@ -323,19 +357,23 @@ DecompositionParameters BridgeCrane::default_decomposition() const
                y1 = yc - 0.5 * crane.trolley_wheelbase,
                y2 = yc + 0.5 * crane.trolley_wheelbase, eps = 1e-6 * S,
                z = 0.25 * trolley_height; // girders and end carriages lie at z = 0
-  if (hz > 0.)
-  {
-    // girder cells around the trolley wheels' rail nodes, and between
-    // them: one zone per girder (two interface nodes instead of four)
-    for (const double x : {-a, a})
-      d.boxes.push_back({{x - eps, x + eps, y1 - hz - eps, y2 + hz + eps, -z, z}});
-    // end carriage cells around the crane wheels (at the carriage ends),
-    // when they are contacts
-    for (const double y : crane.crane_wheels == "contacts" ? std::vector<double>{0., S}
-                                                           : std::vector<double>{})
-      for (const double x : {-w, w})
-        d.boxes.push_back({{x - hz - eps, x + hz + eps, y - eps, y + eps, -z, z}});
-  }
+  // the wheel contacts are explicit only inside the zones (no zone: the
+  // subdomain would hold the trolley frame but not its wheels' rail nodes)
+  AssertThrow(hz > 0.,
+              ExcMessage(where + "Explicit zone length = 0: Method = HATI takes its "
+                                 "explicit subdomain from the zones around the wheels, "
+                                 "where the wheel contacts are; set a length > 0 (e.g. "
+                                 "1 m) or give the subdomain in Model/Decomposition"));
+  // girder cells around the trolley wheels' rail nodes, and between
+  // them: one zone per girder (two interface nodes instead of four)
+  for (const double x : {-a, a})
+    d.boxes.push_back({{x - eps, x + eps, y1 - hz - eps, y2 + hz + eps, -z, z}});
+  // end carriage cells around the crane wheels (at the carriage ends),
+  // when they are contacts
+  for (const double y : crane.crane_wheels == "contacts" ? std::vector<double>{0., S}
+                                                         : std::vector<double>{})
+    for (const double x : {-w, w})
+      d.boxes.push_back({{x - hz - eps, x + hz + eps, y - eps, y + eps, -z, z}});
   d.members = {"trolley_side_1a",
                "trolley_side_1b",
                "trolley_side_2a",

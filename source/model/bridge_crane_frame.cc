@@ -124,6 +124,10 @@ void add_end_carriages(const CraneParameters &p, FrameDescription &f)
                                           {{-hz, hz}, {2. * w - hz, 2. * w + hz}},
                                           p.element_length,
                                           p.explicit_element_length);
+  // the joints' stations, found once (a search per station would be
+  // quadratic in the number of elements)
+  const unsigned int joint_1 = station_index(xs, w - a),
+                     joint_2 = station_index(xs, w + a);
   for (unsigned int c = 1; c <= 2; ++c)
   {
     const double y = c == 1 ? 0. : S;
@@ -135,9 +139,9 @@ void add_end_carriages(const CraneParameters &p, FrameDescription &f)
         name = "cw" + std::to_string(2 * c - 1);
       else if (i + 1 == xs.size())
         name = "cw" + std::to_string(2 * c);
-      else if (i == station_index(xs, w - a))
+      else if (i == joint_1)
         name = "joint_1_" + std::to_string(c);
-      else if (i == station_index(xs, w + a))
+      else if (i == joint_2)
         name = "joint_2_" + std::to_string(c);
       add_node(f, name, xs[i] - w, y, 0.);
       path.push_back(name);
@@ -160,6 +164,8 @@ void add_girders(const CraneParameters &p, FrameDescription &f)
                                           {{y1 - hz, y1 + hz}, {y2 - hz, y2 + hz}},
                                           p.element_length,
                                           p.explicit_element_length);
+  // the rail nodes' stations, found once (not a search per station)
+  const unsigned int rail_1 = station_index(ys, y1), rail_2 = station_index(ys, y2);
   for (unsigned int g = 1; g <= 2; ++g)
   {
     std::vector<std::string> path;
@@ -170,9 +176,9 @@ void add_girders(const CraneParameters &p, FrameDescription &f)
         name = "joint_" + std::to_string(g) + "_1";
       else if (i + 1 == ys.size())
         name = "joint_" + std::to_string(g) + "_2";
-      else if (i == station_index(ys, y1))
+      else if (i == rail_1)
         name = "rail_" + std::to_string(2 * g - 1);
-      else if (i == station_index(ys, y2))
+      else if (i == rail_2)
         name = "rail_" + std::to_string(2 * g);
       else
         add_node(f, name, g == 1 ? -a : a, ys[i], 0.);

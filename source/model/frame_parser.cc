@@ -343,7 +343,7 @@ void merge_mesh_file(ParameterHandler &prm, FrameDescription &d)
   const std::string mesh_file = Utilities::trim(prm.get("Mesh file"));
   if (mesh_file.empty())
     return;
-  const GmshFrame mesh = read_gmsh_frame(mesh_file);
+  const GmshFrame mesh = read_gmsh_frame(mesh_file, "Model/Frame/Mesh file");
   for (const auto &[name, x] : mesh.nodes)
   {
     const auto known = d.nodes.find(name);

@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <hati/base/input_file.h>
 #include <hati/model/gmsh_frame_reader.h>
 
 #include <cmath>
@@ -12,6 +13,12 @@ namespace hati
 {
 namespace
 {
+/** "<entry>: " (the parameter that names the file), or nothing. */
+std::string entry_prefix(const std::string &entry)
+{
+  return entry.empty() ? "" : entry + ": ";
+}
+
 /** Largest node tag, element count or entry count accepted (-). */
 constexpr long max_count = 1000000000000L;
 /** Largest physical or entity tag (they are `int` in Gmsh). */
@@ -21,9 +28,13 @@ constexpr long max_tag = std::numeric_limits<int>::max();
 class Reader
 {
 public:
-  explicit Reader(const std::string &filename) : filename(filename), in(filename)
+  /** Errors start with "<entry>: mesh file '<filename>'". */
+  Reader(const std::string &filename, const std::string &entry)
+      : label(entry_prefix(entry) + "mesh file '" + filename + "'"), in(filename)
   {
-    AssertThrow(in, ExcMessage("cannot open the mesh file '" + filename + "'"));
+    AssertThrow(
+        in,
+        ExcMessage(entry_prefix(entry) + "cannot open the mesh file '" + filename + "'"));
   }
 
   /** The next line (throws at the end of the file). */
@@ -80,13 +91,13 @@ public:
     return static_cast<long>(x);
   }
 
-  std::string where() const
-  {
-    return "mesh file '" + filename + "', line " + std::to_string(number) + ": ";
-  }
+  /** Number of lines read so far. */
+  unsigned int line_number() const { return number; }
+
+  std::string where() const { return label + ", line " + std::to_string(number) + ": "; }
 
 private:
-  const std::string filename;
+  const std::string label;
   std::ifstream in;
   unsigned int number = 0;
 };
@@ -94,7 +105,11 @@ private:
 class MeshData
 {
 public:
-  explicit MeshData(const std::string &filename) : filename(filename), r(filename) {}
+  /** @p entry: the parameter that names the file (errors start with it). */
+  MeshData(const std::string &filename, const std::string &entry)
+      : label(entry_prefix(entry) + "mesh file '" + filename + "'"), r(filename, entry)
+  {
+  }
 
   /** Read every section the frame needs; others are skipped. */
   void read()
@@ -111,11 +126,18 @@ public:
       else if (l == "$Nodes")
         read_nodes();
       else if (l == "$Elements")
+      {
         read_elements();
+        has_elements = true;
+      }
     }
     AssertThrow(version > 0.,
-                ExcMessage("mesh file '" + filename +
-                           "': no $MeshFormat section (not a Gmsh file?)"));
+                ExcMessage(label + ": no $MeshFormat section (not a Gmsh file?)"));
+    // e.g. a file cut after its $Nodes
+    AssertThrow(has_elements,
+                ExcMessage(label + ": no $Elements section in its " +
+                           std::to_string(r.line_number()) +
+                           " lines: the file is cut short or holds no elements"));
   }
 
   /** The named nodes and the members as node chains. */
@@ -276,8 +298,8 @@ private:
   {
     const auto it = node_coordinates.find(tag);
     AssertThrow(it != node_coordinates.end(),
-                ExcMessage("mesh file '" + filename + "': element node " +
-                           std::to_string(tag) + " is not in $Nodes"));
+                ExcMessage(label + ": element node " + std::to_string(tag) +
+                           " is not in $Nodes"));
     return it->second;
   }
 
@@ -290,9 +312,10 @@ private:
                                  const std::vector<std::pair<long, long>> &segments,
                                  GmshFrame &frame);
 
-  const std::string filename;
+  const std::string label;
   Reader r;
   double version = 0.;
+  bool has_elements = false;
   std::map<int, std::string> curve_names, point_names; // physical tag -> name
   std::map<long, Point<3>> node_coordinates;
   std::map<int, std::vector<std::pair<long, long>>> lines; // physical tag -> lines
@@ -315,14 +338,14 @@ MeshData::chain(const std::string &name,
   for (const auto &[node, list] : adjacent)
   {
     AssertThrow(list.size() <= 2,
-                ExcMessage("mesh file '" + filename + "': member '" + name +
-                           "' branches at node " + std::to_string(node) +
+                ExcMessage(label + ": member '" + name + "' branches at node " +
+                           std::to_string(node) +
                            "; split it into one physical curve per branch"));
     if (list.size() == 1 && start < 0)
       start = node;
   }
   AssertThrow(start >= 0,
-              ExcMessage("mesh file '" + filename + "': member '" + name +
+              ExcMessage(label + ": member '" + name +
                          "' is a closed loop; split it into open physical curves"));
   std::vector<std::string> path;
   std::set<long> visited;
@@ -338,9 +361,9 @@ MeshData::chain(const std::string &name,
     previous = node;
     node = next;
   }
-  AssertThrow(visited.size() == adjacent.size(),
-              ExcMessage("mesh file '" + filename + "': member '" + name +
-                         "' is not one connected chain; split it"));
+  AssertThrow(
+      visited.size() == adjacent.size(),
+      ExcMessage(label + ": member '" + name + "' is not one connected chain; split it"));
   return path;
 }
 
@@ -356,21 +379,22 @@ GmshFrame MeshData::frame()
   {
     AssertThrow(
         curve_names.count(tag),
-        ExcMessage("mesh file '" + filename + "': physical curve " + std::to_string(tag) +
+        ExcMessage(label + ": physical curve " + std::to_string(tag) +
                    " has no name; name every member, e.g. Physical Curve(\"girder\")"));
     const std::string &name = curve_names[tag];
     frame.members[name] = chain(name, segments, frame);
   }
   AssertThrow(!frame.members.empty(),
-              ExcMessage("mesh file '" + filename +
-                         "': no named physical curve of line elements"));
+              ExcMessage(label + ": no named physical curve of line elements"));
   return frame;
 }
 } // namespace
 
-GmshFrame read_gmsh_frame(const std::string &filename)
+GmshFrame read_gmsh_frame(const std::string &filename, const std::string &entry)
 {
-  MeshData mesh(filename);
+  // stat first: opening a FIFO would block, a device would never end
+  require_regular_file(filename, entry, "mesh");
+  MeshData mesh(filename, entry);
   mesh.read();
   return mesh.frame();
 }

@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <hati/base/input_file.h>
 #include <hati/model/model.h>
 
 #include <cmath>
@@ -34,9 +35,11 @@ void CommonModelParameters::declare_parameters(ParameterHandler &prm)
         "",
         Patterns::Anything(),
         std::string("Recorded base acceleration along global ") + d +
-            ": a PEER NGA .AT2 file (units of g) or a two-column 'time value' "
-            "text file (units below), path relative to the current directory; "
-            "empty: none. Applied in the relative formulation F = -M r a_g(t), "
+            ": a PEER NGA .AT2 file (units of g; 1e-6 s <= DT <= 1 s, NPTS <= "
+            "1e8) or a two-column 'time value' text file (units below; at most 1e8 "
+            "samples), path relative to the current directory, a regular file "
+            "(not a FIFO or a device); empty: none. Applied in the relative formulation "
+            "F = -M r a_g(t), "
             "linearly interpolated, zero outside the record, added to the Base "
             "acceleration step.");
   prm.declare_entry(
@@ -48,9 +51,9 @@ void CommonModelParameters::declare_parameters(ParameterHandler &prm)
   prm.declare_entry(
       "Accelerogram scale factor",
       "1",
-      Patterns::Double(),
-      "Factor applied to every accelerogram value (-), e.g. to scale a record "
-      "to a design peak ground acceleration.");
+      Patterns::Double(-100., 100.),
+      "Factor applied to every accelerogram value (-), from -100 to 100, e.g. to "
+      "scale a record to a design peak ground acceleration.");
   prm.declare_entry(
       "Excited members",
       "",
@@ -98,6 +101,12 @@ void CommonModelParameters::parse_parameters(ParameterHandler &prm)
   accelerogram_files = {{Utilities::trim(prm.get("Accelerogram X")),
                          Utilities::trim(prm.get("Accelerogram Y")),
                          Utilities::trim(prm.get("Accelerogram Z"))}};
+  // refuse a FIFO or a device before any work (stat, never open)
+  for (unsigned int d = 0; d < 3; ++d)
+    if (!accelerogram_files[d].empty())
+      require_regular_file(accelerogram_files[d],
+                           std::string("Loading/Accelerogram ") + "XYZ"[d],
+                           "accelerogram");
   accelerogram_units = prm.get("Accelerogram units");
   accelerogram_scale = prm.get_double("Accelerogram scale factor");
   excited_members.clear();

@@ -8,13 +8,19 @@
 #include <hati/time/hati_coupling.h>
 
 #include <iostream>
+#include <new>
 #include <sstream>
 
 namespace hati
 {
 namespace
 {
-/** The coupling of the problem's subdomains; errors name the explicit subdomain. */
+/**
+ * The coupling of the problem's subdomains; errors name the subdomain they
+ * come from (the implicit one for Newmark's, the explicit one otherwise,
+ * e.g. the critical step refusal), or the Time step ratio when the ramp
+ * responses do not fit in memory.
+ */
 std::unique_ptr<HATICoupling> make_coupling(const Problem &problem)
 {
   try
@@ -36,7 +42,20 @@ std::unique_ptr<HATICoupling> make_coupling(const Problem &problem)
     const std::string prefix = "Additional information:";
     if (text.find(prefix) != std::string::npos)
       text = text.substr(text.find(prefix) + prefix.size());
-    AssertThrow(false, ExcMessage("HATI (explicit subdomain): " + Utilities::trim(text)));
+    text = Utilities::trim(text);
+    const bool implicit = text.rfind("Newmark", 0) == 0;
+    AssertThrow(false,
+                ExcMessage(std::string(implicit ? "HATI (implicit subdomain): "
+                                                : "HATI (explicit subdomain): ") +
+                           text));
+  }
+  catch (const std::bad_alloc &)
+  {
+    AssertThrow(false,
+                ExcMessage("Time integration/HATI/Time step ratio = " +
+                           std::to_string(problem.hati_parameters.time_step_ratio) +
+                           ": the coupling's unit-ramp responses over the micro steps "
+                           "of a macro step do not fit in memory; use a smaller ratio"));
   }
   return nullptr;
 }

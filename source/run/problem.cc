@@ -42,6 +42,9 @@ Problem::Problem(ParameterHandler &prm, const ConditionalOStream &out) : out(out
   prm.enter_subsection("Newmark");
   newmark_parameters.parse_parameters(prm);
   prm.leave_subsection();
+  if (analysis_parameters.type == "transient" &&
+      (time_parameters.method == "Newmark" || time_parameters.method == "HATI"))
+    newmark_parameters.check_unconditional_stability();
   prm.enter_subsection("Damping");
   damping = parse_damping_parameters(prm);
   prm.leave_subsection();
@@ -76,7 +79,8 @@ void Problem::add_loads()
       const auto record = std::make_shared<Accelerogram>(
           Accelerogram::read(common_parameters.accelerogram_files[d],
                              common_parameters.accelerogram_units,
-                             common_parameters.accelerogram_scale));
+                             common_parameters.accelerogram_scale,
+                             std::string("Loading/Accelerogram ") + "XYZ"[d]));
       const auto [peak, at] = record->peak();
       out << "  accelerogram along "
           << "xyz"[d] << ": " << common_parameters.accelerogram_files[d] << ", "

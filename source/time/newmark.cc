@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <hati/linear_algebra/amg_preconditioner.h>
 #include <hati/time/newmark.h>
 
 #include <algorithm>
@@ -127,11 +128,23 @@ void NewmarkParameters::parse_parameters(ParameterHandler &prm)
   solver_tolerance = prm.get_double("Solver tolerance");
   mass = prm.get("Mass");
   AssertThrow(gamma >= 0.5,
-              ExcMessage("Newmark: Gamma must be >= 0.5 (got " + std::to_string(gamma) +
-                         "): with Gamma < 1/2 the scheme has negative numerical "
-                         "damping and the solution grows."));
+              ExcMessage("Time integration/Newmark/Gamma = " + prm.get("Gamma") +
+                         ": Newmark: Gamma must be >= 0.5: with Gamma < 1/2 the scheme "
+                         "has negative numerical damping and the solution grows."));
   AssertThrow(solver_tolerance > 0.,
-              ExcMessage("Newmark: Solver tolerance must be > 0."));
+              ExcMessage("Time integration/Newmark/Solver tolerance: must be > 0."));
+}
+
+void NewmarkParameters::check_unconditional_stability() const
+{
+  if (!(2. * beta >= gamma - 1e-12))
+  {
+    std::ostringstream s;
+    s << "Time integration/Newmark/Beta = " << beta << " with Gamma = " << gamma
+      << ": Beta must be >= Gamma / 2 for unconditional stability (2 Beta >= Gamma >= "
+         "1/2; Beta = 1/4, Gamma = 1/2 is the average acceleration scheme).";
+    AssertThrow(false, ExcMessage(s.str()));
+  }
 }
 
 /** The Trilinos effective matrix with its Amesos_Klu factorisation or AMG. */
@@ -157,7 +170,8 @@ Newmark::Newmark(const DiscreteSystem &system,
   AssertThrow(gamma >= 0.5, ExcMessage("Newmark: Gamma must be >= 0.5."));
   AssertThrow(
       2. * beta >= gamma - 1e-12,
-      ExcMessage("Newmark: Beta must be >= Gamma / 2 for unconditional stability "
+      ExcMessage("Newmark: Beta must be >= Gamma / 2 (Time integration/Newmark/Beta, "
+                 "Gamma) for unconditional stability "
                  "(2 Beta >= Gamma >= 1/2; Beta = 1/4, Gamma = 1/2 is the average "
                  "acceleration scheme)."));
   AssertThrow(parameters.linear_solver == "direct" ||
@@ -218,7 +232,7 @@ Newmark::Newmark(const DiscreteSystem &system,
           mode[i] = (r[i] != 0.);
         data.constant_modes.push_back(mode);
       }
-    solver->amg.initialize(solver->matrix, data);
+    initialize_quietly(solver->amg, solver->matrix, data);
   }
   factorization_seconds = seconds_since(start);
   build_row_operators();

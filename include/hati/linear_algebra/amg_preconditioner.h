@@ -2,6 +2,7 @@
 #define hati_linear_algebra_amg_preconditioner_h
 
 #include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <array>
@@ -23,6 +24,19 @@ using namespace dealii;
 TrilinosWrappers::PreconditionAMG::AdditionalData
 structural_amg_data(const std::array<Vector<double>, 3> &translations,
                     const unsigned int n);
+
+/**
+ * `amg.initialize(matrix, data)` without output: ML's coarse solver
+ * (Amesos_Klu) reports a singular coarse matrix with an `ERROR:` line on
+ * the standard output and writes the matrix to `amesos-failure.dat` in the
+ * working directory. Both standard streams are sent to /dev/null and the
+ * working directory is a private temporary folder (removed after) while it
+ * runs; the caller reports the failure (a singular matrix shows as a
+ * breakdown of the solver) in its own words. Exceptions pass through.
+ */
+void initialize_quietly(TrilinosWrappers::PreconditionAMG &amg,
+                        const TrilinosWrappers::SparseMatrix &matrix,
+                        const TrilinosWrappers::PreconditionAMG::AdditionalData &data);
 } // namespace hati
 
 #endif

@@ -19,7 +19,10 @@ namespace hati
  * - two-column text `time value` (other files), with the units given; lines
  *   starting with '#' and empty lines are skipped; times must increase.
  *
- * Anything malformed is an error naming the file and the line.
+ * Anything malformed is an error naming the file and the line. The path
+ * must be a regular file (checked with stat() before opening: a FIFO or a
+ * device is refused at once); an AT2 header needs 1e-6 s <= DT <= 1 s and
+ * NPTS <= 1e8, a two-column file at most 1e8 samples.
  */
 class Accelerogram
 {
@@ -27,9 +30,13 @@ public:
   /**
    * Read @p filename; @p units ("g", "m/s^2" or "cm/s^2") applies to
    * two-column files (AT2 files are in g), @p scale multiplies every value.
+   * Errors start with @p entry, the parameter that named the file (e.g.
+   * `Loading/Accelerogram X`), when it is not empty.
    */
-  static Accelerogram
-  read(const std::string &filename, const std::string &units, double scale);
+  static Accelerogram read(const std::string &filename,
+                           const std::string &units,
+                           double scale,
+                           const std::string &entry = "");
 
   /** a_g(t) in m/s^2, linear interpolation. */
   double operator()(const double t) const;

@@ -31,9 +31,13 @@ struct GmshFrame
  * points, type 15, name nodes; other element types are ignored). Every
  * physical curve must have a name (`Physical Curve("girder") = {...};`) and
  * form a simple open chain; a branching or closed group is an error that
- * asks to split it. Errors name the file and, where it applies, the line.
+ * asks to split it. Errors start with @p entry (the parameter that names
+ * the file, e.g. `Model/Frame/Mesh file`; nothing if empty) and name the
+ * file and, where it applies, the line. The path must be a regular file
+ * (checked with stat() before opening: a FIFO or a device is refused at
+ * once), and a file without an $Elements section (cut short) is refused.
  */
-GmshFrame read_gmsh_frame(const std::string &filename);
+GmshFrame read_gmsh_frame(const std::string &filename, const std::string &entry = "");
 } // namespace hati
 
 #endif

@@ -25,10 +25,16 @@ struct HATIParameters
   /** Declare "Time step ratio" and "Coupling method" (the caller enters the subsection).
    */
   static void declare_parameters(ParameterHandler &prm);
-  /** Read them; throws a one-line error for a ratio of 0. */
+  /** Read them; throws a one-line error for a ratio outside [1, max_time_step_ratio]. */
   void parse_parameters(ParameterHandler &prm);
 
-  /** m = DT / dt (-), integer >= 1. */
+  /**
+   * Largest Time step ratio (-): the unit-ramp responses hold m micro steps
+   * (about 2 GB for the bridge crane at m = 10000).
+   */
+  static constexpr long max_time_step_ratio = 10000;
+
+  /** m = DT / dt (-), integer from 1 to max_time_step_ratio. */
   unsigned int time_step_ratio = 1;
   /**
    * "macro-linear": (G3'), continuity at the macro-step ends with the

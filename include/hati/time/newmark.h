@@ -38,6 +38,14 @@ struct NewmarkParameters
    */
   void parse_parameters(ParameterHandler &prm);
 
+  /**
+   * Throws, naming `Time integration/Newmark/Beta`, unless `2 beta >= gamma`
+   * (unconditional stability); called by the Problem for the methods that
+   * step with Newmark (Newmark, and HATI for its implicit subdomain) before
+   * any model is built.
+   */
+  void check_unconditional_stability() const;
+
   /** Newmark beta (-), weight of A_{n+1} in U_{n+1} (N1, N3). */
   double beta = 0.25;
   /** Newmark gamma (-), weight of A_{n+1} in V_{n+1} (N1, N3); >= 1/2. */
