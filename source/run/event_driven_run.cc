@@ -36,7 +36,7 @@ void run_event_driven(Problem &problem, RunDirectory &directory)
   {
     const WallClock::Scope scope(output_clock);
     const OutputState s = contact_state(integrator, 0.); // impulses act at an instant
-    watchdog.check(*s.displacement, s.velocity, s.time);
+    check_state(watchdog, writer, *s.displacement, s.velocity, s.time);
     writer.write_history(s);
     writer.write_energy(s.time, integrator.energies());
     writer.track_contacts(s.gaps, s.impulses);

@@ -87,6 +87,30 @@ void Watchdog::fail(const dealii::Vector<double> &u,
   std::abort(); // not reached
 }
 
+void check_state(const Watchdog &watchdog,
+                 OutputWriter &writer,
+                 const dealii::Vector<double> &u,
+                 const dealii::Vector<double> *v,
+                 const double t)
+{
+  try
+  {
+    watchdog.check(u, v, t);
+  }
+  catch (...)
+  {
+    try
+    {
+      writer.flush(); // whole rows only: the check comes before a row
+    }
+    catch (...)
+    {
+      // the divergence is the message; a write error would hide it
+    }
+    throw;
+  }
+}
+
 Progress::Progress(const double interval, const double end_time)
     : interval(interval), end_time(end_time), start(std::chrono::steady_clock::now()),
       last(start)

@@ -158,7 +158,7 @@ template <class Integrator> void TimeLoop<Integrator>::write(const unsigned long
 {
   const WallClock::Scope scope(output_clock);
   const OutputState s = output_state(integrator);
-  watchdog.check(*s.displacement, s.velocity, s.time);
+  check_state(watchdog, writer, *s.displacement, s.velocity, s.time);
   if (step % every_history == 0 || step == n_steps)
   {
     for (const auto &p : postprocessors)
@@ -217,8 +217,11 @@ template <class Integrator> void TimeLoop<Integrator>::run(TimerOutput &timer)
         step == n_steps)
       write(step); // checks the state
     else if (!explicit_scheme || step % Watchdog::check_interval == 0)
-      watchdog.check(
-          integrator.displacement(), &integrator.velocity(), integrator.time());
+      check_state(watchdog,
+                  writer,
+                  integrator.displacement(),
+                  &integrator.velocity(),
+                  integrator.time());
     if ((!explicit_scheme || (step & 255) == 0) && progress.due())
     {
       progress.print(integrator.time(), step);

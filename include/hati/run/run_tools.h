@@ -68,6 +68,17 @@ private:
 };
 
 /**
+ * Watchdog::check() of @p u, @p v at @p t (s); on a failure the rows of
+ * @p writer so far are flushed first (best effort), so that the files end
+ * at the last output row before the divergence. Call it before a row.
+ */
+void check_state(const Watchdog &watchdog,
+                 OutputWriter &writer,
+                 const dealii::Vector<double> &u,
+                 const dealii::Vector<double> *v,
+                 const double t);
+
+/**
  * The state of an integrator with contacts for the output writer; the
  * impulses act over @p impulse_duration (s: the step, or 0 for an instant).
  */
