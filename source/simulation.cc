@@ -31,7 +31,7 @@ Simulation::~Simulation() = default;
 void Simulation::record_failure(const std::string &message) noexcept
 {
   if (run_directory)
-    run_directory->fail(message);
+    run_directory->fail(message, problem->warnings);
 }
 
 void Simulation::run()

@@ -2,11 +2,15 @@
 """Error messages whose numbers are checked: a time step above the critical
 one (the message must print dt_crit, checked against the analytical h / c
 of the lumped linear bar, and its value with stiffness damping); a .prm
-with a UTF-8 byte-order mark runs; --print-parameters and --help; refusals
-by a bound and of a FIFO within a second (issue #19), no Trilinos output on
-a singular static case. The bad inputs checked by the fragments of their
-one-line message are the table test_cases/bad_inputs/cases.ini
-(bad_inputs.py)."""
+with a UTF-8 byte-order mark runs; the watchdog of a diverging run (time,
+component, place and model size in its one line, summary.json "failed")
+and the warnings (a record wholly before t = 0, HATI with fewer than ten
+macro steps; "warnings" of summary.json, empty for a normal run); a
+newline in a name; --print-parameters and --help; refusals by a bound and
+of a FIFO within a second (issue #19), no Trilinos output on a singular
+static case. The bad inputs checked by the fragments of their one-line
+message are the table test_cases/bad_inputs/cases.ini (bad_inputs.py)."""
+import json
 import os
 import re
 import subprocess
@@ -62,6 +66,134 @@ with open(bom_prm, "wb") as f:
 rc, err = hati(bom_prm, "--set", "Time integration/End time=0.1",
                "--set", "Output/Output directory=" + os.path.join(ctx.work, "bom"))
 ctx.check_true("a .prm starting with a UTF-8 byte-order mark runs", rc == 0, err)
+
+# --- issue #19, findings 3 and 4: the watchdog, warnings, names ------------
+
+def run(tag, prm, *sets):
+    """hati on prm with the overrides; (exit code, stderr lines, summary or None, out)."""
+    out = os.path.join(ctx.work, tag)
+    args = [prm, "--set", "Output/Output directory=" + out]
+    for x in sets:
+        args += ["--set", x]
+    p = subprocess.run([ctx.hati, *args], capture_output=True, text=True, timeout=300,
+                       cwd=ctx.work)
+    summary = None
+    if os.path.exists(os.path.join(out, "summary.json")):
+        with open(os.path.join(out, "summary.json")) as f:
+            summary = json.load(f)
+    return p.returncode, p.stderr.strip().splitlines(), summary, out
+
+
+diverged = re.compile(r"^hati: error: the run diverged at t = ([0-9.e+-]+) s: the displacement "
+                      r"(u[xyz]) = ([0-9.e+-]+) m at (.+) \(DoF (\d+)\) exceeds 1e3 times the "
+                      r"model size, 1e3 x ([0-9.e+-]+) m = ([0-9.e+-]+) m \(look for ")
+
+
+def expect_divergence(what, rc, lines, summary, t, component, place, size):
+    """One error line naming the time, the component, its place; summary.json failed."""
+    m = diverged.match(lines[0]) if len(lines) == 1 else None
+    ctx.check_true(what + ": exit 1, one line naming time, quantity and place",
+                   rc == 1 and m is not None, "(exit %d) %s" % (rc, lines))
+    if not m:
+        return
+    ctx.check(what + ": time of the divergence (s)", float(m.group(1)), t, rel=1e-9)
+    ctx.check_true(what + ": component and place", m.group(2) == component
+                   and m.group(4) == place, "%s at %s" % (m.group(2), m.group(4)))
+    ctx.check(what + ": model size (m)", float(m.group(6)), size, rel=1e-5)
+    ctx.check_true(what + ": the displacement exceeds the bound",
+                   abs(float(m.group(3))) > 1e3 * size, m.group(3))
+    ctx.check_true(what + ": summary.json failed with the message, no warnings",
+                   summary is not None and summary.get("status") == "failed"
+                   and summary.get("message") == lines[0][len("hati: error: "):]
+                   and summary.get("warnings") == [], str(summary))
+
+
+portal = ctx.prm("portal_frame_dynamic.prm")  # Newmark, dt = 1e-3 s, a row every step
+portal_size = np.sqrt(6 ** 2 + 4 ** 2 + 5 ** 2)  # the diagonal of its 6 x 4 x 5 m box
+# a nodal load of 1e250 N: u = 1e250 / k, far past 1e3 model sizes at the first row
+rc, lines, summary, _ = run("diverge_newmark", portal, "Model/Frame/Nodal loads=A1: 1e250, 0, 0",
+                            "Time integration/End time=0.1")
+expect_divergence("Newmark, huge nodal load", rc, lines, summary, 1e-3, "ux", "node 'A1'",
+                  portal_size)
+# the same with HATI (DT = 2e-4 s): caught at the first macro step
+rc, lines, summary, _ = run("diverge_hati", ctx.prm("portal_frame_split.prm"),
+                            "Model/Frame/Nodal loads=A1: 1e250, 0, 0",
+                            "Time integration/End time=0.01")
+expect_divergence("HATI, huge nodal load", rc, lines, summary, 2e-4, "ux", "node 'A1'",
+                  portal_size)
+# an AT2 record with one sample of 1e300 g at t = 0.06 s (DT = 0.02 s): the
+# ground acceleration rises from t = 0.04 s, caught at the next row
+at2 = os.path.join(ctx.work, "huge.AT2")
+with open(at2, "w") as f:
+    f.write("PEER\nTEST\nACCELERATION IN G\n   12   0.0200  NPTS, DT\n"
+            "0 0 0 1e300 0 0 0 0\n0 0 0 0\n")
+rc, lines, summary, out = run("diverge_at2", portal, "Loading/Accelerogram X=" + at2,
+                              "Time integration/End time=0.2")
+expect_divergence("AT2 sample of 1e300 g", rc, lines, summary, 0.041, "ux",
+                  "member 'colA', 2.5 m from its start", portal_size)
+# the rows before the divergence are in history.csv, up to t = 0.04 s
+with open(os.path.join(out, "history.csv")) as f:
+    last = f.read().splitlines()[-1]
+ctx.check("AT2 sample of 1e300 g: last history row (s)", float(last.split(",")[0]), 0.04,
+          rel=1e-12)
+# CD-Lagrange between rows: checked every 256 steps (dt = 1e-6 s, rows every 1e-3 s)
+rc, lines, summary, _ = run("diverge_cd", bar, "Loading/Gravity=-1e250, 0, 0",
+                            "Output/History interval=1e-3", "Output/Output interval=0",
+                            "Time integration/End time=0.01")
+m = diverged.match(lines[0]) if len(lines) == 1 else None
+ctx.check_true("CD-Lagrange, huge gravity: caught between rows", rc == 1 and m is not None
+               and summary is not None and summary.get("status") == "failed", str(lines))
+if m:
+    ctx.check("CD-Lagrange, huge gravity: time of the check (s)", float(m.group(1)), 256e-6,
+              rel=1e-9)
+    ctx.check("CD-Lagrange, huge gravity: model size (m): the floor of 1 m", float(m.group(6)),
+              1.0, rel=1e-12)
+
+# warnings: one line on stderr each and the list "warnings" of summary.json
+before = os.path.join(ctx.work, "before_zero.txt")
+with open(before, "w") as f:
+    f.write("# time (s)  acceleration (g)\n-3 0.5\n-2 1\n-1 0.5\n")
+rc, lines, summary, out = run("record_before_zero", portal, "Loading/Base acceleration=0, 0, 0",
+                              "Loading/Accelerogram X=" + before,
+                              "Time integration/End time=0.05")
+warning = ("Loading/Accelerogram X: the record '%s' runs from t = -3 s to t = -1 s, wholly "
+           "outside the run from t = 0 to End time = 0.05 s: it excites nothing" % before)
+ctx.check_true("a record wholly before t = 0: completes with one warning line",
+               rc == 0 and lines == ["hati: warning: " + warning], "(exit %d) %s" % (rc, lines))
+ctx.check_true("a record wholly before t = 0: summary.json lists the warning",
+               summary is not None and summary.get("warnings") == [warning]
+               and summary.get("status") == "completed", str(summary and summary.get("warnings")))
+ux = np.loadtxt(os.path.join(out, "history.csv"), delimiter=",", skiprows=1)[:, 1]
+ctx.check("a record wholly before t = 0: it excites nothing (max |A1 ux|, m)",
+          np.max(np.abs(ux)), 0.0, abs_tol=0.0)
+
+split = ctx.prm("bar_split_impact.prm")  # dt = 2e-7 s, End time = 2e-3 s
+rc, lines, summary, _ = run("few_macro_steps", split, "Time integration/HATI/Time step ratio=5000",
+                            "Output/Output interval=0")
+warning = ("Time integration/HATI/Time step ratio = 5000 makes the macro step DT = 0.001 s: "
+           "only 2 macro steps to End time = 0.002 s (fewer than 10; the implicit subdomain "
+           "and the outputs are sampled that coarsely)")
+ctx.check_true("HATI with 2 macro steps: completes with one warning line",
+               rc == 0 and lines == ["hati: warning: " + warning], "(exit %d) %s" % (rc, lines))
+ctx.check_true("HATI with 2 macro steps: summary.json lists the warning, 2 steps",
+               summary is not None and summary.get("warnings") == [warning]
+               and summary.get("n_steps") == 2, str(summary and summary.get("warnings")))
+
+rc, lines, summary, _ = run("no_warnings", split, "Output/Output interval=0")
+ctx.check_true("a normal run: no line on stderr, \"warnings\": [] in summary.json",
+               rc == 0 and lines == [] and summary is not None
+               and summary.get("warnings") == [] and summary.get("status") == "completed",
+               "(exit %d) %s %s" % (rc, lines, summary and summary.get("warnings")))
+
+# a newline in a name (the table bad_inputs/cases.ini cannot hold one):
+# refused in one line, before the output folder is made
+rc, lines, summary, out = run("newline_name", bar, "Contact/Name=a\nb,1,2")
+ctx.check_true("a newline in Contact/Name refused in one line",
+               rc == 1 and lines == ["hati: error: Contact/Name: the contact name 'a\\nb,1,2' "
+                                     "has the character '\\n'; a name may have only letters, "
+                                     "digits, '_', '-' and '.' (it goes unquoted into the CSV "
+                                     "files, summary.json and parameters.prm)"]
+               and not os.path.exists(out), "(exit %d) %s" % (rc, lines))
 
 # the documented entry names exist
 rc = subprocess.run([ctx.hati, "--print-parameters"], capture_output=True, text=True)

@@ -3,6 +3,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/numerics/data_out.h>
 
@@ -428,6 +429,30 @@ template <int dim> std::vector<Point<3>> Continuum<dim>::cell_centres() const
       centres[cell->active_cell_index()][d] = centre[d];
   }
   return centres;
+}
+
+template <int dim> double Continuum<dim>::size() const
+{
+  const auto box = GridTools::compute_bounding_box(triangulation);
+  return box.get_boundary_points().first.distance(box.get_boundary_points().second);
+}
+
+template <int dim>
+DofDescription Continuum<dim>::describe_dof(const types::global_dof_index dof) const
+{
+  for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const unsigned int v : cell->vertex_indices())
+      for (unsigned int c = 0; c < dim; ++c)
+        if (cell->vertex_dof_index(v, c) == dof)
+        {
+          std::ostringstream where;
+          where << "the node " << (dim == 1 ? "x = " : "(");
+          for (unsigned int d = 0; d < dim; ++d)
+            where << (d > 0 ? ", " : "") << cell->vertex(v)[d];
+          where << (dim == 1 ? " m" : ") m");
+          return {std::string("u") + "xyz"[c], where.str(), false};
+        }
+  return {};
 }
 
 template <> std::string Continuum<1>::description() const

@@ -1,5 +1,6 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria_description.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/numerics/data_out.h>
@@ -496,6 +497,12 @@ std::vector<Point<3>> Frame::cell_centres() const
   return centres;
 }
 
+double Frame::size() const
+{
+  const auto box = GridTools::compute_bounding_box(triangulation);
+  return box.get_boundary_points().first.distance(box.get_boundary_points().second);
+}
+
 std::vector<std::string> Frame::cell_members() const
 {
   std::vector<std::string> names(cells.size());
@@ -523,6 +530,25 @@ SummaryEntries Frame::summary_entries(const std::map<std::string, double> &) con
 }
 
 std::string Frame::results_table() const { return section_force_output.results_table(); }
+
+DofDescription Frame::describe_dof(const types::global_dof_index dof) const
+{
+  static const char *const components[6] = {"ux", "uy", "uz", "rx", "ry", "rz"};
+  for (const auto &[node, dofs] : node_dofs)
+    for (unsigned int c = 0; c < 6; ++c)
+      if (dofs[c] == dof)
+        return {components[c], "node '" + node + "'", c >= 3};
+  for (const auto &cell : cells)
+    for (unsigned int k = 0; k < 12; ++k)
+      if (cell.dofs[k] == dof)
+      {
+        std::ostringstream where;
+        where << "member '" << frame.members[cell.member].name << "', "
+              << cell.position + (k < 6 ? 0. : cell.length) << " m from its start";
+        return {components[k % 6], where.str(), k % 6 >= 3};
+      }
+  return {};
+}
 
 std::string Frame::description() const
 {

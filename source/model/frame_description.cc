@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <hati/base/names.h>
 #include <hati/model/frame_description.h>
 
 #include <cmath>
@@ -24,6 +25,48 @@ void require_unique(const std::vector<std::string> &names,
   std::set<std::string> seen;
   for (const auto &n : names)
     require(seen.insert(n).second, entry, kind + " '" + n + "' is " + twice);
+}
+
+/**
+ * Every name the description defines or refers to follows the rule of
+ * check_name() (issue #19, finding 4): checked first, so that a name that
+ * cannot be written is refused as such.
+ */
+void validate_names(const FrameDescription &d)
+{
+  const std::string frame = "Model/Frame/";
+  for (const auto &n : d.node_order)
+    check_name(n, frame + "Nodes", "node", NameKind::node);
+  for (const auto &[name, m] : d.materials)
+    check_name(name, frame + "Materials", "material");
+  for (const auto &[name, s] : d.sections)
+    check_name(name, frame + "Sections", "section");
+  for (const auto &m : d.members)
+  {
+    check_name(m.name, frame + "Members", "member");
+    for (const auto &n :
+         m.path.empty() ? std::vector<std::string>{m.start, m.end} : m.path)
+      check_name(n, frame + "Members", "node", NameKind::node);
+  }
+  for (const auto &p : d.point_masses)
+    check_name(p.node, frame + "Point masses", "node", NameKind::node);
+  for (const auto &s : d.supports)
+    check_name(s.node, frame + "Supports", "node", NameKind::node);
+  for (const auto &n : d.hinged_joints)
+    check_name(n, frame + "Hinged joints", "node", NameKind::node);
+  for (const auto &[node, load] : d.nodal_loads)
+    check_name(node, frame + "Nodal loads", "node", NameKind::node);
+  for (const auto &c : d.contacts)
+  {
+    check_name(c.name, frame + "Contacts", "contact");
+    check_name(c.node, frame + "Contacts", "node", NameKind::node);
+    if (!c.other_node.empty())
+      check_name(c.other_node, frame + "Contacts", "node", NameKind::node);
+  }
+  for (const auto &n : d.monitor_nodes)
+    check_name(n, frame + "Monitor nodes", "monitor", NameKind::node);
+  for (const auto &m : d.section_force_members)
+    check_name(m, frame + "Section force members", "member");
 }
 
 /** The nodes, materials and sections on their own. */
@@ -167,6 +210,7 @@ void FrameDescription::add_node(const std::string &name, const Point<3> &x)
 
 void FrameDescription::validate() const
 {
+  validate_names(*this);
   validate_parts(*this);
   const std::set<std::string> used_nodes = validate_members(*this);
   validate_nodal_data(*this, used_nodes);

@@ -95,7 +95,9 @@ void FrameParameters::declare_parameters(ParameterHandler &prm)
   prm.declare_entry("Nodes",
                     "",
                     Patterns::Anything(),
-                    "Named nodes, 'name: x, y, z; ...' (m, global axes).");
+                    "Named nodes, 'name: x, y, z; ...' (m, global axes). Names of "
+                    "nodes, materials, sections, members and contacts have only "
+                    "letters, digits, '_', '-' and '.'; a node name is not a number.");
   prm.declare_entry(
       "Materials",
       "steel: 2.1e11, 0.3, 7850",

@@ -1,8 +1,10 @@
 #include <deal.II/base/utilities.h>
 
 #include <hati/base/input_file.h>
+#include <hati/base/names.h>
 #include <hati/model/model.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -71,7 +73,8 @@ void CommonModelParameters::declare_parameters(ParameterHandler &prm)
   prm.declare_entry("Name",
                     "contact",
                     Patterns::Anything(),
-                    "Name of the contact, used in contacts.csv.");
+                    "Name of the contact, used in contacts.csv: letters, digits, "
+                    "'_', '-' and '.' only.");
   prm.declare_entry("Restitution coefficient",
                     "0",
                     Patterns::Double(0., 1.),
@@ -118,6 +121,7 @@ void CommonModelParameters::parse_parameters(ParameterHandler &prm)
 
   prm.enter_subsection("Contact");
   contact_name = prm.get("Name");
+  check_name(contact_name, "Contact/Name", "contact");
   restitution = prm.get_double("Restitution coefficient");
   initial_gap = prm.get_double("Initial gap");
   prm.leave_subsection();
@@ -187,6 +191,21 @@ void DecompositionParameters::parse_parameters(ParameterHandler &prm)
        Utilities::split_string_list(prm.get("Explicit members"), ','))
     if (!Utilities::trim(m).empty())
       members.push_back(Utilities::trim(m));
+}
+
+double Model::size() const
+{
+  const std::vector<Point<3>> centres = cell_centres();
+  if (centres.empty())
+    return 0.;
+  Point<3> low = centres[0], high = centres[0];
+  for (const auto &x : centres)
+    for (unsigned int d = 0; d < 3; ++d)
+    {
+      low[d] = std::min(low[d], x[d]);
+      high[d] = std::max(high[d], x[d]);
+    }
+  return low.distance(high);
 }
 
 std::vector<unsigned char>

@@ -285,13 +285,14 @@ std::string RunDirectory::create(const std::string &name)
   return dir + "/" + name;
 }
 
-void RunDirectory::fail(const std::string &message) noexcept
+void RunDirectory::fail(const std::string &message,
+                        const std::vector<std::string> &warnings) noexcept
 {
   if (!begun())
     return;
   try
   {
-    write_file_atomically(dir + "/summary.json", failed_summary(message));
+    write_file_atomically(dir + "/summary.json", failed_summary(message, warnings));
   }
   catch (...)
   {

@@ -59,9 +59,24 @@ std::string document(const SummaryEntries &entries)
 
 std::string to_json(const SummaryValue &value) { return dump(json_value(value)); }
 
-void write_summary(const std::string &filename, const SummaryEntries &entries)
+namespace
+{
+/** The `warnings` entry: a list of strings, empty if none. */
+SummaryValue warning_list(const std::vector<std::string> &warnings)
+{
+  SummaryValue list = SummaryValue::list();
+  for (const auto &w : warnings)
+    list.push_back(w);
+  return list;
+}
+} // namespace
+
+void write_summary(const std::string &filename,
+                   const SummaryEntries &entries,
+                   const std::vector<std::string> &warnings)
 {
   auto all = entries;
+  all.emplace_back("warnings", warning_list(warnings));
   if (stop_requested())
   {
     all.emplace_back("status", "interrupted");
@@ -74,8 +89,10 @@ void write_summary(const std::string &filename, const SummaryEntries &entries)
   write_file_atomically(filename, document(all));
 }
 
-std::string failed_summary(const std::string &message)
+std::string failed_summary(const std::string &message,
+                           const std::vector<std::string> &warnings)
 {
-  return document({{"status", "failed"}, {"message", message}});
+  return document(
+      {{"warnings", warning_list(warnings)}, {"status", "failed"}, {"message", message}});
 }
 } // namespace hati

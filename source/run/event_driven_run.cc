@@ -31,11 +31,12 @@ void run_event_driven(Problem &problem, RunDirectory &directory)
             << " s to t = " << T << " s" << std::endl;
 
   WallClock output_clock; // a TimerOutput section costs more than a row
+  const Watchdog watchdog(*problem.model, system);
   auto write = [&]()
   {
     const WallClock::Scope scope(output_clock);
     const OutputState s = contact_state(integrator, 0.); // impulses act at an instant
-    check_finite(*s.displacement, s.time);
+    check_state(watchdog, writer, *s.displacement, s.velocity, s.time);
     writer.write_history(s);
     writer.write_energy(s.time, integrator.energies());
     writer.track_contacts(s.gaps, s.impulses);
@@ -82,7 +83,8 @@ void run_event_driven(Problem &problem, RunDirectory &directory)
                  {"n_impacts", integrator.n_events()},
                  {"max_penetration", writer.max_penetration()},
                  {"energy_balance_error", drift},
-                 {"energy_balance_relative", scale > 0. ? drift / scale : 0.}});
+                 {"energy_balance_relative", scale > 0. ? drift / scale : 0.}},
+                problem.warnings);
   std::cout << "  done: " << integrator.n_events()
             << " impacts located, energy balance error " << drift << " J (output "
             << output_clock.seconds() << " s in " << output_clock.calls()

@@ -95,7 +95,8 @@ void run_modal_analysis(Problem &problem, RunDirectory &directory)
                  {"n_dofs", system.n_dofs()},
                  {"frequencies", list},
                  {"n_closed_contact_rows", r.n_closed_contacts},
-                 {"wall_time", wall}});
+                 {"wall_time", wall}},
+                problem.warnings);
   std::cout << "  modes.csv and mode shapes (modes.pvd: 'time' = mode number) in "
             << directory.path() << "/" << std::endl;
 }

@@ -2,6 +2,7 @@
 
 #include <hati/analysis/modal_damping.h>
 #include <hati/analysis/static_analysis.h>
+#include <hati/base/names.h>
 #include <hati/loading/accelerogram.h>
 #include <hati/loading/base_excitation.h>
 #include <hati/run/analysis_registry.h>
@@ -10,6 +11,8 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <iostream>
+#include <sstream>
 
 namespace hati
 {
@@ -87,6 +90,7 @@ void Problem::add_loads()
           << record->values().size() << " samples to t = " << record->times().back()
           << " s, peak " << peak << " m/s^2 (" << peak / standard_gravity
           << " g) at t = " << at << " s" << std::endl;
+      warn_if_outside_run(*record, d);
       const auto step = acceleration[d];
       acceleration[d] = [record, step](const double t)
       { return (*record)(t) + (step ? step(t) : 0.); };
@@ -100,6 +104,21 @@ void Problem::add_loads()
       out << ' ' << m;
     out << std::endl;
   }
+}
+
+void Problem::warn_if_outside_run(const Accelerogram &record, const unsigned int d)
+{
+  const double first = record.times().front(), last = record.times().back();
+  const double end = time_parameters.end_time;
+  if (analysis_parameters.type != "transient" || (last > 0. && first < end))
+    return;
+  std::ostringstream s;
+  s << "Loading/Accelerogram "
+    << "XYZ"[d] << ": the record '" << printable(common_parameters.accelerogram_files[d])
+    << "' runs from t = " << first << " s to t = " << last
+    << " s, wholly outside the run from t = 0 to End time = " << end
+    << " s: it excites nothing";
+  warn(s.str());
 }
 
 void Problem::decompose()
@@ -165,6 +184,13 @@ void Problem::set_static_initial_state()
   const SummaryValue entry = report_static_contact_forces(forces);
   if (entry.kind() != SummaryValue::Kind::null)
     initial_state_summary.emplace_back("static_contact_forces", entry);
+}
+
+void Problem::warn(const std::string &message)
+{
+  warnings.push_back(message);
+  if (out.is_active())
+    std::cerr << "hati: warning: " << message << std::endl;
 }
 
 SummaryValue Problem::report_static_contact_forces(const std::vector<double> &forces)

@@ -16,6 +16,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <type_traits>
 
 namespace hati
@@ -52,6 +53,9 @@ OutputState output_state(const Newmark &integrator)
   s.velocity = &integrator.velocity();
   return s;
 }
+
+/** Fewer macro steps of HATI than this get a warning. */
+constexpr unsigned long min_macro_steps = 10;
 
 /** One transient run of a stepping integrator: run_time_loop() in parts. */
 template <class Integrator> class TimeLoop
@@ -93,6 +97,8 @@ private:
   std::vector<std::unique_ptr<Postprocessor>> postprocessors;
   ContactStatistics statistics;
   Progress progress;
+  /** The state finite and within its bound (at rows and between them). */
+  const Watchdog watchdog;
   /** n_steps unless SIGINT/SIGTERM stopped the loop. */
   unsigned long steps_done = 0;
   unsigned long micro_step = 0;
@@ -123,10 +129,22 @@ TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
       statistics(problem.system.contacts,
                  initial_gaps(problem.system),
                  problem.output_parameters.contact_force_window),
-      progress(problem.output_parameters.progress_interval, end_time)
+      progress(problem.output_parameters.progress_interval, end_time),
+      watchdog(*problem.model, problem.system)
 {
   std::cout << "  " << n_steps << " steps of " << dt << " s to t = " << end_time << " s"
             << std::endl;
+  if constexpr (std::is_same_v<Integrator, HATICoupling>)
+    if (n_steps < min_macro_steps)
+    {
+      std::ostringstream s;
+      s << "Time integration/HATI/Time step ratio = " << integrator.time_step_ratio()
+        << " makes the macro step DT = " << dt << " s: only " << n_steps << " macro step"
+        << (n_steps == 1 ? "" : "s") << " to End time = " << end_time << " s (fewer than "
+        << min_macro_steps
+        << "; the implicit subdomain and the outputs are sampled that coarsely)";
+      problem.warn(s.str());
+    }
   // per contact name: impacts, peak force, time out of contact, episodes
   writer.set_initial_contacts(initial_gaps(system));
   for (const auto &entry : postprocessor_registry().entries())
@@ -140,7 +158,7 @@ template <class Integrator> void TimeLoop<Integrator>::write(const unsigned long
 {
   const WallClock::Scope scope(output_clock);
   const OutputState s = output_state(integrator);
-  check_finite(*s.displacement, s.time);
+  check_state(watchdog, writer, *s.displacement, s.velocity, s.time);
   if (step % every_history == 0 || step == n_steps)
   {
     for (const auto &p : postprocessors)
@@ -197,10 +215,15 @@ template <class Integrator> void TimeLoop<Integrator>::run(TimerOutput &timer)
       }
     if (step % every_history == 0 || (every_vtu > 0 && step % every_vtu == 0) ||
         step == n_steps)
-      write(step);
+      write(step); // checks the state
+    else if (!explicit_scheme || step % Watchdog::check_interval == 0)
+      check_state(watchdog,
+                  writer,
+                  integrator.displacement(),
+                  &integrator.velocity(),
+                  integrator.time());
     if ((!explicit_scheme || (step & 255) == 0) && progress.due())
     {
-      check_finite(integrator.displacement(), integrator.time());
       progress.print(integrator.time(), step);
       writer.flush();
     }
@@ -295,7 +318,7 @@ void TimeLoop<Integrator>::finish(TimerOutput &timer, SummaryEntries summary)
   std::cout << problem.model->results_table();
   for (const auto &p : postprocessors)
     p->finish(summary, std::cout);
-  write_summary(directory.path() + "/summary.json", summary);
+  write_summary(directory.path() + "/summary.json", summary, problem.warnings);
   std::cout << "  done: " << steps_done << " steps in " << wall << " s (output "
             << output_clock.seconds() << " s in " << output_clock.calls() << " calls); ";
   if (!system.contacts.empty())

@@ -91,6 +91,7 @@ public:
   void select_part(const std::vector<unsigned char> &cell_parts, const int part) override;
   void write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const override;
   std::vector<Point<3>> cell_centres() const override;
+  double size() const override { return frame.size(); }
   std::vector<std::string> cell_members() const override;
   bool has_members() const override { return true; }
   std::string results_table() const override;
@@ -99,6 +100,11 @@ public:
                             const double time,
                             const Vector<double> &U) const override;
   std::string description() const override;
+  /** Frame::describe_dof(). */
+  DofDescription describe_dof(const types::global_dof_index dof) const override
+  {
+    return frame.describe_dof(dof);
+  }
   /** Model/Bridge crane/Damping ratio (-). */
   double default_damping_ratio() const override { return crane.damping_ratio; }
   /**

@@ -83,6 +83,10 @@ public:
   void write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const override;
   std::string description() const override;
   std::vector<Point<3>> cell_centres() const override;
+  /** The diagonal of the box around the vertices (m). */
+  double size() const override;
+  /** The component and the position of the node (m). */
+  DofDescription describe_dof(const types::global_dof_index dof) const override;
 
 private:
   /** The DoFs of the monitor points and the nodes of the end x = L. */

@@ -48,7 +48,11 @@ public:
   void build(const CommonModelParameters &common, DiscreteSystem &system) override;
   void write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const override;
   std::string description() const override;
+  /** A named node, or the member and the distance from its start (m). */
+  DofDescription describe_dof(const types::global_dof_index dof) const override;
   std::vector<Point<3>> cell_centres() const override;
+  /** The diagonal of the box around the vertices (m). */
+  double size() const override;
   std::vector<std::string> cell_members() const override;
   bool has_members() const override { return true; }
   std::string section_forces_header() const override;

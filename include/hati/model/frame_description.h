@@ -92,10 +92,11 @@ struct FrameDescription
 
   /**
    * Check the description as a whole, before anything is built from it:
-   * at least one member; no node, member or support given twice; every
-   * node, section and material a member names exists; no member or mesh
-   * element of zero length and no node coordinates that overflow; every
-   * node that a point mass, support, hinged joint, monitor, nodal load or
+   * every name it defines or names follows check_name() (letters, digits,
+   * `_`, `-`, `.`; node names `@<tag>` or not a number); at least one member; no node,
+   * member or support given twice; every node, section and material a member names
+   * exists; no member or mesh element of zero length and no node coordinates that
+   * overflow; every node that a point mass, support, hinged joint, monitor, nodal load or
    * contact names is a node of a member; every section-force member exists;
    * sections, materials, masses, springs and contacts within their ranges.
    * Throws a one-line error naming the `Model/Frame` entry otherwise.

@@ -86,6 +86,17 @@ struct VtuSnapshot
   unsigned int cycle = 0;
 };
 
+/** What a DoF of a model is, for messages (the watchdog of a transient run). */
+struct DofDescription
+{
+  /** The component, `ux`, `uy`, `uz` (m) or `rx`, `ry`, `rz` (rad); empty if unknown. */
+  std::string component;
+  /** Where it sits, e.g. `node 'A1'`; empty if unknown. */
+  std::string location;
+  /** Whether the component is a rotation (rad). */
+  bool rotation = false;
+};
+
 /**
  * A model turns its `.prm` description into a DiscreteSystem (mesh, DoFs,
  * lumped mass, stiffness, loads, contacts, monitors, initial state) and
@@ -110,6 +121,14 @@ public:
    * dimensions), in the order of the active cell index; call after build().
    */
   virtual std::vector<Point<3>> cell_centres() const = 0;
+
+  /**
+   * The size of the model (m): the diagonal of the box around its mesh
+   * (call after build()); by default that of the cell centres, 0 for a
+   * model without cells. The watchdog of a transient run bounds the
+   * displacements by a multiple of it.
+   */
+  virtual double size() const;
 
   /** Name of the member of every active cell (frames); empty otherwise. */
   virtual std::vector<std::string> cell_members() const { return {}; }
@@ -140,6 +159,15 @@ public:
 
   /** One line describing the model for the terminal and summary.json. */
   virtual std::string description() const = 0;
+
+  /**
+   * The component and the place of the DoF @p dof of the whole model's
+   * system, for messages (call after build()); nothing known by default.
+   */
+  virtual DofDescription describe_dof(const types::global_dof_index /*dof*/) const
+  {
+    return {};
+  }
 
   /**
    * Model-specific summary.json entries (key, value), given the static

@@ -31,6 +31,11 @@ public:
   void build(const CommonModelParameters &common, DiscreteSystem &system) override;
   void write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const override;
   std::string description() const override;
+  /** `ux`, `uy` or `uz` of the ball. */
+  DofDescription describe_dof(const types::global_dof_index dof) const override
+  {
+    return {dof < 3 ? std::string("u") + "xyz"[dof] : std::string(), "the ball", false};
+  }
   std::vector<Point<3>> cell_centres() const override;
 
 private:

@@ -50,11 +50,13 @@ public:
   std::string create(const std::string &name);
 
   /**
-   * Record a failure: `summary.json` becomes `{"status": "failed", "message":
-   * @p message}`. Only after begin() (a refused run never writes into the
-   * directory of another); never throws.
+   * Record a failure: `summary.json` becomes `{"warnings": @p warnings,
+   * "status": "failed", "message": @p message}` (failed_summary()). Only
+   * after begin() (a refused run never writes into the directory of
+   * another); never throws.
    */
-  void fail(const std::string &message) noexcept;
+  void fail(const std::string &message,
+            const std::vector<std::string> &warnings = {}) noexcept;
 
 private:
   const std::string dir, parameters;

@@ -4,6 +4,7 @@
 #include <hati/base/summary_value.h>
 
 #include <string>
+#include <vector>
 
 namespace hati
 {
@@ -17,14 +18,22 @@ std::string to_json(const SummaryValue &value);
 
 /**
  * Write `summary.json` atomically (write_file_atomically()), one top-level
- * entry per line. The entry `status` is added at the end: `"completed"`,
- * or `"interrupted"` after SIGINT/SIGTERM (stop_requested()), then with
- * `time_reached` (s), the value of the entry `end_time`.
+ * entry per line. The entries `warnings` (the list @p warnings of the
+ * run's warnings, Problem::warn(); empty if none) and `status` are added at
+ * the end: `"completed"`, or `"interrupted"` after SIGINT/SIGTERM
+ * (stop_requested()), then with `time_reached` (s), the value of the entry
+ * `end_time`.
  */
-void write_summary(const std::string &filename, const SummaryEntries &entries);
+void write_summary(const std::string &filename,
+                   const SummaryEntries &entries,
+                   const std::vector<std::string> &warnings);
 
-/** The `summary.json` of a run that failed: `status` `"failed"` and @p message. */
-std::string failed_summary(const std::string &message);
+/**
+ * The `summary.json` of a run that failed: `warnings` (@p warnings),
+ * `status` `"failed"` and @p message.
+ */
+std::string failed_summary(const std::string &message,
+                           const std::vector<std::string> &warnings = {});
 } // namespace hati
 
 #endif

@@ -24,6 +24,8 @@ namespace hati
 {
 using namespace dealii;
 
+class Accelerogram;
+
 /**
  * The one set-up path of hati (doc/architecture.md, section 1): turns the
  * parameters into the model, its discrete system with its loads, the
@@ -81,6 +83,13 @@ public:
    */
   SummaryValue report_static_contact_forces(const std::vector<double> &forces);
 
+  /**
+   * A warning: one line `hati: warning: @p message` on stderr (unless the
+   * output stream of the constructor is silent) and an entry of warnings,
+   * which summary.json lists as `warnings`.
+   */
+  void warn(const std::string &message);
+
   AnalysisParameters analysis_parameters;
   TimeIntegrationParameters time_parameters;
   NewmarkParameters newmark_parameters;
@@ -103,8 +112,16 @@ public:
   std::map<std::string, double> static_contact_forces;
   /** summary.json entries of the set-up (static initial state, default damping). */
   SummaryEntries initial_state_summary;
+  /** The warnings of the run so far (warn()), in order. */
+  std::vector<std::string> warnings;
 
 private:
+  /**
+   * A transient run: warn if the record @p record along the axis @p d lies
+   * wholly outside [0, End time] (it excites nothing).
+   */
+  void warn_if_outside_run(const Accelerogram &record, const unsigned int d);
+
   /** The static equilibrium under the constant loads as the initial state. */
   void set_static_initial_state();
 

@@ -4,6 +4,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/vector.h>
 
+#include <hati/model/model.h>
 #include <hati/output/output_writer.h>
 
 #include <algorithm>
@@ -21,16 +22,61 @@ inline unsigned long steps_between(const double interval, const double dt)
   return std::max<unsigned long>(1, std::llround(interval / dt));
 }
 
-/** Throw a one-line message if @p u holds a NaN or an Inf at time @p t (s). */
-inline void check_finite(const dealii::Vector<double> &u, const double t)
+/**
+ * The finite-state watchdog of a run (issue #19, finding 3): every
+ * displacement (and rotation) must stay finite and within
+ * displacement_factor times the model size L, every velocity finite. L (m)
+ * is the largest of Model::size(), the initial gaps of the contacts, the
+ * initial displacements and 1 m. The transient loops check the state at
+ * every output row and besides every step of Newmark and HATI (a macro
+ * step) and every check_interval steps of CD-Lagrange: one pass over U and
+ * V, negligible beside the steps between two checks. Past the bound the
+ * run stops with one line naming the quantity, its value, the DoF's place
+ * and the time (summary.json: "failed").
+ */
+class Watchdog
 {
-  if (!std::isfinite(u.l2_norm()))
-  {
-    std::ostringstream s;
-    s << "the solution became non-finite (NaN or Inf) at t = " << t << " s";
-    AssertThrow(false, dealii::ExcMessage(s.str()));
-  }
-}
+public:
+  /** The bound of |u| in model sizes (m per m, or rad per m). */
+  static constexpr double displacement_factor = 1e3;
+  /** CD-Lagrange steps between two checks besides those at output rows. */
+  static constexpr unsigned long check_interval = 256;
+
+  /** The bound of @p model, whose system @p system is (call after build()). */
+  Watchdog(const Model &model, const DiscreteSystem &system);
+
+  /**
+   * Throw a one-line message if a displacement of @p u exceeds the bound
+   * or is not finite, or a velocity of @p v (may be null) is not finite, at
+   * time @p t (s; the static analysis: t = 0).
+   */
+  void check(const dealii::Vector<double> &u,
+             const dealii::Vector<double> *v,
+             const double t) const;
+
+  /** The model size L (m). */
+  double model_size() const { return size; }
+
+private:
+  /** The message of a state check() refused. */
+  [[noreturn]] void fail(const dealii::Vector<double> &u,
+                         const dealii::Vector<double> *v,
+                         const double t) const;
+
+  const Model &model;
+  double size;
+};
+
+/**
+ * Watchdog::check() of @p u, @p v at @p t (s); on a failure the rows of
+ * @p writer so far are flushed first (best effort), so that the files end
+ * at the last output row before the divergence. Call it before a row.
+ */
+void check_state(const Watchdog &watchdog,
+                 OutputWriter &writer,
+                 const dealii::Vector<double> &u,
+                 const dealii::Vector<double> *v,
+                 const double t);
 
 /**
  * The state of an integrator with contacts for the output writer; the
