@@ -110,6 +110,12 @@ void Problem::decompose()
 
 void Problem::prepare_transient()
 {
+  AssertThrow(!damping.frequency_range() || time_parameters.method == "CD-Lagrange" ||
+                  time_parameters.method == "Newmark",
+              ExcMessage("Time integration/Damping/Type = frequency range is applied by "
+                         "the CD-Lagrange and Newmark integrators only (not yet by "
+                         "Method = " +
+                         time_parameters.method + "): use Type = Rayleigh."));
   if (time_parameters.method == "HATI")
     decompose(); // the subdomains' initial state is copied below
   if (analysis_parameters.initial_state == "static")
@@ -133,12 +139,6 @@ void Problem::prepare_transient()
               ExcMessage("Time integration/Damping: Rayleigh damping is applied by the "
                          "CD-Lagrange and Newmark integrators only; remove it for "
                          "Method = event-driven."));
-  AssertThrow(!damping.frequency_range() || time_parameters.method == "CD-Lagrange" ||
-                  time_parameters.method == "Newmark",
-              ExcMessage("Time integration/Damping/Type = frequency range is applied by "
-                         "the CD-Lagrange and Newmark integrators only (not yet by "
-                         "Method = " +
-                         time_parameters.method + "): use Type = Rayleigh."));
   add_damping_summary();
 }
 
