@@ -58,17 +58,27 @@ void MaxwellMemory::update(const Vector<double> &v)
   const unsigned int n = S.size(), L = alpha.size();
   const double *__restrict vv = v.data();
   double *__restrict s = S.data();
-  for (unsigned int i = 0; i < n; ++i)
-    s[i] = 0.;
+  // one pass over the DoFs, the branches inside (at most 8): q_l and S
+  // stay in cache
+  double *ql[8];
+  double e[8], g[8], a[8];
   for (unsigned int l = 0; l < L; ++l)
   {
-    double *__restrict ql = q[l].data();
-    const double e = decay[l], g = gain[l], a = alpha[l];
-    for (unsigned int i = 0; i < n; ++i)
+    ql[l] = q[l].data();
+    e[l] = decay[l];
+    g[l] = gain[l];
+    a[l] = alpha[l];
+  }
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    double si = 0.;
+    for (unsigned int l = 0; l < L; ++l)
     {
-      ql[i] = e * ql[i] + g * vv[i];
-      s[i] += a * ql[i];
+      const double x = e[l] * ql[l][i] + g[l] * vv[i];
+      ql[l][i] = x;
+      si += a[l] * x;
     }
+    s[i] = si;
   }
 }
 

@@ -36,7 +36,7 @@ public:
   MaxwellMemory() = default;
 
   /**
-   * The branches @p branches (alpha_l >= 0, tau_l > 0 s) for the time step
+   * The branches @p branches (at most 8, alpha_l >= 0, tau_l > 0 s) for the time step
    * @p dt (s) on @p n_dofs DoFs, all memory variables zero (a relaxed
    * state). Without branches the object is inactive.
    */
