@@ -57,7 +57,7 @@ OutputWriter::OutputWriter(RunDirectory &run,
   energy.open(run.create("energy.csv"));
   energy << "time,kinetic,internal,external_work,contact_work,dissipated,interface_work,"
             "total,balance_drift,kinetic_explicit,kinetic_implicit,internal_explicit,"
-            "internal_implicit\n";
+            "internal_implicit,damping_stored\n";
 
   const std::string header = model.section_forces_header();
   if (!header.empty())
@@ -159,12 +159,13 @@ void OutputWriter::write_energy(const double time, const Energies &e)
                            std::abs(e.internal),
                            std::abs(e.external_work),
                            std::abs(e.contact_work),
-                           std::abs(e.interface_work)});
+                           std::abs(e.interface_work),
+                           std::abs(e.damping_stored)});
   energy << time << ',' << e.kinetic << ',' << e.internal << ',' << e.external_work << ','
          << e.contact_work << ',' << e.dissipated << ',' << e.interface_work << ','
          << total << ',' << last_drift << ',' << e.kinetic_explicit << ','
          << e.kinetic_implicit << ',' << e.internal_explicit << ',' << e.internal_implicit
-         << '\n';
+         << ',' << e.damping_stored << '\n';
   flush_if_due();
 }
 

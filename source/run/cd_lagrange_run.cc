@@ -16,12 +16,16 @@ void run_cd_lagrange(Problem &problem, RunDirectory &directory)
   CDLagrange integrator(problem.system,
                         problem.time_parameters.time_step,
                         problem.time_parameters.safety_factor,
-                        problem.damping);
+                        problem.damping.rayleigh,
+                        problem.damping.branches);
   timer.leave_subsection();
   std::cout << "  CD-Lagrange: dt_crit = " << integrator.critical_time_step() << " s";
   if (integrator.damped())
     std::cout << ", Rayleigh a0 = " << integrator.mass_damping_coefficient()
               << " 1/s, a1 = " << integrator.stiffness_damping_coefficient() << " s";
+  if (integrator.memory().active())
+    std::cout << ", frequency-range damping (" << integrator.memory().n_branches()
+              << " branches, sum alpha = " << integrator.memory().alpha_sum() << ")";
   std::cout << std::endl;
   run_time_loop(
       integrator,

@@ -31,7 +31,7 @@ std::unique_ptr<HATICoupling> make_coupling(const Problem &problem)
                                           problem.time_parameters.safety_factor,
                                           problem.hati_parameters,
                                           problem.newmark_parameters,
-                                          problem.damping);
+                                          problem.damping.rayleigh);
   }
   catch (const ExceptionBase &e)
   {

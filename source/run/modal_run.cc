@@ -87,16 +87,30 @@ void run_modal_analysis(Problem &problem, RunDirectory &directory)
   SummaryValue list = SummaryValue::list();
   for (const double f : r.frequencies)
     list.push_back(f);
+  SummaryEntries summary{{"analysis", "modal"},
+                         {"model", problem.model->description()},
+                         {"n_dofs", system.n_dofs()},
+                         {"frequencies", list},
+                         {"n_closed_contact_rows", r.n_closed_contacts}};
+  if (problem.damping.frequency_range())
+  {
+    // the damping ratio the fitted branches give each mode (A8)
+    std::cout << "  frequency-range damping (Time integration/Damping), ratio per mode:";
+    SummaryValue ratios = SummaryValue::list();
+    for (unsigned int k = 0; k < r.frequencies.size(); ++k)
+    {
+      const double xi = problem.damping.branches.damping_ratio(r.frequencies[k]);
+      ratios.push_back(xi);
+      std::cout << (k % 6 == 0 ? "\n   " : "") << std::setw(5) << k + 1 << ": "
+                << std::fixed << std::setprecision(4) << xi << std::defaultfloat;
+    }
+    std::cout << std::endl;
+    summary.emplace_back("damping_ratios", ratios);
+  }
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  write_summary(directory.path() + "/summary.json",
-                {{"analysis", "modal"},
-                 {"model", problem.model->description()},
-                 {"n_dofs", system.n_dofs()},
-                 {"frequencies", list},
-                 {"n_closed_contact_rows", r.n_closed_contacts},
-                 {"wall_time", wall}},
-                problem.warnings);
+  summary.emplace_back("wall_time", wall);
+  write_summary(directory.path() + "/summary.json", summary, problem.warnings);
   std::cout << "  modes.csv and mode shapes (modes.pvd: 'time' = mode number) in "
             << directory.path() << "/" << std::endl;
 }

@@ -19,15 +19,22 @@ void run_newmark(Problem &problem, RunDirectory &directory)
   const NewmarkParameters &parameters = problem.newmark_parameters;
   TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
   timer.enter_subsection("setup (assembly, factorisation)");
-  Newmark integrator(
-      problem.system, problem.time_parameters.time_step, parameters, problem.damping);
+  Newmark integrator(problem.system,
+                     problem.time_parameters.time_step,
+                     parameters,
+                     problem.damping.rayleigh,
+                     problem.damping.branches);
   timer.leave_subsection();
   std::cout << "  Newmark (beta = " << parameters.beta << ", gamma = " << parameters.gamma
             << ", " << parameters.linear_solver << " solver): factorisation "
-            << integrator.factorization_time()
-            << " s, Rayleigh a0 = " << integrator.mass_damping_coefficient()
-            << " 1/s, a1 = " << integrator.stiffness_damping_coefficient() << " s"
-            << std::endl;
+            << integrator.factorization_time() << " s";
+  if (integrator.memory().active())
+    std::cout << ", frequency-range damping (" << integrator.memory().n_branches()
+              << " branches, beta_s = " << integrator.memory().stiffness_factor() << ")";
+  else
+    std::cout << ", Rayleigh a0 = " << integrator.mass_damping_coefficient()
+              << " 1/s, a1 = " << integrator.stiffness_damping_coefficient() << " s";
+  std::cout << std::endl;
   run_time_loop(
       integrator,
       problem,

@@ -133,6 +133,12 @@ void Problem::decompose()
 
 void Problem::prepare_transient()
 {
+  AssertThrow(!damping.frequency_range() || time_parameters.method == "CD-Lagrange" ||
+                  time_parameters.method == "Newmark",
+              ExcMessage("Time integration/Damping/Type = frequency range is applied by "
+                         "the CD-Lagrange and Newmark integrators only (not yet by "
+                         "Method = " +
+                         time_parameters.method + "): use Type = Rayleigh."));
   if (time_parameters.method == "HATI")
     decompose(); // the subdomains' initial state is copied below
   if (analysis_parameters.initial_state == "static")
@@ -145,14 +151,41 @@ void Problem::prepare_transient()
             system.initial_displacement[part.global_dofs[i]];
         part.system.initial_velocity[i] = system.initial_velocity[part.global_dofs[i]];
       }
-  for (const auto &entry : apply_default_damping(
-           model->default_damping_ratio(), system, time_parameters.method, damping))
-    initial_state_summary.push_back(entry);
+  if (!damping.frequency_range())
+    for (const auto &entry : apply_default_damping(model->default_damping_ratio(),
+                                                   system,
+                                                   time_parameters.method,
+                                                   damping.rayleigh))
+      initial_state_summary.push_back(entry);
   AssertThrow(time_parameters.method != "event-driven" ||
-                  (damping.a0 == 0. && damping.a1 == 0.),
+                  (damping.rayleigh.a0 == 0. && damping.rayleigh.a1 == 0.),
               ExcMessage("Time integration/Damping: Rayleigh damping is applied by the "
                          "CD-Lagrange and Newmark integrators only; remove it for "
                          "Method = event-driven."));
+  add_damping_summary();
+}
+
+void Problem::add_damping_summary()
+{
+  // summary.json: the damping model of every transient run
+  SummaryValue alpha = SummaryValue::list(), tau = SummaryValue::list();
+  for (unsigned int l = 0; l < damping.branches.alpha.size(); ++l)
+  {
+    alpha.push_back(damping.branches.alpha[l]);
+    tau.push_back(damping.branches.tau[l]);
+  }
+  SummaryValue branches = SummaryValue::object();
+  branches.set("alpha", alpha);
+  branches.set("tau", tau);
+  initial_state_summary.emplace_back("damping_type", damping.type);
+  initial_state_summary.emplace_back("damping_branches", branches);
+  initial_state_summary.emplace_back("damping_fit_error", damping.fit_error);
+  if (damping.frequency_range())
+    out << "  frequency-range damping " << damping.ratio << " over "
+        << damping.lower_frequency << " to " << damping.upper_frequency
+        << " Hz: " << damping.branches.alpha.size()
+        << " Maxwell branches, sum alpha = " << damping.branches.alpha_sum()
+        << ", fit within " << 100. * damping.fit_error << " %" << std::endl;
 }
 
 void Problem::set_static_initial_state()

@@ -3,6 +3,7 @@
 
 #include <hati/contact/lcp_solver.h>
 #include <hati/time/cd_lagrange.h>
+#include <hati/time/cd_lagrange_kernels.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,132 +15,25 @@
 
 namespace hati
 {
-namespace
-{
-/**
- * Padded row widths with a compiled kernel (the row loop unrolled,
- * bench/explicit_throughput.sh); wider rows use the kernel whose width is
- * known at run time only (W = 0).
- */
-using KernelWidths =
-    std::integer_sequence<unsigned int, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 81, 96>;
-
-/** The padded width of rows of at most @p w entries. */
-template <unsigned int... W>
-unsigned int padded_width(const unsigned int w, std::integer_sequence<unsigned int, W...>)
-{
-  if (w == 0)
-    return 0;
-  for (const unsigned int k : {W...})
-    if (w <= k)
-      return k;
-  return w;
-}
-
-/**
- * `kernel(std::integral_constant<unsigned int, W>())` with the compiled
- * width W equal to @p width, or with W = 0 (the width known at run time
- * only: wider rows, or no stiffness); returns what the kernel returns.
- */
-template <typename Kernel, unsigned int... W>
-double with_kernel_width(const unsigned int width,
-                         const Kernel &kernel,
-                         std::integer_sequence<unsigned int, W...>)
-{
-  double result = 0.;
-  const bool compiled =
-      ((width == W &&
-        ((result = kernel(std::integral_constant<unsigned int, W>())), true)) ||
-       ...);
-  return compiled ? result : kernel(std::integral_constant<unsigned int, 0>());
-}
-
-/**
- * v_new = v + a - S u for a row-padded operator S of width W (A2-A3 with
- * S = dt M^-1 K, a = dt M^-1 F_ext); W = 0: the runtime @p width. W is a
- * compile-time constant so that the row loop is unrolled.
- */
-template <unsigned int W>
-void free_velocity_rows(const unsigned int width,
-                        const unsigned int n,
-                        const unsigned int *__restrict col,
-                        const double *__restrict val,
-                        const double *__restrict u,
-                        const double *__restrict v,
-                        const double *__restrict a,
-                        double *__restrict v_new)
-{
-  const unsigned int w = W > 0 ? W : width;
-  for (unsigned int i = 0; i < n; ++i)
-  {
-    double ku = 0.;
-    for (unsigned int k = 0; k < w; ++k)
-      ku += val[std::size_t(i) * w + k] * u[col[std::size_t(i) * w + k]];
-    v_new[i] = v[i] + a[i] - ku;
-  }
-}
-
-/**
- * The damped free velocity (A7) for a row-padded operator S = dt M^-1 K of
- * width W (W = 0: the runtime @p width): with a = dt M^-1 F_ext,
- * `v_new = c1 v + c2 (a - S u - a1 S v)`, and the damping force of the
- * update `d_new = dt M^-1 D = a - S u - (v_new - v)`, stored in place of
- * the previous one in @p d. Returns the work of the damping force on the
- * increment dt v, `1/2 sum_i m_i v_i (d_old,i + d_new,i)` (J).
- */
-template <unsigned int W>
-double damped_free_velocity_rows(const unsigned int width,
-                                 const unsigned int n,
-                                 const unsigned int *__restrict col,
-                                 const double *__restrict val,
-                                 const double *__restrict u,
-                                 const double *__restrict v,
-                                 const double *__restrict a,
-                                 const double *__restrict m,
-                                 const double c1,
-                                 const double c2,
-                                 const double a1,
-                                 double *__restrict d,
-                                 double *__restrict v_new,
-                                 double *__restrict kv_out)
-{
-  const unsigned int w = W > 0 ? W : width;
-  double work = 0.;
-  for (unsigned int i = 0; i < n; ++i)
-  {
-    double ku = 0., kv = 0.;
-    for (unsigned int k = 0; k < w; ++k)
-    {
-      const std::size_t ik = std::size_t(i) * w + k;
-      ku += val[ik] * u[col[ik]];
-      kv += val[ik] * v[col[ik]];
-    }
-    const double g = a[i] - ku;
-    const double vn = c1 * v[i] + c2 * (g - a1 * kv);
-    const double dn = g - (vn - v[i]);
-    work += m[i] * v[i] * (d[i] + dn);
-    d[i] = dn;
-    v_new[i] = vn;
-    if (kv_out != nullptr)
-      kv_out[i] = kv;
-  }
-  return 0.5 * work;
-}
-} // namespace
+using namespace cd_lagrange_kernels;
 
 CDLagrange::CDLagrange(const DiscreteSystem &system,
                        const double dt,
                        const double safety_factor,
-                       const RayleighDamping &damping)
+                       const RayleighDamping &damping,
+                       const MaxwellBranches &maxwell)
     : system(system), dt(dt), a0(damping.a0), a1(damping.a1),
       c1((1. - 0.5 * damping.a0 * dt) / (1. + 0.5 * damping.a0 * dt)),
-      c2(1. / (1. + 0.5 * damping.a0 * dt))
+      c2(1. / (1. + 0.5 * damping.a0 * dt)), branches(maxwell, dt, system.n_dofs())
 {
   const unsigned int n = system.n_dofs();
   AssertThrow(dt > 0. && std::isfinite(dt),
               ExcMessage("Time integration/Time step must be positive and finite."));
   AssertThrow(a0 >= 0. && a1 >= 0. && std::isfinite(a0) && std::isfinite(a1),
               ExcMessage("Rayleigh damping: a0 and a1 must be >= 0 and finite."));
+  AssertThrow(!branches.active() || !damped(),
+              ExcMessage("CD-Lagrange: Rayleigh and frequency-range damping cannot be "
+                         "combined (Time integration/Damping/Type selects one)."));
 
   check_time_step(safety_factor);
   for (unsigned int i = 0; i < n; ++i)
@@ -171,17 +65,27 @@ void CDLagrange::check_time_step(const double safety_factor)
   // written 2 / (omega_max (sqrt(1 + xi^2) + xi)) to avoid the cancellation.
   // It is the exact limit of the scheme for every mode (doc/theory.md 1.6)
   // and decreases with omega, so the bound omega_max gives a safe step.
+  // With frequency-range damping (A8) the branches act as springs
+  // (sum alpha) K at high frequency: dt_crit = (2/omega_max)/sqrt(1 + sum alpha).
   const double omega_max = system.highest_frequency_bound();
   const double xi = 0.5 * a1 * omega_max;
+  const double alpha_sum = branches.alpha_sum();
   dt_crit = omega_max > 0. ? 2. / (omega_max * (std::sqrt(1. + xi * xi) + xi))
                            : std::numeric_limits<double>::infinity();
+  if (branches.active())
+    dt_crit = omega_max > 0. ? 2. / omega_max / std::sqrt(1. + alpha_sum)
+                             : std::numeric_limits<double>::infinity();
   if (dt > safety_factor * dt_crit)
   {
     std::ostringstream s;
     s.precision(6);
     s << "the time step dt = " << dt << " s is above the stability limit of the "
       << "explicit scheme";
-    if (a1 > 0.)
+    if (branches.active())
+      s << " with frequency-range damping, sum alpha = " << alpha_sum
+        << ": dt_crit = (2/omega_max)/sqrt(1 + sum alpha) = " << dt_crit
+        << " s, omega_max = " << omega_max << " rad/s";
+    else if (a1 > 0.)
       s << " with Rayleigh stiffness damping a1 = " << a1
         << " s: dt_crit = (2/omega_max) (sqrt(1 + xi^2) - xi) = " << dt_crit
         << " s, xi = a1 omega_max / 2 = " << xi << ", omega_max = " << omega_max
@@ -342,6 +246,9 @@ void CDLagrange::predict()
   // (A1) U_{n+1} = U_n + dt V_{n+1/2}
   for (unsigned int i = 0; i < n; ++i)
     u[i] += dt * v[i];
+  // (A8) q_l <- e_l q_l + tau_l (1 - e_l) V_{n+1/2}, S = sum_l alpha_l q_l
+  if (branches.active())
+    branches.update(*V);
   ++n_steps;
   t = n_steps * dt;
 }
@@ -360,7 +267,28 @@ void CDLagrange::free_velocity(const bool with_loads)
   const unsigned int *const col = column.data();
   const double *const val = value.data(), *const u = U.data(), *const v = V->data();
   double *const v_new = V_prev->data();
-  if (!damped)
+  if (branches.active())
+    // (A8) V_free = V_{n+1/2} + dt M^-1 (F_ext(t_{n+1}) - K (U_{n+1} + S_{n+1}));
+    // the branch force K S_{n+1} takes 1/2 dU . K (S_n + S_{n+1}) from the
+    // structure in the step (E1 with the branches, doc/theory.md A8)
+    branches.add_work(with_kernel_width(
+        row_width,
+        [&](auto w)
+        {
+          return branch_free_velocity_rows<decltype(w)::value>(row_width,
+                                                               n,
+                                                               col,
+                                                               val,
+                                                               u,
+                                                               branches.sum().data(),
+                                                               v,
+                                                               a,
+                                                               mass.data(),
+                                                               d_prev.data(),
+                                                               v_new);
+        },
+        KernelWidths()));
+  else if (!damped)
     with_kernel_width(
         row_width,
         [&](auto w)
@@ -491,6 +419,8 @@ void CDLagrange::save(Snapshot &s) const
   s.V = *V;
   s.V_prev = *V_prev;
   s.d_prev = d_prev;
+  s.q = branches.memory();
+  s.branch_work = branches.work();
   s.t = t;
   s.n_steps = n_steps;
   s.gap = gap;
@@ -507,6 +437,8 @@ void CDLagrange::restore(const Snapshot &s)
   *V = s.V;
   *V_prev = s.V_prev;
   d_prev = s.d_prev;
+  if (branches.active())
+    branches.set_memory(s.q, s.branch_work);
   t = s.t;
   n_steps = s.n_steps;
   gap = s.gap;
@@ -637,6 +569,13 @@ std::vector<double> CDLagrange::normal_velocities() const
   return w;
 }
 
+double CDLagrange::dissipated_energy() const
+{
+  return branches.active()
+             ? dissipated + branches.work() - branches.stored_energy(system.stiffness)
+             : dissipated;
+}
+
 Energies CDLagrange::energies() const
 {
   Energies e;
@@ -650,6 +589,11 @@ Energies CDLagrange::energies() const
   e.external_work = force * du + time_dependent_work;
   e.contact_work = contact_work;
   e.dissipated = dissipated;
+  if (branches.active())
+  {
+    e.damping_stored = branches.stored_energy(system.stiffness);
+    e.dissipated += branches.work() - e.damping_stored;
+  }
   e.kinetic_explicit = e.kinetic;
   e.internal_explicit = e.internal;
   return e;

@@ -307,6 +307,7 @@ Energies HATICoupling::energies() const
   r.external_work = e.external_work + i.external_work;
   r.contact_work = e.contact_work;
   r.dissipated = e.dissipated + i.dissipated;
+  r.damping_stored = e.damping_stored + i.damping_stored;
   r.interface_work = interface_work;
   r.kinetic_explicit = e.kinetic;
   r.kinetic_implicit = i.kinetic;

@@ -39,6 +39,13 @@
 // DoFs do not satisfy the equation of motion (their reactions are not
 // computed), but dU = 0 there, so they add nothing. For other (beta, gamma)
 // the balance holds only to O(DT) (gamma > 1/2 dissipates numerically).
+//
+// Frequency-range damping (N4) adds K S to the internal force on both
+// sides: its term is dU.K (S_n + S_{n+1})/2, the work the branches take,
+// booked as MaxwellMemory::add_work(). With the memory update
+// q_l,n+1 = e_l q_l,n + tau_l (1 - e_l) dU / DT, that work is the change of
+// the stored 1/2 sum_l alpha_l q_l.K q_l plus a dissipation; energies()
+// reports the stored part as damping_stored and the rest in dissipated.
 
 namespace hati
 {
@@ -159,13 +166,17 @@ struct Newmark::EffectiveSolver
 Newmark::Newmark(const DiscreteSystem &system,
                  const double DT,
                  const NewmarkParameters &parameters,
-                 const RayleighDamping &damping)
+                 const RayleighDamping &damping,
+                 const MaxwellBranches &maxwell)
     : system(system), dt(DT), beta(parameters.beta), gamma(parameters.gamma),
       a0(damping.a0), a1(damping.a1), direct(parameters.linear_solver == "direct"),
       tolerance(parameters.solver_tolerance),
       use_consistent_mass(system.has_consistent_mass() && parameters.mass != "lumped"),
-      solver(std::make_unique<EffectiveSolver>())
+      solver(std::make_unique<EffectiveSolver>()), branches(maxwell, DT, system.n_dofs())
 {
+  AssertThrow(!branches.active() || (a0 == 0. && a1 == 0.),
+              ExcMessage("Newmark: Rayleigh and frequency-range damping cannot be "
+                         "combined (Time integration/Damping/Type selects one)."));
   AssertThrow(dt > 0., ExcMessage("Newmark: the time step must be > 0 (s)."));
   AssertThrow(gamma >= 0.5, ExcMessage("Newmark: Gamma must be >= 0.5."));
   AssertThrow(
@@ -183,9 +194,12 @@ Newmark::Newmark(const DiscreteSystem &system,
               ExcMessage("Newmark: the DiscreteSystem has no fixed flags."));
 
   // (N2) M_eff = M + gamma DT C + beta DT^2 K
-  //            = (1 + gamma DT a0) M + (beta DT^2 + gamma DT a1) K
+  //            = (1 + gamma DT a0) M + (beta DT^2 + gamma DT a1) K,
+  // with frequency-range damping (N4) beta DT^2 (1 + beta_s) K
   const double mass_factor = 1. + gamma * dt * a0;
-  const double stiffness_factor = beta * dt * dt + gamma * dt * a1;
+  const double stiffness_factor =
+      branches.active() ? beta * dt * dt * (1. + branches.stiffness_factor())
+                        : beta * dt * dt + gamma * dt * a1;
   SparsityPattern diagonal_pattern;
   if (!system.has_stiffness())
   {
@@ -240,6 +254,9 @@ Newmark::Newmark(const DiscreteSystem &system,
   for (auto *v :
        {&U, &V, &A, &F, &CV, &U_star, &V_star, &rhs, &tmp, &F_new, &A_new, &CV_new})
     v->reinit(n);
+  if (branches.active())
+    for (auto *v : {&KS, &KS_new, &W})
+      v->reinit(n);
   set_initial_state(system.initial_displacement, system.initial_velocity);
 }
 
@@ -360,6 +377,9 @@ void Newmark::set_initial_state(const Vector<double> &U0, const Vector<double> &
 
   external_work = 0.;
   dissipated = 0.;
+  // the branches start relaxed, S_0 = 0 (N4)
+  branches.reset();
+  KS = 0.;
 }
 
 void Newmark::solve_with_mass(Vector<double> &x, const Vector<double> &b) const
@@ -413,11 +433,22 @@ void Newmark::free_step()
     }
   }
 
+  // (N4) K acts on W = (1 + beta_s) U* - beta_s U_n + sum_l alpha_l e_l q_l,n
+  const double *displacement = U_star.data();
+  if (branches.active())
+  {
+    const double bs = branches.stiffness_factor();
+    branches.history(W);
+    for (unsigned int i = 0; i < n; ++i)
+      W[i] += U_star[i] + bs * (U_star[i] - U[i]);
+    displacement = W.data();
+  }
+
   // (N2) M_eff A_{n+1} = F_{n+1} - C V* - K U*, K and C in one pass
   const double t_new = (n_steps + 1) * dt;
   system.external_force(t_new, F_new);
   {
-    const double *__restrict f = F_new.data(), *__restrict us = U_star.data(),
+    const double *__restrict f = F_new.data(), *__restrict us = displacement,
                              *__restrict vs = V_star.data(),
                              *__restrict k = row_stiffness.data(),
                              *__restrict c = row_damping.data();
@@ -494,6 +525,21 @@ void Newmark::finish_step()
     dissipated += 0.5 * damping;
     CV.swap(CV_new);
   }
+  if (branches.active())
+  {
+    // (N4) q_l,n+1 = e_l q_l,n + tau_l (1 - e_l) (U_{n+1} - U_n) / DT, and the
+    // branch work 1/2 dU . K (S_n + S_{n+1})
+    W = U_star;
+    W -= U;
+    W /= dt;
+    branches.update(W);
+    stiffness_vmult(KS_new, branches.sum());
+    double branch = 0.;
+    for (unsigned int i = 0; i < n; ++i)
+      branch += (U_star[i] - U[i]) * (KS[i] + KS_new[i]);
+    branches.add_work(0.5 * branch);
+    KS.swap(KS_new);
+  }
 
   U.swap(U_star);
   V.swap(V_star);
@@ -512,6 +558,11 @@ Energies Newmark::energies() const
   e.internal = 0.5 * (U * tmp);
   e.external_work = external_work;
   e.dissipated = dissipated;
+  if (branches.active())
+  {
+    e.damping_stored = branches.stored_energy(system.stiffness);
+    e.dissipated += branches.work() - e.damping_stored;
+  }
   e.kinetic_implicit = e.kinetic;
   e.internal_implicit = e.internal;
   return e;

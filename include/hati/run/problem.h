@@ -9,9 +9,9 @@
 #include <hati/model/discrete_system.h>
 #include <hati/model/model.h>
 #include <hati/parameters/run_parameters.h>
+#include <hati/time/damping.h>
 #include <hati/time/hati_coupling.h>
 #include <hati/time/newmark.h>
-#include <hati/time/rayleigh_damping.h>
 
 #include <array>
 #include <functional>
@@ -93,7 +93,8 @@ public:
   AnalysisParameters analysis_parameters;
   TimeIntegrationParameters time_parameters;
   NewmarkParameters newmark_parameters;
-  RayleighDamping damping;
+  /** Time integration/Damping, with the model's default Rayleigh damping applied. */
+  DampingModel damping;
   HATIParameters hati_parameters;
   DecompositionParameters decomposition_parameters;
   OutputParameters output_parameters;
@@ -122,6 +123,12 @@ private:
    */
   void warn_if_outside_run(const Accelerogram &record, const unsigned int d);
 
+  /**
+   * The summary.json entries of the damping: damping_type,
+   * damping_branches (alpha, tau lists; empty for Rayleigh) and
+   * damping_fit_error (0 for Rayleigh).
+   */
+  void add_damping_summary();
   /** The static equilibrium under the constant loads as the initial state. */
   void set_static_initial_state();
 

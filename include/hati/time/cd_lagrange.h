@@ -5,6 +5,7 @@
 
 #include <hati/model/discrete_system.h>
 #include <hati/time/energies.h>
+#include <hati/time/maxwell_memory.h>
 #include <hati/time/rayleigh_damping.h>
 
 #include <array>
@@ -35,7 +36,10 @@ using namespace dealii;
  * kernel of the same shape computes
  * `V_free = c1 V + c2 dt M^-1 (F_ext - K U - a1 K V)` and the damping force,
  * `c1 = (1 - a0 dt/2) / (1 + a0 dt/2)`, `c2 = 1 / (1 + a0 dt/2)`; the
- * undamped loop is unchanged.
+ * undamped loop is unchanged. With frequency-range damping (A8) the memory
+ * variables (MaxwellMemory) are updated after (A1) and a third kernel
+ * computes `V_free = V + dt M^-1 (F_ext - K (U + S))`, still one pass over
+ * the rows of K.
  */
 class CDLagrange
 {
@@ -49,11 +53,16 @@ public:
    * if `dt > safety_factor * dt_crit` (@p safety_factor, -). The initial
    * half-step velocity is `V_{1/2} = V_0 + dt/2 M^-1 G_0` with
    * `G_0 = F_ext(0) - K U_0 - C V_0` (doc/theory.md 1.1).
+   *
+   * With Maxwell branches @p branches (frequency-range damping, A8; not
+   * combined with Rayleigh damping) the memory variables start at zero and
+   * the critical step is `dt_crit = (2 / omega_max) / sqrt(1 + sum alpha)`.
    */
   CDLagrange(const DiscreteSystem &system,
              const double dt,
              const double safety_factor,
-             const RayleighDamping &damping = RayleighDamping());
+             const RayleighDamping &damping = RayleighDamping(),
+             const MaxwellBranches &branches = MaxwellBranches());
 
   /**
    * One step t_n -> t_{n+1}: (A1)-(A7), i.e. predict(), free_velocity(),
@@ -72,6 +81,8 @@ public:
    * macro-step map). `d_n = dt M^-1 D_n` (m/s) is the damping force of the
    * last update (A7), all zeros without damping. The dissipated energy is
    * quadratic in the state: the coupling corrects it with add_dissipated().
+   * With frequency-range damping (A8) `d_n = dt M^-1 K S_n` and the memory
+   * variables (memory()) are part of the state too.
    */
   std::array<Vector<double> *, 4> linear_state() { return {{&U, V, V_prev, &d_prev}}; }
 
@@ -79,6 +90,9 @@ public:
   struct Snapshot
   {
     Vector<double> U, V, V_prev, d_prev;
+    /** The memory variables q_l and the branch work (A8). */
+    std::vector<Vector<double>> q;
+    double branch_work = 0.;
     double t = 0.;
     unsigned long n_steps = 0;
     std::vector<double> gap, lambda;
@@ -93,8 +107,9 @@ public:
 
   /**
    * Critical time step (s): `(2 / omega_max) (sqrt(1 + xi^2) - xi)`,
-   * `xi = a1 omega_max / 2` (A7; `2 / omega_max` for a1 = 0); +infinity
-   * without stiffness.
+   * `xi = a1 omega_max / 2` (A7; `2 / omega_max` for a1 = 0), or
+   * `(2 / omega_max) / sqrt(1 + sum alpha)` with frequency-range damping
+   * (A8); +infinity without stiffness.
    */
   double critical_time_step() const { return dt_crit; }
   double time_step() const { return dt; }
@@ -121,13 +136,17 @@ public:
   double stiffness_damping_coefficient() const { return a1; }
   /** Whether a0 or a1 is non-zero (the damped kernel is used, A7). */
   bool damped() const { return a0 != 0. || a1 != 0.; }
+  /** The memory variables of frequency-range damping (A8; inactive without). */
+  const MaxwellMemory &memory() const { return branches; }
 
   /**
    * Energy dissipated by the damping since t = 0 (J): the work of the
    * damping force with the velocities of the updates,
-   * `sum_j 1/2 (U_{j+1} - U_j) . (D_j + D_{j+1})` (doc/theory.md 1.6).
+   * `sum_j 1/2 (U_{j+1} - U_j) . (D_j + D_{j+1})` (doc/theory.md 1.6);
+   * with frequency-range damping that work less the energy the branches
+   * store (A8).
    */
-  double dissipated_energy() const { return dissipated; }
+  double dissipated_energy() const;
   /** Add @p energy (J) to dissipated_energy() (corrections of the coupling). */
   void add_dissipated(const double energy) { dissipated += energy; }
 
@@ -135,13 +154,13 @@ public:
   Energies energies() const;
 
 private:
-  /** (A1), see CouplingView::predict(). */
+  /** (A1), then the memory update (A8); see CouplingView::predict(). */
   void predict();
   /** (A2)-(A3), (A7), see CouplingView::free_velocity(). */
   void free_velocity(const bool with_loads = true);
   /** V_free becomes V_{n+3/2}, then (A4)-(A6), see CouplingView::finish_step(). */
   void finish_step(const bool with_contacts = true);
-  /** The stability check of the constructor (A7): throws if dt > safety dt_crit. */
+  /** The stability check of the constructor (A7, A8): throws if dt > safety dt_crit. */
   void check_time_step(const double safety_factor);
   /** dt M^-1 K in padded rows (ELLPACK), see `column`, `value`. */
   void build_stiffness_operator();
@@ -213,6 +232,8 @@ private:
   Vector<double> d_prev;
   /** Work of the damping forces since t = 0 (J). */
   double dissipated = 0.;
+  /** Memory variables of frequency-range damping (A8). */
+  MaxwellMemory branches;
 
   // contacts
   std::vector<double> gap, lambda;

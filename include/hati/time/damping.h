@@ -4,23 +4,51 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <hati/base/registry.h>
+#include <hati/time/frequency_range_damping.h>
 #include <hati/time/rayleigh_damping.h>
 
 #include <functional>
+#include <string>
 
 namespace hati
 {
 /**
- * Reads one damping model from the subsection `Time integration/Damping`
- * (the caller has entered it). Every model gives the integrators their
- * Rayleigh coefficients today; a model with a state of its own (spec A8,
- * N4) widens this type.
+ * The damping of a transient run, as `Time integration/Damping` describes
+ * it: Rayleigh coefficients (A7) or Maxwell branches of frequency-range
+ * damping (A8, N4), one of the two.
  */
-using DampingFactory = std::function<RayleighDamping(dealii::ParameterHandler &prm)>;
+struct DampingModel
+{
+  /** The value of `Type`: `Rayleigh` or `frequency range`. */
+  std::string type = "Rayleigh";
+  /** Rayleigh coefficients a0, a1 (zero for frequency-range damping). */
+  RayleighDamping rayleigh;
+  /** The fitted branches (empty for Rayleigh damping). */
+  MaxwellBranches branches;
+  /** Frequency range: the target ratio (-) and its band (Hz). */
+  double ratio = 0., lower_frequency = 0., upper_frequency = 0.;
+  /** Largest relative deviation of the fitted ratio over the band (-). */
+  double fit_error = 0.;
+
+  /** Whether there are Maxwell branches (Type = frequency range). */
+  bool frequency_range() const { return !branches.alpha.empty(); }
+
+  /**
+   * Whether the user gave a damping (a non-zero Rayleigh entry, or the
+   * frequency range): the model's default damping is then not applied.
+   */
+  bool given() const { return rayleigh.given || frequency_range(); }
+};
+
+/**
+ * Reads one damping model from the subsection `Time integration/Damping`
+ * (the caller has entered it).
+ */
+using DampingFactory = std::function<DampingModel(dealii::ParameterHandler &prm)>;
 
 /**
  * The damping models of `Time integration/Damping/Type`, registered in
- * source/time/damping.cc (one line each): today `Rayleigh`.
+ * source/time/damping.cc (one line each): `Rayleigh` and `frequency range`.
  */
 const Registry<DampingFactory> &damping_registry();
 
@@ -29,7 +57,7 @@ const Registry<DampingFactory> &damping_registry();
 void declare_damping_parameters(dealii::ParameterHandler &prm);
 
 /** The damping of the model chosen by `Type` (current subsection). */
-RayleighDamping parse_damping_parameters(dealii::ParameterHandler &prm);
+DampingModel parse_damping_parameters(dealii::ParameterHandler &prm);
 } // namespace hati
 
 #endif

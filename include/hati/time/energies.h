@@ -23,6 +23,11 @@ struct Energies
   /** Energy dissipated by damping since t = 0 (J), >= 0. */
   double dissipated = 0.;
   /**
+   * Energy stored by the Maxwell branches of frequency-range damping,
+   * `1/2 sum_l alpha_l q_l.K q_l` (J, A8); zero otherwise.
+   */
+  double damping_stored = 0.;
+  /**
    * Work of the interface forces of the coupling since t = 0 (J), each
    * side's own discrete work (G5); zero for a single domain.
    */
@@ -31,11 +36,14 @@ struct Energies
   double kinetic_explicit = 0., kinetic_implicit = 0.;
   double internal_explicit = 0., internal_implicit = 0.;
 
-  /** The balance kinetic + internal + dissipated - works, constant in time. */
+  /**
+   * The balance kinetic + internal + damping_stored + dissipated - works,
+   * constant in time.
+   */
   double total() const
   {
-    return kinetic + internal + dissipated - external_work - contact_work -
-           interface_work;
+    return kinetic + internal + damping_stored + dissipated - external_work -
+           contact_work - interface_work;
   }
 };
 } // namespace hati

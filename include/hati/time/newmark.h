@@ -7,6 +7,7 @@
 #include <hati/linear_algebra/direct_solver.h>
 #include <hati/model/discrete_system.h>
 #include <hati/time/energies.h>
+#include <hati/time/maxwell_memory.h>
 #include <hati/time/rayleigh_damping.h>
 
 #include <array>
@@ -72,6 +73,12 @@ struct NewmarkParameters
  * - (N3) correctors `U_{n+1} = U* + beta DT^2 A_{n+1}`,
  *   `V_{n+1} = V* + gamma DT A_{n+1}`.
  *
+ * With frequency-range damping (N4) the internal force is `K (U + S)`,
+ * `S_{n+1} = sum_l alpha_l e_l q_l,n + beta_s (U_{n+1} - U_n)` (the memory
+ * update with the average velocity `(U_{n+1} - U_n) / DT`, MaxwellMemory),
+ * so `M_eff = M + beta DT^2 (1 + beta_s) K` and the right-hand side of (N2)
+ * is `F_{n+1} - K ((1 + beta_s) U* - beta_s U_n + sum_l alpha_l e_l q_l,n)`.
+ *
  * M is the consistent mass of the system when it has one, else the lumped
  * diagonal. M_eff is assembled once as a Trilinos matrix and factorised once
  * (Amesos_Klu) or handed to CG + ML AMG. Fixed DoFs stay at zero: their rows
@@ -90,6 +97,8 @@ public:
    * @param DT time step (s), > 0.
    * @param parameters beta, gamma (-) and the linear solver.
    * @param damping Rayleigh coefficients a0 (1/s) and a1 (s).
+   * @param branches Maxwell branches of frequency-range damping (N4; none by
+   * default, not combined with Rayleigh damping).
    *
    * Throws ExcMessage if the factorisation fails (a singular M_eff: a model
    * without mass and without enough supports).
@@ -97,7 +106,8 @@ public:
   Newmark(const DiscreteSystem &system,
           const double DT,
           const NewmarkParameters &parameters,
-          const RayleighDamping &damping);
+          const RayleighDamping &damping,
+          const MaxwellBranches &branches = MaxwellBranches());
 
   ~Newmark();
   Newmark(const Newmark &) = delete;
@@ -108,7 +118,8 @@ public:
    * current time t: the initial acceleration solves
    * `M A_0 = F_ext(t) - C V_0 - K U_0` (algorithms.md section 2), fixed DoFs
    * are zeroed, and the accumulated external work and dissipated energy are
-   * reset to zero. Free DoFs with zero lumped mass get A_0 = 0.
+   * reset to zero, as are the memory variables of frequency-range damping. Free DoFs with
+   * zero lumped mass get A_0 = 0.
    */
   void set_initial_state(const Vector<double> &U0, const Vector<double> &V0);
 
@@ -182,7 +193,10 @@ public:
    * Energies at t_n (J): kinetic `1/2 V.M V`, internal `1/2 U.K U`,
    * external work accumulated with the trapezoidal rule
    * `1/2 (U_{n+1} - U_n).(F_n + F_{n+1})` and dissipated energy
-   * `1/2 (U_{n+1} - U_n).C (V_n + V_{n+1})`. For average acceleration
+   * `1/2 (U_{n+1} - U_n).C (V_n + V_{n+1})`; with frequency-range damping
+   * the branches store `1/2 sum_l alpha_l q_l.K q_l` (damping_stored) and
+   * have dissipated the work `1/2 (U_{n+1} - U_n).K (S_n + S_{n+1})` less
+   * that (N4). For average acceleration
    * total() stays constant to round-off (proof in newmark.cc).
    */
   Energies energies() const;
@@ -202,6 +216,8 @@ public:
   /** Rayleigh coefficients a0 (1/s) and a1 (s) in use. */
   double mass_damping_coefficient() const { return a0; }
   double stiffness_damping_coefficient() const { return a1; }
+  /** The memory variables of frequency-range damping (N4; inactive without). */
+  const MaxwellMemory &memory() const { return branches; }
 
 private:
   /** dst = M src with the consistent or the lumped mass. */
@@ -251,6 +267,10 @@ private:
   Vector<double> U, V, A;
   Vector<double> F;  // F_ext(t_n)
   Vector<double> CV; // C V_n (kept for the dissipated energy)
+  /** Memory variables of frequency-range damping (N4). */
+  MaxwellMemory branches;
+  /** N4: K S_n, kept for the branch work; `W` the displacement K acts on in (N2). */
+  Vector<double> KS, KS_new, W;
   // work vectors
   mutable Vector<double> U_star, V_star, A_new, rhs, tmp, F_new, CV_new;
 

@@ -1,0 +1,114 @@
+#include <deal.II/base/exceptions.h>
+
+#include <hati/time/maxwell_memory.h>
+
+#include <cmath>
+
+namespace hati
+{
+MaxwellMemory::MaxwellMemory(const MaxwellBranches &branches,
+                             const double dt,
+                             const unsigned int n_dofs)
+    : alpha(branches.alpha), dt(dt), tau(branches.tau)
+{
+  AssertThrow(
+      branches.alpha.size() == branches.tau.size(),
+      ExcMessage("frequency-range damping: as many alpha_l as tau_l are needed."));
+  for (unsigned int l = 0; l < alpha.size(); ++l)
+  {
+    AssertThrow(alpha[l] >= 0. && std::isfinite(alpha[l]) && tau[l] > 0. &&
+                    std::isfinite(tau[l]),
+                ExcMessage("frequency-range damping: the branches need alpha_l >= 0 "
+                           "and tau_l > 0, finite."));
+    const double e = std::exp(-dt / tau[l]);
+    decay.push_back(e);
+    // tau (1 - e) = tau (1 - exp(-dt/tau)) without cancellation
+    gain.push_back(-tau[l] * std::expm1(-dt / tau[l]));
+  }
+  q.assign(alpha.size(), Vector<double>(n_dofs));
+  S.reinit(active() ? n_dofs : 0);
+}
+
+double MaxwellMemory::alpha_sum() const
+{
+  double s = 0.;
+  for (const double a : alpha)
+    s += a;
+  return s;
+}
+
+double MaxwellMemory::stiffness_factor() const
+{
+  double s = 0.;
+  for (unsigned int l = 0; l < alpha.size(); ++l)
+    s += alpha[l] * gain[l];
+  return s / dt;
+}
+
+void MaxwellMemory::reset()
+{
+  for (auto &ql : q)
+    ql = 0.;
+  S = 0.;
+  branch_work = 0.;
+}
+
+void MaxwellMemory::update(const Vector<double> &v)
+{
+  const unsigned int n = S.size(), L = alpha.size();
+  const double *__restrict vv = v.data();
+  double *__restrict s = S.data();
+  // one pass over the DoFs, the branches inside (at most 8): q_l and S
+  // stay in cache
+  double *ql[8];
+  double e[8], g[8], a[8];
+  for (unsigned int l = 0; l < L; ++l)
+  {
+    ql[l] = q[l].data();
+    e[l] = decay[l];
+    g[l] = gain[l];
+    a[l] = alpha[l];
+  }
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    double si = 0.;
+    for (unsigned int l = 0; l < L; ++l)
+    {
+      const double x = e[l] * ql[l][i] + g[l] * vv[i];
+      ql[l][i] = x;
+      si += a[l] * x;
+    }
+    s[i] = si;
+  }
+}
+
+void MaxwellMemory::history(Vector<double> &h) const
+{
+  h.reinit(S.size(), true);
+  h = 0.;
+  for (unsigned int l = 0; l < alpha.size(); ++l)
+    h.add(alpha[l] * decay[l], q[l]);
+}
+
+double MaxwellMemory::stored_energy(const SparseMatrix<double> &K) const
+{
+  double e = 0.;
+  if (K.empty())
+    return 0.;
+  for (unsigned int l = 0; l < alpha.size(); ++l)
+    e += 0.5 * alpha[l] * K.matrix_norm_square(q[l]);
+  return e;
+}
+
+void MaxwellMemory::set_memory(const std::vector<Vector<double>> &memory,
+                               const double work)
+{
+  AssertThrow(memory.size() == q.size(),
+              ExcMessage("MaxwellMemory::set_memory: wrong number of branches."));
+  q = memory;
+  S = 0.;
+  for (unsigned int l = 0; l < alpha.size(); ++l)
+    S.add(alpha[l], q[l]);
+  branch_work = work;
+}
+} // namespace hati
