@@ -10,16 +10,28 @@ directory.
   time_reached and n_steps (the steps done) in summary.json;
 - SIGKILL at four instants: every CSV ends on a complete line with the
   header's number of fields, solution.pvd parses and names complete VTU
-  files;
+  files; SIGKILL at 20 random instants of a run writing a row every step
+  (1 MiB appends): every CSV ends on a complete line every time (the
+  writer child finishes an append and holds .hati.lock until then);
+- a symbolic link where an output file, a temporary file, the lock or the
+  manifest would go (pointing at a victim file outside the folder, or at a
+  missing one) is refused in one line naming the link; the victim stays
+  byte for byte (the missing one is not created);
 - a second concurrent run into the same directory is refused in one line;
 - a run failing mid-run writes "status": "failed" with the message;
 - a closed standard output (SIGPIPE) does not stop the run;
 - a folder deleted during the run and a full disk (a 1 MiB tmpfs, if this
   process may mount one; skipped with a message otherwise) end the run with
-  a non-zero exit and one line naming the file and the system error."""
+  a non-zero exit and one line naming the file and the system error; on
+  the full disk every CSV ends on a whole line and summary.json says
+  "status": "failed" with that line's message."""
 import hashlib
+import itertools
+import concurrent.futures
+import fcntl
 import json
 import os
+import random
 import shutil
 import signal
 import subprocess
@@ -42,14 +54,27 @@ def command(out, sets=(), prm=bar):
     return cmd
 
 
+def environment():
+    """An own TMPDIR for every run: Open MPI singletons starting at the same
+    time race on creating their session directory in it (1 start in 80
+    failed with 8 starts at a time in /tmp)."""
+    tmp = os.path.join(ctx.work, "tmp", str(next(run_numbers)))
+    os.makedirs(tmp, exist_ok=True)
+    return dict(os.environ, TMPDIR=tmp)
+
+
+run_numbers = itertools.count()  # (next() is atomic: runs start from threads too)
+shutil.rmtree(os.path.join(ctx.work, "tmp"), ignore_errors=True)
+
+
 def run(out, sets=(), prm=bar):
     return subprocess.run(command(out, sets, prm), capture_output=True, text=True,
-                          timeout=600)
+                          timeout=600, env=environment())
 
 
 def start(out, sets=(), prm=bar):
     return subprocess.Popen(command(out, sets, prm), stdout=subprocess.DEVNULL,
-                            stderr=subprocess.PIPE, text=True)
+                            stderr=subprocess.PIPE, text=True, env=environment())
 
 
 def summary(out):
@@ -69,6 +94,21 @@ def wait_running(out, rows=3, timeout=120):
         except (OSError, ValueError):
             pass
         time.sleep(0.05)
+    return False
+
+
+def wait_unlocked(out, timeout=30):
+    """Wait until no process holds out/.hati.lock: after a SIGKILL the child
+    finishing the last append of rows holds it until it is done."""
+    t0 = time.time()
+    with open(os.path.join(out, ".hati.lock"), "rb") as f:
+        while time.time() - t0 < timeout:
+            try:
+                fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
+                fcntl.flock(f, fcntl.LOCK_UN)
+                return True
+            except OSError:
+                time.sleep(0.01)
     return False
 
 
@@ -178,7 +218,7 @@ for attempt, delay in enumerate((0.0, 0.37, 0.81, 1.53)):
     time.sleep(delay)
     proc.kill()
     proc.wait()
-    bad = []
+    bad = [] if wait_unlocked(out) else [".hati.lock still held"]
     for name in ("history.csv", "contacts.csv", "energy.csv"):
         n, ok = csv_complete(os.path.join(out, name))
         if not ok:
@@ -194,6 +234,83 @@ for attempt, delay in enumerate((0.0, 0.37, 0.81, 1.53)):
         pvd = ""
     ctx.check_true("SIGKILL %d (after %.2f s): CSVs on complete lines, valid PVD (%s)"
                    % (attempt + 1, delay, pvd), not bad, str(bad))
+
+# --- SIGKILL at 20 random instants of a run appending 1 MiB blocks of rows ---
+# (Linux cuts a large write() at a page boundary when the writer is killed:
+# before the rows were appended by a child process, 1 kill in 5 to 10 left a
+# cut line here). Four runs at a time (a start is mostly Open MPI waiting).
+
+
+def tail_complete(path):
+    """Whether the file ends on a whole line with the header's field count."""
+    with open(path, "rb") as f:
+        fields = f.readline().count(b",")
+        f.seek(max(0, os.path.getsize(path) - 4096))
+        tail = f.read()
+    return tail.endswith(b"\n") and tail.splitlines()[-1].count(b",") == fields
+
+
+def kill_at_random(attempt):
+    out = os.path.join(ctx.work, "sigkill_random%02d" % attempt)
+    shutil.rmtree(out, ignore_errors=True)
+    proc = start(out, ["Time integration/End time=20", "Output/History interval=0",
+                       "Output/Output interval=0"])
+    started = wait_running(out, rows=1)
+    time.sleep(delays[attempt])
+    proc.kill()
+    proc.wait()
+    if not started or not wait_unlocked(out):
+        return ["%d: %s" % (attempt + 1, "no start" if not started else "lock held")]
+    cut = ["%d: %s (%d bytes)" % (attempt + 1, name,
+                                  os.path.getsize(os.path.join(out, name)))
+           for name in ("history.csv", "contacts.csv", "energy.csv")
+           if not tail_complete(os.path.join(out, name))]
+    shutil.rmtree(out, ignore_errors=True)
+    return cut
+
+
+random.seed(19)
+delays = [random.uniform(0.0, 0.5) for _ in range(20)]
+with concurrent.futures.ThreadPoolExecutor(4) as pool:
+    cut = sum(pool.map(kill_at_random, range(20)), [])
+ctx.check_true("SIGKILL at 20 random instants, a row every step: every CSV on whole lines",
+               not cut, str(cut))
+
+# --- a symbolic link in the output folder is refused, its target untouched ---
+# (all runs at once, each into its own folder, with its own victim file)
+links = [(name, bar, ["Time integration/End time=1e-4", "Output/Output interval=5e-5"])
+         for name in ("history.csv", "energy.csv", "contacts.csv", "summary.json",
+                      ".summary.json.tmp", "parameters.prm", ".parameters.prm.tmp",
+                      ".hati-manifest", ".hati.lock", "solution-00000.vtu",
+                      "solution.pvd", ".solution.pvd.tmp", "contact_episodes.csv")]
+links += [(name, ctx.prm("cantilever_modal.prm"), ["Analysis/Number of modes=2"])
+          for name in ("modes.csv", "mode-002.vtu")]
+VICTIM = b"a file outside the output folder\n"
+runs = []
+for k, (name, prm, sets) in enumerate(links):
+    work = os.path.join(ctx.work, "link%02d" % k)
+    shutil.rmtree(work, ignore_errors=True)
+    out = os.path.join(work, "out")
+    os.makedirs(out)
+    # every third case: a link to a file that does not exist
+    target = os.path.join(work, "missing.txt" if k % 3 == 2 else "victim.txt")
+    with open(os.path.join(work, "victim.txt"), "wb") as f:
+        f.write(VICTIM)
+    os.symlink(target, os.path.join(out, name))
+    runs.append((name, work, out, target, start(out, sets, prm)))
+for name, work, out, target, proc in runs:
+    try:
+        proc.wait(timeout=120)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.wait()
+    ok, err = one_line_error(proc, os.path.join(out, name) + " is a symbolic link: refused")
+    with open(os.path.join(work, "victim.txt"), "rb") as f:
+        kept = f.read() == VICTIM and not os.path.exists(os.path.join(work, "missing.txt"))
+    ctx.check_true("a link %s -> %s: refused in one line naming it, %s untouched"
+                   % (name, os.path.basename(target), os.path.basename(target)),
+                   ok and kept and os.path.islink(os.path.join(out, name)),
+                   "(exit %s) %s" % (proc.returncode, err))
 
 # --- a second concurrent run is refused ---
 out = os.path.join(ctx.work, "concurrent")
@@ -265,6 +382,15 @@ else:
         ok, err = one_line_error(p, "No space left on device", out)
         ctx.check_true("a full disk: non-zero exit, one line naming the file and the error",
                        ok, "(exit %d) %s" % (p.returncode, err))
+        whole = {name: csv_complete(os.path.join(out, name))
+                 for name in ("history.csv", "contacts.csv", "energy.csv")}
+        ctx.check_true("a full disk: every CSV ends on a whole line (%s rows)"
+                       % ", ".join("%s %d" % (n, r) for n, (r, _) in whole.items()),
+                       all(ok for _, ok in whole.values()))
+        s = summary(out)
+        ctx.check_true("a full disk: summary.json says failed with the message",
+                       s.get("status") == "failed" and
+                       err == "hati: error: " + s.get("message", ""), str(s))
     finally:
         subprocess.run(["umount", disk], capture_output=True)
 ctx.finish()

@@ -8,7 +8,17 @@
 //   "No space left on device";
 // - write_file_atomically() replaces a file and leaves no temporary file,
 //   with and without fsync, and into a missing directory it throws naming
-//   the file; sync_file() of a missing file throws naming it.
+//   the file; sync_file() of a missing file throws naming it;
+// - issue #19: no output file is written through a symbolic link (CsvFile,
+//   write_file_atomically() onto a link or with a link as its temporary,
+//   OutputStream, sync_file()): each is refused with "<path> is a symbolic
+//   link: refused" and the link's target keeps its bytes; a stale
+//   temporary file is replaced;
+// - append_whole_rows() writes 3 MiB of rows exactly (through its child
+//   process), and a write cut by the file size limit (RLIMIT_FSIZE, a
+//   partial write then EFBIG) leaves the file on its last whole row, the
+//   error "File too large" thrown by CsvFile, which then writes no more;
+// - OutputFolder::overwrite() rewrites a file in place, shorter or longer.
 // Returns non-zero on failure.
 #include <deal.II/base/exceptions.h>
 
@@ -18,6 +28,7 @@
 #include <hati/output/run_directory.h>
 
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -27,6 +38,7 @@
 #include <limits>
 #include <random>
 #include <sstream>
+#include <sys/resource.h>
 #include <unistd.h>
 
 using namespace hati_test;
@@ -39,6 +51,20 @@ std::string read(const std::string &name)
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+/** The one-line message of what @p f throws ("" if nothing). */
+template <class F> std::string thrown(F f)
+{
+  try
+  {
+    f();
+  }
+  catch (const std::exception &e)
+  {
+    return message_of(e);
+  }
+  return "";
 }
 
 bool same_bits(const double a, const double b)
@@ -171,6 +197,123 @@ int main()
     expect(message.find(dir + "/missing.pvd") != std::string::npos &&
                message.find("No such file or directory") != std::string::npos,
            "sync_file of a missing file: " + message);
+  }
+
+  // --- issue #19: never through a symbolic link ---
+  const std::string victim = dir + "/victim.txt";
+  const std::string victim_text = "outside the output folder\n";
+  {
+    std::ofstream(victim) << victim_text;
+  }
+  const auto refused = [&](const std::string &message, const std::string &link)
+  {
+    return message.find(link + " is a symbolic link: refused") != std::string::npos &&
+           read(victim) == victim_text;
+  };
+  std::filesystem::create_symlink(victim, dir + "/linked.csv");
+  std::string message = thrown([&] { hati::CsvFile().open(dir + "/linked.csv"); });
+  expect(refused(message, dir + "/linked.csv"),
+         "CsvFile refuses a link, its target unchanged: " + message);
+  message = thrown([&] { hati::write_file_atomically(dir + "/linked.csv", "x\n"); });
+  expect(refused(message, dir + "/linked.csv"),
+         "write_file_atomically refuses a link as the file: " + message);
+  std::filesystem::create_symlink(victim, dir + "/.linked.json.tmp");
+  message = thrown([&] { hati::write_file_atomically(dir + "/linked.json", "x\n"); });
+  expect(refused(message, dir + "/.linked.json.tmp") &&
+             !std::filesystem::exists(dir + "/linked.json"),
+         "write_file_atomically refuses a link as the temporary: " + message);
+  message = thrown(
+      [&]
+      {
+        hati::OutputStream out(hati::OutputFolder(dir).create("linked.csv"));
+        out << "x\n";
+        out.close();
+      });
+  expect(refused(message, dir + "/linked.csv"),
+         "OutputStream refuses a link: " + message);
+  message = thrown([&] { hati::sync_file(dir + "/linked.csv"); });
+  expect(refused(message, dir + "/linked.csv"), "sync_file refuses a link: " + message);
+  {
+    std::ofstream(dir + "/.stale.json.tmp") << "left by a killed run";
+    hati::write_file_atomically(dir + "/stale.json", "{}\n");
+    expect(read(dir + "/stale.json") == "{}\n" &&
+               !std::filesystem::exists(dir + "/.stale.json.tmp"),
+           "a stale temporary file is replaced");
+  }
+  {
+    hati::OutputStream out(hati::OutputFolder(dir).create("stream.txt"));
+    for (int i = 0; i < 100000; ++i)
+      out << i << '\n';
+    out.close();
+    std::ostringstream expected;
+    for (int i = 0; i < 100000; ++i)
+      expected << i << '\n';
+    expect(read(dir + "/stream.txt") == expected.str(),
+           "OutputStream writes what is streamed (beyond its 64 KiB buffer)");
+  }
+
+  // --- whole rows: 3 MiB through the child; a cut write cut back ---
+  {
+    std::string rows;
+    for (int i = 0; rows.size() < (3u << 20); ++i)
+      rows += "row " + std::to_string(i) + ",1.5,-2\n";
+    const hati::OutputFile file = hati::create_output_file(dir + "/rows3.csv");
+    const int error = hati::append_whole_rows(file.fd, rows.data(), rows.size());
+    expect(error == 0 && read(dir + "/rows3.csv") == rows,
+           "append_whole_rows writes " + std::to_string(rows.size()) +
+               " bytes of rows exactly");
+  }
+  {
+    // rows of 10 bytes, a file size limit of 4096 + 5: the write of 8000
+    // bytes stops at the limit (4101 bytes), the next one fails with EFBIG
+    std::signal(SIGXFSZ, SIG_IGN);
+    rlimit previous;
+    getrlimit(RLIMIT_FSIZE, &previous);
+    rlimit limit = previous;
+    limit.rlim_cur = 4096 + 5;
+    setrlimit(RLIMIT_FSIZE, &limit);
+    hati::CsvFile csv;
+    csv.open(dir + "/cut.csv");
+    csv << "time,x,y\n"; // 9 bytes, then rows of 10
+    for (int i = 0; i < 799; ++i)
+      csv << "0.5,1.5," << i % 10 << '\n';
+    message = thrown([&] { csv.flush(); });
+    const bool stopped = !csv.is_open() && thrown(
+                                               [&]
+                                               {
+                                                 csv << "1,2,3\n";
+                                                 csv.close();
+                                               })
+                                               .empty();
+    setrlimit(RLIMIT_FSIZE, &previous);
+    const std::string left = read(dir + "/cut.csv");
+    expect(message.find(dir + "/cut.csv") != std::string::npos &&
+               message.find("File too large") != std::string::npos,
+           "a write cut by the file size limit: one line naming the file and the "
+           "error: " +
+               message);
+    expect(left.size() == 9 + 409 * 10 && left.back() == '\n' && stopped,
+           "... the file is cut back to its last whole row (" +
+               std::to_string(left.size()) +
+               " bytes, 4099 expected) and no more is "
+               "written");
+  }
+
+  // --- in-place overwrite (the failed summary.json on a full disk) ---
+  {
+    const hati::OutputFolder folder(dir);
+    hati::write_file_atomically(dir + "/summary.json",
+                                "{\n  \"status\": \"running\"\n}\n");
+    const bool longer = folder.overwrite(
+        "summary.json", "{\"status\": \"failed\", \"message\": \"x\"}\n");
+    const std::string first = read(dir + "/summary.json");
+    const bool shorter = folder.overwrite("summary.json", "{}\n");
+    expect(longer && first == "{\"status\": \"failed\", \"message\": \"x\"}\n" &&
+               shorter && read(dir + "/summary.json") == "{}\n" &&
+               !folder.overwrite("missing.json", "{}\n") &&
+               !folder.overwrite("linked.csv", "{}\n") && read(victim) == victim_text,
+           "OutputFolder::overwrite rewrites in place, longer and shorter, never "
+           "creates a file nor follows a link");
   }
   std::filesystem::remove_all(dir);
   return finish();

@@ -51,51 +51,43 @@ void use_shortest_numbers(std::ostream &out)
   out.imbue(std::locale(out.getloc(), new ShortestNumPut));
 }
 
-CsvFile::~CsvFile()
-{
-  if (fd >= 0)
-    ::close(fd); // errors are reported by an explicit flush()/close()
-}
+CsvFile::~CsvFile() = default; // errors are reported by an explicit flush()/close()
 
-void CsvFile::open(const std::string &name)
+void CsvFile::open(const std::string &filename) { open(create_output_file(filename)); }
+
+void CsvFile::open(OutputFile f)
 {
-  filename = name;
-  fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  AssertThrow(fd >= 0,
-              ExcMessage("cannot open the output file " + name +
-                         " for writing: " + system_error_text(errno)));
+  file = std::move(f);
+  buffer.clear();
   buffer.reserve(1 << 16);
 }
 
 void CsvFile::flush()
 {
-  if (fd < 0 || buffer.empty())
+  if (file.fd < 0 || buffer.empty())
     return;
-  const char *p = buffer.data();
-  std::size_t left = buffer.size();
-  while (left > 0)
-  {
-    const ssize_t n = ::write(fd, p, left);
-    if (n < 0 && errno == EINTR)
-      continue;
-    AssertThrow(n > 0,
-                ExcMessage("cannot write the output file " + filename + ": " +
-                           system_error_text(n < 0 ? errno : ENOSPC)));
-    p += n;
-    left -= n;
-  }
+  const int error = append_whole_rows(file.fd, buffer.data(), buffer.size());
   buffer.clear();
+  if (error != 0)
+  {
+    // the file ends on its last whole row; nothing more is written to it
+    const std::string path = file.path;
+    file = OutputFile();
+    AssertThrow(false,
+                ExcMessage("cannot write the output file " + path + ": " +
+                           system_error_text(error)));
+  }
 }
 
 void CsvFile::close()
 {
-  if (fd < 0)
+  if (file.fd < 0)
     return;
   flush();
-  const int result = ::close(fd);
-  fd = -1;
+  const std::string path = file.path;
+  const int result = ::close(file.release());
   AssertThrow(result == 0,
-              ExcMessage("cannot close the output file " + filename + ": " +
+              ExcMessage("cannot close the output file " + path + ": " +
                          system_error_text(errno)));
 }
 } // namespace hati

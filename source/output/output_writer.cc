@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -31,7 +30,7 @@ OutputWriter::OutputWriter(RunDirectory &run,
   run.begin();
   use_shortest_numbers(section_rows);
 
-  history.open(run.create("history.csv"));
+  history.open(run.open("history.csv"));
   history << "time";
   for (const auto &m : system.monitors)
   {
@@ -42,7 +41,7 @@ OutputWriter::OutputWriter(RunDirectory &run,
   }
   history << '\n';
 
-  contacts.open(run.create("contacts.csv"));
+  contacts.open(run.open("contacts.csv"));
   contacts << "time,contact,gap,normal_velocity,impulse,force,active\n";
   for (const auto &c : system.contacts)
   {
@@ -54,7 +53,7 @@ OutputWriter::OutputWriter(RunDirectory &run,
   group_was_pushing.assign(contact_names.size(), false);
   group_pushing.assign(contact_names.size(), false);
 
-  energy.open(run.create("energy.csv"));
+  energy.open(run.open("energy.csv"));
   energy << "time,kinetic,internal,external_work,contact_work,dissipated,interface_work,"
             "total,balance_drift,kinetic_explicit,kinetic_implicit,internal_explicit,"
             "internal_implicit,damping_stored\n";
@@ -62,7 +61,7 @@ OutputWriter::OutputWriter(RunDirectory &run,
   const std::string header = model.section_forces_header();
   if (!header.empty())
   {
-    section_forces.open(run.create("section_forces.csv"));
+    section_forces.open(run.open("section_forces.csv"));
     section_forces << header << '\n';
   }
   flush();
@@ -190,11 +189,7 @@ void OutputWriter::write_vtu(const OutputState &s)
                 "solution-%05u.vtu",
                 static_cast<unsigned int>(vtu_files.size()));
   {
-    const std::string path = run.create(name);
-    std::ofstream out(path);
-    AssertThrow(out,
-                ExcMessage("cannot write the output file " + path + ": " +
-                           system_error_text(errno)));
+    OutputStream out(run.open(name));
     model.write_vtu(out,
                     {{{"displacement", s.displacement},
                       {"velocity", s.velocity},
@@ -203,21 +198,17 @@ void OutputWriter::write_vtu(const OutputState &s)
                      s.time,
                      static_cast<unsigned int>(vtu_files.size())});
     out.close();
-    AssertThrow(out,
-                ExcMessage("cannot write the output file " + path + ": " +
-                           system_error_text(errno)));
   }
   // the index names complete snapshots only, and is replaced atomically
   vtu_files.emplace_back(s.time, name);
   std::ostringstream pvd;
   DataOutBase::write_pvd_record(pvd, vtu_files);
-  run.create(temporary_name("solution.pvd"));
   // durable (fsync, about 1 ms) at most every flush_interval from the start:
   // snapshots of a small model take less than that; finish() syncs the last
   const auto now = std::chrono::steady_clock::now();
   pvd_durable =
       std::chrono::duration<double>(now - last_pvd_sync).count() >= flush_interval;
-  write_file_atomically(run.create("solution.pvd"), pvd.str(), pvd_durable);
+  run.replace("solution.pvd", pvd.str(), pvd_durable);
   if (pvd_durable)
     last_pvd_sync = now;
   flush();
@@ -227,7 +218,7 @@ void OutputWriter::finish()
 {
   flush();
   if (!pvd_durable)
-    sync_file(dir + "/solution.pvd");
+    run.sync("solution.pvd");
   pvd_durable = true;
 }
 

@@ -8,11 +8,11 @@
 #include <csignal>
 #include <fcntl.h>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <sys/file.h>
 #include <system_error>
 #include <unistd.h>
+#include <vector>
 
 namespace hati
 {
@@ -44,45 +44,26 @@ void install_stop_handlers()
   sigaction(SIGTERM, &action, nullptr);
 }
 
-/** Write all of @p size bytes at @p data to @p fd; false (errno set) if that fails. */
-bool write_all(const int fd, const char *data, std::size_t size)
-{
-  while (size > 0)
-  {
-    const ssize_t n = ::write(fd, data, size);
-    if (n < 0 && errno == EINTR)
-      continue;
-    if (n <= 0)
-    {
-      if (n == 0)
-        errno = ENOSPC;
-      return false;
-    }
-    data += n;
-    size -= n;
-  }
-  return true;
-}
-
-/**
- * Make the rename of a file in the directory of @p filename durable: fsync
- * the directory, best effort (a directory that cannot be opened or synced
- * is ignored; the file itself is complete either way).
- */
-void sync_directory_of(const std::string &filename)
-{
-  std::string directory = std::filesystem::path(filename).parent_path().string();
-  if (directory.empty())
-    directory = ".";
-  const int fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0)
-    return;
-  ::fsync(fd);
-  ::close(fd);
-}
-
 const char *const lock_name = ".hati.lock";
 const char *const manifest_name = ".hati-manifest";
+
+/** The lines of the manifest of the previous run in @p folder (none if there is none). */
+std::vector<std::string> previous_manifest(const OutputFolder &folder)
+{
+  const OutputFile file = folder.open_existing(manifest_name);
+  std::string text;
+  char block[4096];
+  ssize_t n = 0;
+  while (file.fd >= 0 &&
+         ((n = ::read(file.fd, block, sizeof(block))) > 0 || (n < 0 && errno == EINTR)))
+    if (n > 0)
+      text.append(block, n);
+  std::vector<std::string> names;
+  std::istringstream lines(text);
+  for (std::string name; std::getline(lines, name);)
+    names.push_back(name);
+  return names;
+}
 } // namespace
 
 std::string system_error_text(const int error)
@@ -127,54 +108,6 @@ std::string one_line_message(const std::exception &e)
   return r;
 }
 
-std::string temporary_name(const std::string &name)
-{
-  const std::filesystem::path p(name);
-  return (p.parent_path() / ("." + p.filename().string() + ".tmp")).string();
-}
-
-void write_file_atomically(const std::string &filename,
-                           const std::string &content,
-                           const bool durable)
-{
-  const std::string temporary = temporary_name(filename);
-  const int fd =
-      ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  AssertThrow(fd >= 0,
-              ExcMessage("cannot write the output file " + filename + ": " +
-                         system_error_text(errno)));
-  // the content reaches the disk before the rename makes it the file: after
-  // a power failure the name holds the old or the new content, never an
-  // empty file (EINVAL: a file system without fsync)
-  const bool written = write_all(fd, content.data(), content.size()) &&
-                       (!durable || ::fsync(fd) == 0 || errno == EINVAL);
-  const int error = errno;
-  const bool closed = ::close(fd) == 0;
-  if (!written || !closed || std::rename(temporary.c_str(), filename.c_str()) != 0)
-  {
-    const int e = !written ? error : errno;
-    ::unlink(temporary.c_str());
-    AssertThrow(false,
-                ExcMessage("cannot write the output file " + filename + ": " +
-                           system_error_text(e)));
-  }
-  if (durable)
-    sync_directory_of(filename);
-}
-
-void sync_file(const std::string &filename)
-{
-  const int fd = ::open(filename.c_str(), O_RDONLY | O_CLOEXEC);
-  const bool synced = fd >= 0 && (::fsync(fd) == 0 || errno == EINVAL);
-  const int error = errno;
-  if (fd >= 0)
-    ::close(fd);
-  AssertThrow(synced,
-              ExcMessage("cannot write the output file " + filename + ": " +
-                         system_error_text(error)));
-  sync_directory_of(filename);
-}
-
 void check_output_directory(const std::string &path)
 {
   std::error_code ec;
@@ -205,13 +138,7 @@ RunDirectory::RunDirectory(const std::string &path, const std::string &parameter
   check_output_directory(path);
 }
 
-RunDirectory::~RunDirectory()
-{
-  if (manifest_fd >= 0)
-    ::close(manifest_fd);
-  if (lock_fd >= 0)
-    ::close(lock_fd); // releases the flock
-}
+RunDirectory::~RunDirectory() = default; // closes the lock: releases the flock
 
 void RunDirectory::begin()
 {
@@ -221,16 +148,21 @@ void RunDirectory::begin()
   std::filesystem::create_directories(dir, ec);
   AssertThrow(
       !ec, ExcMessage("cannot create the output directory " + dir + ": " + ec.message()));
-  const std::string lock_path = dir + "/" + lock_name;
-  const int fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  // every file from here on is opened relative to this descriptor
+  folder = OutputFolder(dir);
+  const std::string lock_path = folder.path_of(lock_name);
+  const int fd = ::openat(
+      folder.descriptor(), lock_name, O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
+  if (fd < 0 && errno == ELOOP)
+    folder.refuse_link(lock_name);
   AssertThrow(fd >= 0,
               ExcMessage("cannot create the lock file " + lock_path + ": " +
                          system_error_text(errno)));
+  OutputFile held(fd, lock_path);
   if (::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno != ENOLCK && errno != EOPNOTSUPP)
   {
     // (a file system without locks, ENOLCK/EOPNOTSUPP: run without the lock)
     const int error = errno;
-    ::close(fd);
     AssertThrow(
         false,
         ExcMessage(error == EWOULDBLOCK
@@ -240,35 +172,17 @@ void RunDirectory::begin()
                              "Output/Output directory"
                        : "cannot lock " + lock_path + ": " + system_error_text(error)));
   }
-  lock_fd = fd;
+  lock = std::move(held);
 
   // delete exactly the files the previous run listed, nothing else
-  const std::string manifest = dir + "/" + manifest_name;
-  {
-    std::ifstream previous(manifest);
-    std::string name;
-    while (std::getline(previous, name))
-    {
-      if (name.empty() || name == "." || name == ".." ||
-          name.find('/') != std::string::npos || name == lock_name ||
-          name == manifest_name)
-        continue;
-      const std::string file = dir + "/" + name;
-      if (std::filesystem::is_regular_file(std::filesystem::symlink_status(file, ec)))
-        AssertThrow(std::filesystem::remove(file, ec) || !ec,
-                    ExcMessage("cannot delete " + file +
-                               " (a file of the previous run): " + ec.message()));
-    }
-  }
-  manifest_fd =
-      ::open(manifest.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0644);
-  AssertThrow(manifest_fd >= 0,
-              ExcMessage("cannot write " + manifest + ": " + system_error_text(errno)));
+  for (const std::string &name : previous_manifest(folder))
+    if (!name.empty() && name != "." && name != ".." &&
+        name.find('/') == std::string::npos && name != lock_name && name != manifest_name)
+      folder.remove_regular_file(name);
+  manifest = folder.create(manifest_name, O_APPEND);
 
-  for (const std::string name : {"parameters.prm", "summary.json"})
-    create(temporary_name(name));
-  write_file_atomically(create("parameters.prm"), parameters);
-  write_file_atomically(create("summary.json"), "{\n  \"status\": \"running\"\n}\n");
+  replace("parameters.prm", parameters, true);
+  replace("summary.json", "{\n  \"status\": \"running\"\n}\n", true);
   install_stop_handlers();
 }
 
@@ -278,25 +192,45 @@ std::string RunDirectory::create(const std::string &name)
   if (registered.insert(name).second)
   {
     const std::string line = name + '\n';
-    AssertThrow(write_all(manifest_fd, line.data(), line.size()),
-                ExcMessage("cannot write " + dir + "/" + manifest_name + ": " +
-                           system_error_text(errno)));
+    AssertThrow(
+        write_all(manifest.fd, line.data(), line.size()),
+        ExcMessage("cannot write " + manifest.path + ": " + system_error_text(errno)));
   }
-  return dir + "/" + name;
+  return folder.path_of(name);
 }
+
+OutputFile RunDirectory::open(const std::string &name, const int flags)
+{
+  create(name);
+  return folder.create(name, flags);
+}
+
+void RunDirectory::replace(const std::string &name,
+                           const std::string &content,
+                           const bool durable)
+{
+  create(temporary_name(name));
+  create(name);
+  folder.replace(name, content, durable);
+}
+
+void RunDirectory::sync(const std::string &name) const { folder.sync(name); }
 
 void RunDirectory::fail(const std::string &message,
                         const std::vector<std::string> &warnings) noexcept
 {
   if (!begun())
     return;
+  const std::string content = failed_summary(message, warnings);
   try
   {
-    write_file_atomically(dir + "/summary.json", failed_summary(message, warnings));
+    folder.replace("summary.json", content, true);
   }
   catch (...)
   {
-    // the message is printed on stderr anyway
+    // no room for the temporary file (a full disk): the old summary.json
+    // has its block already; the message is printed on stderr anyway
+    folder.overwrite("summary.json", content);
   }
 }
 } // namespace hati

@@ -15,7 +15,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -34,8 +33,8 @@ void run_modal_analysis(Problem &problem, RunDirectory &directory)
   }
   TimerOutput::Scope scope(timer, "output");
   directory.begin();
-  std::ofstream csv(directory.create("modes.csv"));
-  AssertThrow(csv, ExcMessage("cannot write " + directory.path() + "/modes.csv"));
+  // modes.csv is replaced atomically at the end: never a part of it
+  std::ostringstream csv;
   use_shortest_numbers(csv);
   csv << "mode,frequency,period,participation_x,participation_y,participation_z,"
          "effective_mass_x,effective_mass_y,effective_mass_z,effective_mass_ratio_x,"
@@ -69,20 +68,16 @@ void run_modal_analysis(Problem &problem, RunDirectory &directory)
 
     char name[64];
     std::snprintf(name, sizeof(name), "mode-%03u.vtu", k + 1);
-    std::ofstream out(directory.create(name));
+    OutputStream out(directory.open(name));
     problem.model->write_vtu(out,
                              {{{"displacement", &r.modes[k]}}, double(k + 1), k + 1});
-    AssertThrow(out.flush(),
-                ExcMessage("cannot write " + directory.path() + "/" + name + ": " +
-                           system_error_text(errno)));
+    out.close();
     files.emplace_back(k + 1, name);
   }
-  csv.close();
-  AssertThrow(csv, ExcMessage("cannot write " + directory.path() + "/modes.csv"));
+  directory.replace("modes.csv", csv.str(), true);
   std::ostringstream pvd;
   DataOutBase::write_pvd_record(pvd, files);
-  directory.create(temporary_name("modes.pvd"));
-  write_file_atomically(directory.create("modes.pvd"), pvd.str());
+  directory.replace("modes.pvd", pvd.str(), true);
 
   SummaryValue list = SummaryValue::list();
   for (const double f : r.frequencies)

@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -274,11 +273,10 @@ void TimeLoop<Integrator>::add_contact_summary(SummaryEntries &summary)
   const auto wheels = problem.model->wheel_contacts();
   if (!wheels.empty())
     summary.emplace_back("wheels", statistics.json(wheels));
-  const std::string episodes_file = directory.create("contact_episodes.csv");
-  std::ofstream episodes(episodes_file);
+  // replaced atomically: never a part of it
+  std::ostringstream episodes;
   statistics.write_episodes(episodes);
-  episodes.close();
-  AssertThrow(episodes, ExcMessage("cannot write " + episodes_file));
+  directory.replace("contact_episodes.csv", episodes.str(), true);
   statistics.print_table(std::cout);
 }
 

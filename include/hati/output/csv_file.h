@@ -1,6 +1,8 @@
 #ifndef hati_output_csv_file_h
 #define hati_output_csv_file_h
 
+#include <hati/output/output_file.h>
+
 #include <charconv>
 #include <ostream>
 #include <string>
@@ -33,10 +35,13 @@ void use_shortest_numbers(std::ostream &out);
 /**
  * A CSV file written in whole rows: the rows are formatted into a buffer
  * (`std::to_chars`, shortest round-trip) and written to the file only by
- * flush(), with one `write` of complete lines, so the file ends on a
- * complete line at every instant, even after a SIGKILL. flush() and close()
- * check every write and throw a one-line message naming the file and the
- * system error (e.g. `No space left on device`).
+ * flush(), as one append of complete lines (append_whole_rows(): by a child
+ * process that finishes it even when the run is killed, and cut back to
+ * the last whole row if it fails), so the file ends on a complete line at
+ * every instant, even after a SIGKILL or on a full disk. flush() and
+ * close() check every write and throw a one-line message naming the file
+ * and the system error (e.g. `No space left on device`); after a failed
+ * write nothing more is written.
  */
 class CsvFile
 {
@@ -46,10 +51,15 @@ public:
   CsvFile(const CsvFile &) = delete;
   CsvFile &operator=(const CsvFile &) = delete;
 
-  /** Create (or truncate) @p filename; throws naming it if that fails. */
+  /**
+   * Create (or truncate) @p filename, not through a symbolic link
+   * (create_output_file()); throws naming it if that fails.
+   */
   void open(const std::string &filename);
-  bool is_open() const { return fd >= 0; }
-  const std::string &name() const { return filename; }
+  /** Write into @p file (e.g. from RunDirectory::open()). */
+  void open(OutputFile file);
+  bool is_open() const { return file.fd >= 0; }
+  const std::string &name() const { return file.path; }
 
   CsvFile &operator<<(const double x)
   {
@@ -93,8 +103,7 @@ public:
   void close();
 
 private:
-  std::string filename;
-  int fd = -1;
+  OutputFile file;
   std::string buffer;
 };
 } // namespace hati

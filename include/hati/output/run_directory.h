@@ -1,6 +1,8 @@
 #ifndef hati_output_run_directory_h
 #define hati_output_run_directory_h
 
+#include <hati/output/output_file.h>
+
 #include <exception>
 #include <set>
 #include <string>
@@ -22,7 +24,10 @@ namespace hati
  * - installs the SIGINT/SIGTERM handlers of stop_requested().
  *
  * Every file of the run is listed in the manifest (create()) before it is
- * opened, so that a killed run is cleaned up by the next one as well.
+ * opened, so that a killed run is cleaned up by the next one as well. Every
+ * file is opened relative to the directory opened by begin() and never
+ * through a symbolic link (OutputFolder): a link where a file of the run,
+ * the lock or the manifest would go is refused in one line naming it.
  */
 class RunDirectory
 {
@@ -40,7 +45,7 @@ public:
   /** Take the directory over as described above; does nothing the second time. */
   void begin();
   /** Whether begin() succeeded (the lock is held). */
-  bool begun() const { return lock_fd >= 0; }
+  bool begun() const { return lock.fd >= 0; }
   const std::string &path() const { return dir; }
 
   /**
@@ -49,19 +54,33 @@ public:
    */
   std::string create(const std::string &name);
 
+  /** create() @p name and open it for writing (OutputFolder::create()). */
+  OutputFile open(const std::string &name, const int flags = 0);
+
+  /**
+   * create() @p name and its temporary file and replace @p name by
+   * @p content atomically (OutputFolder::replace()).
+   */
+  void replace(const std::string &name, const std::string &content, const bool durable);
+
+  /** fsync @p name and the directory (OutputFolder::sync()). */
+  void sync(const std::string &name) const;
+
   /**
    * Record a failure: `summary.json` becomes `{"warnings": @p warnings,
    * "status": "failed", "message": @p message}` (failed_summary()). Only
    * after begin() (a refused run never writes into the directory of
-   * another); never throws.
+   * another); never throws. If the atomic replacement fails (a full disk
+   * has no room for its temporary file), `summary.json` is overwritten in
+   * place.
    */
   void fail(const std::string &message,
             const std::vector<std::string> &warnings = {}) noexcept;
 
 private:
   const std::string dir, parameters;
-  int lock_fd = -1;
-  int manifest_fd = -1;
+  OutputFolder folder;
+  OutputFile lock, manifest;
   std::set<std::string> registered;
 };
 
@@ -73,32 +92,6 @@ private:
  * writes about ten files into its folder.
  */
 void check_output_directory(const std::string &path);
-
-/**
- * Replace @p filename by a file holding @p content atomically: the content
- * goes to `.<name>.tmp` in the same directory, which is then renamed; a
- * reader or a run killed at any instant sees the old or the new file, never
- * a part. If @p durable, the temporary file is fsync'ed before the rename and
- * the directory after it (best effort), so that a power failure too leaves
- * the old or the new file (about 1 ms per call on ext4, more when the disk
- * is busy: a file replaced often makes only some replacements durable and
- * the last one with sync_file()). Throws a one-line message naming the file
- * and the system error.
- */
-void write_file_atomically(const std::string &filename,
-                           const std::string &content,
-                           const bool durable = true);
-
-/**
- * Make @p filename durable as write_file_atomically() with `durable` does:
- * fsync the file, then its directory (best effort). Throws a one-line
- * message naming the file and the system error if the file cannot be
- * synced.
- */
-void sync_file(const std::string &filename);
-
-/** The name of the temporary file of write_file_atomically() for @p name. */
-std::string temporary_name(const std::string &name);
 
 /**
  * Whether SIGINT or SIGTERM arrived since RunDirectory::begin() installed
