@@ -4,6 +4,7 @@
 
 #include <boost/program_options.hpp>
 
+#include <hati/base/input_file.h>
 #include <hati/output/run_directory.h>
 #include <hati/simulation.h>
 
@@ -117,8 +118,10 @@ int run_command_line(int argc, char **argv)
       return 2;
     }
     const std::string file = vm["parameter-file"].as<std::string>();
-    AssertThrow(std::filesystem::is_regular_file(file),
+    AssertThrow(std::filesystem::exists(file),
                 ExcMessage("parameter file '" + file + "' does not exist"));
+    // a FIFO would block the reader, a device never end: refused unopened
+    require_regular_file(file, "", "parameter");
     const std::string extension = std::filesystem::path(file).extension().string();
     if (extension == ".json" || extension == ".xml")
     {

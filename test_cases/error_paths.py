@@ -238,6 +238,9 @@ for what, args, fragment in [
         ("an accelerogram that is a FIFO",
          [ctx.prm("portal_frame_elcentro.prm"), "--set", "Loading/Accelerogram X=" + fifo],
          "Loading/Accelerogram X: '%s' is not a regular file (a FIFO)" % fifo),
+        ("a parameter file that is a FIFO", [fifo],
+         "hati: error: '%s' is not a regular file (a FIFO): a regular parameter file "
+         "is expected" % fifo),
         ("a mesh file that is a FIFO",
          [ctx.prm("frame_joints.prm"), *frame_mesh, "--set", "Model/Frame/Mesh file=" + fifo],
          "Model/Frame/Mesh file: '%s' is not a regular file (a FIFO)" % fifo)]:
