@@ -11,7 +11,11 @@ closed.
   position (statically determinate), at two trolley positions, to 1e-8;
 - the two wheels of a rail carry the same load (symmetry about X = 0);
 - one-line errors: trolley off the span, explicit zone longer than a
-  girder, negative flange clearance, damping ratio >= 1."""
+  girder, negative flange clearance, damping ratio >= 1, a frequency-range
+  ratio above 0.3, a damping band upside down;
+- Damping type = frequency range in a fully explicit run: the branches of
+  the specification's prototype, dt_crit = (2/w_max)/sqrt(1 + sum alpha),
+  the energy balance at round-off (issue #16)."""
 import os
 import subprocess
 
@@ -67,4 +71,43 @@ expect_error("damping ratio > 1", ["Model/Bridge crane/Damping ratio=1.5"],
              "'Model/Bridge crane/Damping ratio' [Double 0...1 (inclusive)]")
 expect_error("damping ratio = 1", ["Model/Bridge crane/Damping ratio=1"],
              "Damping ratio", "[0, 1)")
+expect_error("frequency-range damping ratio above 0.3",
+             ["Model/Bridge crane/Damping type=frequency range",
+              "Model/Bridge crane/Damping ratio=0.5"],
+             "Model/Bridge crane/Damping ratio", "[0, 0.3]", "frequency range")
+expect_error("damping band upside down",
+             ["Model/Bridge crane/Damping type=frequency range",
+              "Model/Bridge crane/Damping band=30, 0.5"],
+             "Model/Bridge crane/Damping band", "0 < lower < upper")
+
+# issue #16: Damping type = frequency range (A8) as the crane's default
+# damping of a fully explicit run. References: the branches of the
+# specification's scipy prototype (nnls) for 2 % over 0.5-30 Hz; the stable
+# step (2 / w_max) / sqrt(1 + sum alpha) against the undamped run's
+# 2 / w_max of the same mesh; the energy balance at round-off.
+explicit = ctx.prm("bridge_crane_full_explicit.prm")
+records = os.path.join(ctx.source, "data", "accelerograms")
+short = ["Time integration/End time=0.05", "Output/Output interval=0",
+         "Loading/Accelerogram X=" + os.path.join(records, "Rinaldi228.AT2"),
+         "Loading/Accelerogram Z=" + os.path.join(records, "RinaldiUP.AT2")]
+out, _ = ctx.run(explicit, "undamped", short + ["Model/Bridge crane/Damping ratio=0"])
+undamped = read_summary(out)
+out, _ = ctx.run(explicit, "frequency_range",
+                 short + ["Model/Bridge crane/Damping type=frequency range",
+                          "Time integration/Time step=4e-5"])
+s = read_summary(out)
+ctx.check_true("frequency range: damping_type", s["damping_type"] == "frequency range",
+               s["damping_type"])
+for a, ref in zip(s["damping_branches"]["alpha"],
+                  (0.066373834779, 0.053493976171, 0.07522797496)):
+    ctx.check("frequency range: alpha (prototype)", a, ref, rel=1e-9)
+ctx.check("frequency range: damping_fit_error", s["damping_fit_error"], 0.0233644780751,
+          rel=1e-8)
+sum_alpha = sum(s["damping_branches"]["alpha"])
+ctx.check("frequency range: dt_crit = (2/w_max)/sqrt(1 + sum alpha) (s)", s["dt_crit"],
+          undamped["dt_crit"] / (1 + sum_alpha) ** 0.5, rel=1e-9)
+ctx.check_true("frequency range: dt = 4e-5 s is %.0f times the 2 %% Rayleigh step 1.8e-6 s"
+               % (4e-5 / 1.8e-6), s["dt"] == 4e-5 and s["status"] == "completed")
+ctx.check("frequency range: energy balance relative to the largest energy",
+          s["energy_balance_relative"], 0.0, abs_tol=1e-12)
 ctx.finish()

@@ -133,6 +133,7 @@ void Problem::decompose()
 
 void Problem::prepare_transient()
 {
+  apply_default_frequency_range_damping();
   AssertThrow(!damping.frequency_range() || time_parameters.method == "CD-Lagrange" ||
                   time_parameters.method == "Newmark",
               ExcMessage("Time integration/Damping/Type = frequency range is applied by "
@@ -151,11 +152,10 @@ void Problem::prepare_transient()
             system.initial_displacement[part.global_dofs[i]];
         part.system.initial_velocity[i] = system.initial_velocity[part.global_dofs[i]];
       }
-  if (!damping.frequency_range())
-    for (const auto &entry : apply_default_damping(model->default_damping_ratio(),
-                                                   system,
-                                                   time_parameters.method,
-                                                   damping.rayleigh))
+  const DefaultDamping defaults = model->default_damping();
+  if (!damping.frequency_range() && defaults.type == "Rayleigh")
+    for (const auto &entry : apply_default_damping(
+             defaults.ratio, system, time_parameters.method, damping.rayleigh))
       initial_state_summary.push_back(entry);
   AssertThrow(time_parameters.method != "event-driven" ||
                   (damping.rayleigh.a0 == 0. && damping.rayleigh.a1 == 0.),
@@ -163,6 +163,28 @@ void Problem::prepare_transient()
                          "CD-Lagrange and Newmark integrators only; remove it for "
                          "Method = event-driven."));
   add_damping_summary();
+}
+
+void Problem::apply_default_frequency_range_damping()
+{
+  const DefaultDamping defaults = model->default_damping();
+  if (damping.given() || defaults.type != "frequency range" || defaults.ratio <= 0.)
+    return;
+  if (time_parameters.method == "event-driven")
+  {
+    out << "  no default damping (" << defaults.ratio
+        << ") with Method = event-driven: undamped" << std::endl;
+    return;
+  }
+  damping = frequency_range_damping(
+      defaults.ratio, defaults.lower_frequency, defaults.upper_frequency, 3);
+  std::ostringstream s;
+  s << defaults.entries << ": 3 Maxwell branches fit the damping ratio " << defaults.ratio
+    << " over " << defaults.lower_frequency << " to " << defaults.upper_frequency
+    << " Hz only within " << 100. * damping.fit_error
+    << " % (at most 10 % accepted): narrow the band";
+  AssertThrow(damping.fit_acceptable(), ExcMessage(s.str()));
+  out << "  default damping of the model (" << defaults.entries << "):" << std::endl;
 }
 
 void Problem::add_damping_summary()

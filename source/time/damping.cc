@@ -81,23 +81,38 @@ DampingModel read_frequency_range_damping(dealii::ParameterHandler &prm)
       << ".";
     AssertThrow(false, dealii::ExcMessage(s.str()));
   }
-  const MaxwellFit fit = fit_maxwell_branches(
+  damping = frequency_range_damping(
       damping.ratio, damping.lower_frequency, damping.upper_frequency, n);
-  damping.branches = fit.branches;
-  damping.fit_error = fit.error;
-  if (!(fit.error <= 0.1) || damping.branches.alpha_sum() <= 0.)
+  if (!damping.fit_acceptable())
   {
     s << "Time integration/Damping: " << n << " Maxwell branches (Number of branches) "
       << "fit the Damping ratio = " << damping.ratio
       << " over Lower frequency = " << damping.lower_frequency
       << " to Upper frequency = " << damping.upper_frequency << " Hz only within "
-      << 100. * fit.error
+      << 100. * damping.fit_error
       << " % (at most 10 % accepted): narrow the band or raise Number of branches.";
     AssertThrow(false, dealii::ExcMessage(s.str()));
   }
   return damping;
 }
 } // namespace
+
+DampingModel frequency_range_damping(const double ratio,
+                                     const double lower_frequency,
+                                     const double upper_frequency,
+                                     const unsigned int n_branches)
+{
+  DampingModel damping;
+  damping.type = "frequency range";
+  damping.ratio = ratio;
+  damping.lower_frequency = lower_frequency;
+  damping.upper_frequency = upper_frequency;
+  const MaxwellFit fit =
+      fit_maxwell_branches(ratio, lower_frequency, upper_frequency, n_branches);
+  damping.branches = fit.branches;
+  damping.fit_error = fit.error;
+  return damping;
+}
 
 const Registry<DampingFactory> &damping_registry()
 {

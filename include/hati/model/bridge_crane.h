@@ -5,6 +5,7 @@
 #include <hati/model/frame_description.h>
 #include <hati/model/model.h>
 
+#include <array>
 #include <map>
 #include <string>
 #include <utility>
@@ -66,11 +67,18 @@ public:
     /** "contacts" (on the runway rails) or "pinned" (held in X, Y, Z: paper case). */
     std::string crane_wheels = "contacts";
     /**
-     * Rayleigh damping ratio (-) at the first vertical and the first
-     * horizontal mode, used when Time integration/Damping is not set; 0:
-     * undamped.
+     * Damping ratio (-) of a transient run when Time integration/Damping is
+     * not set; 0: undamped.
      */
     double damping_ratio = 0.02;
+    /**
+     * `frequency range`: the ratio nearly constant over damping_band (A8,
+     * N4); `Rayleigh`: reached at the first vertical and the first
+     * horizontal mode.
+     */
+    std::string damping_type = "Rayleigh";
+    /** The band (Hz) of frequency-range damping. */
+    std::array<double, 2> damping_band = {{0.5, 30.}};
     /** Element lengths outside and inside the explicit zones (m). */
     double element_length = 1., explicit_element_length = 0.5;
     /** Length of girder / end carriage around each wheel meshed finely (m). */
@@ -105,8 +113,8 @@ public:
   {
     return frame.describe_dof(dof);
   }
-  /** Model/Bridge crane/Damping ratio (-). */
-  double default_damping_ratio() const override { return crane.damping_ratio; }
+  /** Model/Bridge crane/Damping ratio, Damping type and Damping band. */
+  DefaultDamping default_damping() const override;
   /**
    * `mass_bridge`, `mass_trolley` (kg), the frame's entries
    * (`section_force_envelope`) and `static_wheel_loads` (wheel contact name

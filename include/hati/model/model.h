@@ -98,6 +98,24 @@ struct DofDescription
 };
 
 /**
+ * The damping a model gives a transient run when `Time integration/Damping`
+ * is not set: a ratio reached at the first vertically and the first
+ * horizontally dominated modes by Rayleigh damping (doc/theory.md 4.4), or
+ * held nearly constant over a band by frequency-range damping (A8, N4).
+ */
+struct DefaultDamping
+{
+  /** Damping ratio (-); 0: undamped. */
+  double ratio = 0.;
+  /** `Rayleigh` or `frequency range`. */
+  std::string type = "Rayleigh";
+  /** `frequency range`: the band (Hz). */
+  double lower_frequency = 0., upper_frequency = 0.;
+  /** The entries that set it, for messages (e.g. `Model/Bridge crane/Damping ratio`). */
+  std::string entries;
+};
+
+/**
  * A model turns its `.prm` description into a DiscreteSystem (mesh, DoFs,
  * lumped mass, stiffness, loads, contacts, monitors, initial state) and
  * writes DoF vectors of that system to VTU. Integrators never see a model.
@@ -195,13 +213,11 @@ public:
   virtual std::vector<std::string> wheel_contacts() const { return {}; }
 
   /**
-   * Damping ratio (-) of the Rayleigh damping a transient run of this model
-   * gets when `Time integration/Damping` is not set: reached at the first
-   * vertically and the first horizontally dominated modes with the zero-gap
-   * contacts closed (doc/theory.md 4.4, default_rayleigh_damping()). 0 (the
-   * default): no damping unless the user gives it.
+   * The damping a transient run of this model gets when
+   * `Time integration/Damping` is not set (DefaultDamping; none by
+   * default).
    */
-  virtual double default_damping_ratio() const { return 0.; }
+  virtual DefaultDamping default_damping() const { return {}; }
 
   /**
    * Lines of results for the table printed at the end of a transient run

@@ -129,6 +129,11 @@ private:
    * damping_fit_error (0 for Rayleigh).
    */
   void add_damping_summary();
+  /**
+   * The model's default frequency-range damping (Model::default_damping())
+   * when `Time integration/Damping` is not set (not for event-driven runs).
+   */
+  void apply_default_frequency_range_damping();
   /** The static equilibrium under the constant loads as the initial state. */
   void set_static_initial_state();
 

@@ -38,6 +38,8 @@ struct DampingModel
    * frequency range): the model's default damping is then not applied.
    */
   bool given() const { return rayleigh.given || frequency_range(); }
+  /** Frequency range: whether the fit is within 10 % over the band (A8). */
+  bool fit_acceptable() const { return fit_error <= 0.1 && branches.alpha_sum() > 0.; }
 };
 
 /**
@@ -55,6 +57,17 @@ const Registry<DampingFactory> &damping_registry();
 /** Declare `Type` and the entries of every registered damping model (current subsection).
  */
 void declare_damping_parameters(dealii::ParameterHandler &prm);
+
+/**
+ * Frequency-range damping (A8, N4): @p n_branches Maxwell branches fitted to
+ * the ratio @p ratio over [@p lower_frequency, @p upper_frequency] (Hz) by
+ * fit_maxwell_branches(); the caller checks the inputs before (0 < ratio,
+ * 0 < lower < upper) and DampingModel::fit_acceptable() after.
+ */
+DampingModel frequency_range_damping(double ratio,
+                                     double lower_frequency,
+                                     double upper_frequency,
+                                     unsigned int n_branches);
 
 /** The damping of the model chosen by `Type` (current subsection). */
 DampingModel parse_damping_parameters(dealii::ParameterHandler &prm);
