@@ -134,9 +134,9 @@ void Problem::decompose()
 void Problem::prepare_transient()
 {
   AssertThrow(!damping.frequency_range() || time_parameters.method == "CD-Lagrange" ||
-                  time_parameters.method == "Newmark",
+                  time_parameters.method == "Newmark" || time_parameters.method == "HATI",
               ExcMessage("Time integration/Damping/Type = frequency range is applied by "
-                         "the CD-Lagrange and Newmark integrators only (not yet by "
+                         "the CD-Lagrange, Newmark and HATI integrators only (not by "
                          "Method = " +
                          time_parameters.method + "): use Type = Rayleigh."));
   if (time_parameters.method == "HATI")
