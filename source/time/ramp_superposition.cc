@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hati
 {
@@ -36,8 +37,11 @@ RampSuperposition::RampSuperposition(const DiscreteSystem &system,
     : system(system), dt(dt), m(m), interface(interface),
       damped(damping.a0 != 0. || damping.a1 != 0. || !branches.alpha.empty()),
       with_memory(!branches.alpha.empty()),
-      // the explicit integrator's own code path, from rest, without loads
-      ramp_integrator(std::make_unique<CDLagrange>(system, dt, 1., damping, branches))
+      // the explicit integrator's own code path, from rest, without loads;
+      // the coupling's explicit integrator has checked the step against
+      // its safety factor (the stability test goes beyond it)
+      ramp_integrator(std::make_unique<CDLagrange>(
+          system, dt, std::numeric_limits<double>::infinity(), damping, branches))
 {
   compute_ramp({}, open_ramp, false);
   find_reach();
