@@ -10,6 +10,13 @@
 // portals joined by cross beams, column colA and beam beamAB explicit), with
 // two elements a member, no gravity, no point masses on the interface nodes
 // in one case and with them (owned by the explicit side) in the other.
+// With frequency-range damping (A8 explicit, N4 implicit, xi = 5 % over
+// 1-30 Hz, doc/theory.md G3' with memory variables) the memory variables of
+// both parts join the state; within the A8 stable step (0.95 of it) the
+// radius is still 1 to 1e-10 (the neutral interface-drift mode of velocity
+// continuity, as the prototype gc_bar_damped_macro.py gives), the damped
+// modes below; at 1.05 of it the radius is far above 1 (and 1 without
+// damping at the same step).
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/lapack_full_matrix.h>
@@ -18,6 +25,7 @@
 #include <hati/model/decomposition.h>
 #include <hati/model/model.h>
 #include <hati/run/problem.h>
+#include <hati/time/frequency_range_damping.h>
 #include <hati/time/hati_coupling.h>
 
 #include <cmath>
@@ -87,6 +95,28 @@ double spectral_radius(HATICoupling &coupling, double &smallest)
   }
   return rho;
 }
+/**
+ * The largest eigenfrequency (rad/s) of the explicit subdomain @p system on
+ * its own (free DoFs with mass, the interface free): the exact A8 stable
+ * step is (2/omega_max)/sqrt(1 + sum alpha).
+ */
+double highest_frequency(const DiscreteSystem &system)
+{
+  std::vector<unsigned int> free;
+  for (unsigned int i = 0; i < system.n_dofs(); ++i)
+    if (!system.fixed[i] && system.lumped_mass[i] > 0.)
+      free.push_back(i);
+  LAPACKFullMatrix<double> A(free.size(), free.size());
+  for (unsigned int a = 0; a < free.size(); ++a)
+    for (unsigned int b = 0; b < free.size(); ++b)
+      A(a, b) = system.stiffness.el(free[a], free[b]) /
+                std::sqrt(system.lumped_mass[free[a]] * system.lumped_mass[free[b]]);
+  A.compute_eigenvalues();
+  double lambda = 0.;
+  for (unsigned int i = 0; i < free.size(); ++i)
+    lambda = std::max(lambda, A.eigenvalue(i).real());
+  return std::sqrt(lambda);
+}
 } // namespace
 
 int main(int argc, char **argv)
@@ -136,6 +166,64 @@ int main(int argc, char **argv)
                 << " (limit 1 + 1e-10, undamped: >= 1 - 1e-8)" << std::setprecision(6)
                 << std::endl;
     }
+    // frequency-range damping: the memory variables in the state (G3')
+    const MaxwellBranches branches = fit_maxwell_branches(0.05, 1., 30., 3).branches;
+    // the exact A8 stable step of the explicit subdomain (the step check of
+    // CD-Lagrange uses a bound of omega_max, about 20 % below it here)
+    const double dt_a8_exact = 2. / highest_frequency(decomposition.parts[0].system) /
+                               std::sqrt(1. + branches.alpha_sum());
+    for (const unsigned int m : {1u, 2u, 5u, 10u})
+    {
+      HATIParameters parameters;
+      parameters.time_step_ratio = m;
+      HATICoupling coupling(decomposition,
+                            system.n_dofs(),
+                            0.95 * dt_a8_exact,
+                            2., // above the check's bound of omega_max
+                            parameters,
+                            NewmarkParameters(),
+                            RayleighDamping(),
+                            branches);
+      double smallest = 0.;
+      const double rho = spectral_radius(coupling, smallest);
+      const bool ok = rho <= 1. + 1e-10 && rho >= 1. - 1e-10;
+      failures += ok ? 0 : 1;
+      std::cout << (ok ? "ok   " : "FAIL ") << "m = " << m
+                << ", frequency-range damping (sum alpha " << branches.alpha_sum()
+                << ", dt = 0.95 x the exact A8 step (2/omega_max)/sqrt(1 + sum alpha)): "
+                   "spectral radius "
+                << std::setprecision(15) << rho
+                << " (expected 1 to 1e-10: the neutral interface-drift mode)"
+                << std::setprecision(6) << std::endl;
+    }
+    // just above the exact A8 stable step (and well below the undamped
+    // one): unstable, the memory variables are really in the explicit map;
+    // undamped at the same step: radius 1
+    for (const unsigned int m : {1u, 10u})
+      for (const bool damped : {true, false})
+      {
+        HATIParameters parameters;
+        parameters.time_step_ratio = m;
+        HATICoupling coupling(decomposition,
+                              system.n_dofs(),
+                              1.05 * dt_a8_exact,
+                              2., // above the check's bound of omega_max
+                              parameters,
+                              NewmarkParameters(),
+                              RayleighDamping(),
+                              damped ? branches : MaxwellBranches());
+        double smallest = 0.;
+        const double rho = spectral_radius(coupling, smallest);
+        const bool ok = damped ? rho > 1.01 : std::abs(rho - 1.) <= 1e-10;
+        failures += ok ? 0 : 1;
+        std::cout << (ok ? "ok   " : "FAIL ") << "m = " << m << ", dt = 1.05 x the exact "
+                  << "A8 step (2/omega_max)/sqrt(1 + sum alpha), "
+                  << (damped ? "frequency-range damping" : "undamped")
+                  << ": spectral radius " << std::setprecision(15) << rho
+                  << (damped ? " (expected > 1.01: unstable above the A8 step)"
+                             : " (expected 1 to 1e-10: within the undamped step)")
+                  << std::setprecision(6) << std::endl;
+      }
   }
   if (failures)
     std::cout << failures << " check(s) failed" << std::endl;

@@ -135,9 +135,9 @@ void Problem::prepare_transient()
 {
   apply_default_frequency_range_damping();
   AssertThrow(!damping.frequency_range() || time_parameters.method == "CD-Lagrange" ||
-                  time_parameters.method == "Newmark",
+                  time_parameters.method == "Newmark" || time_parameters.method == "HATI",
               ExcMessage("Time integration/Damping/Type = frequency range is applied by "
-                         "the CD-Lagrange and Newmark integrators only (not yet by "
+                         "the CD-Lagrange, Newmark and HATI integrators only (not by "
                          "Method = " +
                          time_parameters.method + "): use Type = Rayleigh."));
   if (time_parameters.method == "HATI")

@@ -57,11 +57,14 @@ HATICoupling::HATICoupling(const Decomposition &decomposition,
                            const double safety_factor,
                            const HATIParameters &parameters,
                            const NewmarkParameters &newmark_parameters,
-                           const RayleighDamping &damping)
+                           const RayleighDamping &damping,
+                           const MaxwellBranches &branches)
     : decomposition(decomposition), m(parameters.time_step_ratio),
-      explicit_integrator(decomposition.parts[0].system, dt, safety_factor, damping),
+      explicit_integrator(
+          decomposition.parts[0].system, dt, safety_factor, damping, branches),
       explicit_view(explicit_integrator.coupling_view()),
-      implicit(decomposition.parts[1].system, m * dt, newmark_parameters, damping)
+      implicit(
+          decomposition.parts[1].system, m * dt, newmark_parameters, damping, branches)
 {
   const auto start = Clock::now();
   AssertThrow(
@@ -72,7 +75,7 @@ HATICoupling::HATICoupling(const Decomposition &decomposition,
   interface = std::make_unique<InterfaceProblem>(
       decomposition, implicit, newmark_parameters.gamma);
   superposition = std::make_unique<RampSuperposition>(
-      decomposition.parts[0].system, dt, m, damping, *interface);
+      decomposition.parts[0].system, dt, m, damping, branches, *interface);
   const unsigned int n_gamma = interface->size();
   for (auto *v : {&lambda_n,
                   &lambda_m,
@@ -318,8 +321,9 @@ Energies HATICoupling::energies() const
 
 unsigned int HATICoupling::state_size() const
 {
-  return 2 * decomposition.parts[0].system.n_dofs() +
-         3 * decomposition.parts[1].system.n_dofs() + interface->size();
+  const unsigned int n_branches = explicit_integrator.memory().n_branches();
+  return (2 + n_branches) * decomposition.parts[0].system.n_dofs() +
+         (3 + n_branches) * decomposition.parts[1].system.n_dofs() + interface->size();
 }
 
 void HATICoupling::get_state(Vector<double> &x) const
@@ -341,6 +345,10 @@ void HATICoupling::get_state(Vector<double> &x) const
     x[o++] = DT * DT * implicit.acceleration()[i];
   for (unsigned int k = 0; k < interface->size(); ++k)
     x[o++] = lambda_n[k];
+  for (const auto *memory : {&explicit_integrator.memory(), &implicit.memory()})
+    for (const Vector<double> &q : memory->memory())
+      for (unsigned int i = 0; i < q.size(); ++i)
+        x[o++] = q[i];
 }
 
 void HATICoupling::set_state(const Vector<double> &x)
@@ -366,5 +374,17 @@ void HATICoupling::set_state(const Vector<double> &x)
     (*I[2])[i] = x[o++] / (DT * DT);
   for (unsigned int k = 0; k < interface->size(); ++k)
     lambda_n[k] = x[o++];
+  // the memory variables (A8, N4); S and the branch forces follow from them
+  explicit_view.memory().modify_memory(
+      [&](unsigned int, Vector<double> &q)
+      {
+        for (unsigned int i = 0; i < nE; ++i)
+          q[i] = x[o++];
+      });
+  std::vector<Vector<double>> q(implicit.memory().memory());
+  for (Vector<double> &ql : q)
+    for (unsigned int i = 0; i < nI; ++i)
+      ql[i] = x[o++];
+  implicit.set_memory(q);
 }
 } // namespace hati

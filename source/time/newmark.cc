@@ -549,6 +549,14 @@ void Newmark::finish_step()
   t = n_steps * dt;
 }
 
+void Newmark::set_memory(const std::vector<Vector<double>> &q)
+{
+  if (!branches.active())
+    return;
+  branches.set_memory(q, branches.work());
+  stiffness_vmult(KS, branches.sum());
+}
+
 Energies Newmark::energies() const
 {
   Energies e;

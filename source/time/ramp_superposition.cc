@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hati
 {
@@ -31,11 +32,16 @@ RampSuperposition::RampSuperposition(const DiscreteSystem &system,
                                      const double dt,
                                      const unsigned int m,
                                      const RayleighDamping &damping,
+                                     const MaxwellBranches &branches,
                                      const InterfaceProblem &interface)
     : system(system), dt(dt), m(m), interface(interface),
-      damped(damping.a0 != 0. || damping.a1 != 0.),
-      // the explicit integrator's own code path, from rest, without loads
-      ramp_integrator(std::make_unique<CDLagrange>(system, dt, 1., damping))
+      damped(damping.a0 != 0. || damping.a1 != 0. || !branches.alpha.empty()),
+      with_memory(!branches.alpha.empty()),
+      // the explicit integrator's own code path, from rest, without loads;
+      // the coupling's explicit integrator has checked the step against
+      // its safety factor (the stability test goes beyond it)
+      ramp_integrator(std::make_unique<CDLagrange>(
+          system, dt, std::numeric_limits<double>::infinity(), damping, branches))
 {
   compute_ramp({}, open_ramp, false);
   find_reach();
@@ -125,10 +131,12 @@ void RampSuperposition::compute_ramp(const std::vector<bool> &active_set,
       normal_velocity(m + 2, FullMatrix<double>(nrc, n_gamma)),
       velocity_reach(with_damping ? m + 1 : 0, FullMatrix<double>(nR, n_gamma)),
       damping_reach(with_damping ? m + 1 : 0, FullMatrix<double>(nR, n_gamma));
+  r.memory.assign(ramp.memory().n_branches(), SparseColumns());
   for (unsigned int l = 0; l < n_gamma; ++l)
   {
     for (auto *v : integrator.linear_state())
       *v = 0.;
+    ramp.memory().reset();
     for (const unsigned int c : reach_contacts)
       ramp.set_contact_state(c, 0., 0.);
     for (unsigned int j = 1; j <= m; ++j)
@@ -173,6 +181,8 @@ void RampSuperposition::compute_ramp(const std::vector<bool> &active_set,
     const auto state = integrator.linear_state();
     for (unsigned int s = 0; s < state.size(); ++s)
       r.state[s].add_column(*state[s]);
+    for (unsigned int b = 0; b < r.memory.size(); ++b)
+      r.memory[b].add_column(ramp.memory().memory()[b]);
   }
   ramp.prescribe_active_set(nullptr);
   // stored sparse with the micro steps stacked, row j nrc + c
@@ -189,6 +199,7 @@ void RampSuperposition::compute_ramp(const std::vector<bool> &active_set,
   r.gap = store(gap);
   r.normal_velocity = store(normal_velocity);
   r.velocity_on_reach.clear();
+  r.damping_on_reach.clear();
   r.dissipation_quadratic = DenseColumns();
   if (with_damping)
     store_dissipation(velocity_reach, damping_reach, r);
@@ -219,6 +230,13 @@ void RampSuperposition::store_dissipation(
       final_velocity(i, l) = column[reach_dofs[i]];
   }
   r.velocity_on_reach[m + 1] = SparseColumns(final_velocity);
+  // A8: the ramp's branch forces are not a function of its velocities
+  if (with_memory)
+  {
+    r.damping_on_reach.resize(m + 1);
+    for (unsigned int j = 1; j <= m; ++j)
+      r.damping_on_reach[j] = SparseColumns(damping_reach[j]);
+  }
   // Q = sum_j V_j^T M (D_{j-1} + D_j), D_0 = 0 (the ramp starts at rest)
   r.dissipation_quadratic.reinit(n_gamma, n_gamma);
   for (unsigned int j = 1; j <= m; ++j)
@@ -312,6 +330,10 @@ bool RampSuperposition::superpose(const Response &r,
   const auto state = integrator.linear_state();
   for (unsigned int s = 0; s < state.size(); ++s)
     r.state[s].add_multiply(*state[s], lambda);
+  // A8: the memory variables are linear in the state too (S recomputed)
+  if (with_memory)
+    view.memory().modify_memory([&](const unsigned int b, Vector<double> &q)
+                                { r.memory[b].add_multiply(q, lambda); });
   r.increment_sum.add_multiply(increments.increment_sum, lambda);
   r.increment_weighted.add_multiply(increments.increment_weighted, lambda);
   r.H_E.add_multiply(increments.v_end, lambda);
@@ -473,6 +495,14 @@ double RampSuperposition::ramp_dissipation(const Response &ramp,
       p[r] = pr;
     }
     ramp.velocity_on_reach[j].Tvmult_add(dissipation_g, cj);
+    // A8: the pass's velocities on the ramp's branch forces,
+    // v_a,j . M (d_r,j-1 + d_r,j) summed over j is sum_j M p_j . d_r,j
+    if (with_memory)
+    {
+      for (unsigned int r = 0; r < nR; ++r)
+        cj[r] = mass[r] * p[r];
+      ramp.damping_on_reach[j].Tvmult_add(dissipation_g, cj);
+    }
     // the interface ramp's and the contacts' velocity jumps in the ramp's
     // free velocity
     const double s = dt * double(j) / m;

@@ -378,6 +378,11 @@ public:
   void add_external_work(const double work) { integrator->time_dependent_work += work; }
   /** Add @p energy (J) to the dissipated energy. */
   void add_dissipated(const double energy) { integrator->add_dissipated(energy); }
+  /**
+   * The memory variables of frequency-range damping (A8), part of the
+   * linear state: the ramp responses carry their own (G3').
+   */
+  MaxwellMemory &memory() { return integrator->branches; }
   /** @} */
 
 private:

@@ -95,6 +95,10 @@ public:
    *        outlive the coupling.
    * @param n_global_dofs number of DoFs of the whole model (outputs).
    * @param dt micro step (s), checked against the explicit dt_crit.
+   * @param branches Maxwell branches of frequency-range damping (A8 in the
+   *        explicit part, N4 in the implicit one; none by default, not
+   *        combined with Rayleigh damping): the memory variables are part
+   *        of both states and of the unit-ramp response (G3').
    */
   HATICoupling(const Decomposition &decomposition,
                const unsigned int n_global_dofs,
@@ -102,7 +106,8 @@ public:
                const double safety_factor,
                const HATIParameters &parameters,
                const NewmarkParameters &newmark_parameters,
-               const RayleighDamping &damping);
+               const RayleighDamping &damping,
+               const MaxwellBranches &branches = MaxwellBranches());
 
   /** One macro step t_n -> t_{n+m}: (G1), (G2), (G3'), (G4). */
   void step();
@@ -137,7 +142,9 @@ public:
   /**
    * @name The state of the macro-step map, for the stability test:
    * [U_E, dt V_E, U_I, DT V_I, DT^2 A_I, Lambda_n] (scaled so that every
-   * block has the units of a displacement, the multipliers in N).
+   * block has the units of a displacement, the multipliers in N), then,
+   * with frequency-range damping, the memory variables q_l of the explicit
+   * and of the implicit part (m).
    */
   /** @{ */
   unsigned int state_size() const;

@@ -93,6 +93,22 @@ public:
    */
   void set_memory(const std::vector<Vector<double>> &memory, double work);
 
+  /**
+   * Change each q_l in place with `change(l, q_l)` (one call per branch),
+   * then recompute S, keeping the branch work: the coupling's
+   * superposition of the unit-ramp response and its macro-step map (G3').
+   */
+  template <typename Change> void modify_memory(const Change &change)
+  {
+    if (!active())
+      return;
+    for (unsigned int l = 0; l < q.size(); ++l)
+      change(l, q[l]);
+    S = 0.;
+    for (unsigned int l = 0; l < alpha.size(); ++l)
+      S.add(alpha[l], q[l]);
+  }
+
 private:
   std::vector<double> alpha, decay, gain;
   std::vector<Vector<double>> q;

@@ -218,6 +218,12 @@ public:
   double stiffness_damping_coefficient() const { return a1; }
   /** The memory variables of frequency-range damping (N4; inactive without). */
   const MaxwellMemory &memory() const { return branches; }
+  /**
+   * Set the memory variables q_l (m) of frequency-range damping (N4)
+   * between two steps, keeping the branch work: the coupling's macro-step
+   * map (HATICoupling::set_state()).
+   */
+  void set_memory(const std::vector<Vector<double>> &q);
 
 private:
   /** dst = M src with the consistent or the lumped mass. */

@@ -58,7 +58,10 @@ struct InterfaceIncrements
  * (max_corrections, continuity_tolerance). With damping (A7) the
  * dissipated energy is quadratic in the state: the pass records the
  * velocities, `S V` and damping forces on the reach, and
- * ramp_dissipation() adds the ramp's part.
+ * ramp_dissipation() adds the ramp's part. With frequency-range damping
+ * (A8) the ramp response carries its own memory variables q_l, superposed
+ * with the state (they are linear in it), and its branch forces per micro
+ * step for the dissipated energy.
  *
  * The limits are the named constants below.
  */
@@ -106,6 +109,7 @@ public:
                     const double dt,
                     const unsigned int m,
                     const RayleighDamping &damping,
+                    const MaxwellBranches &branches,
                     const InterfaceProblem &interface);
 
   /**
@@ -132,6 +136,13 @@ public:
      */
     std::vector<SparseColumns> velocity_on_reach;
     DenseColumns dissipation_quadratic;
+    /**
+     * With frequency-range damping (A8): the memory variables q_l after the
+     * m micro steps, one set of columns per branch (superposed with the
+     * state), and the ramp's branch forces `d_j = dt M^-1 K S_j` on the
+     * reach, j = 1 .. m (the cross terms of ramp_dissipation()).
+     */
+    std::vector<SparseColumns> memory, damping_on_reach;
     // (rows j * n_contacts + c: contact c of the reach after micro step j,
     // its normal velocity before it)
     SparseColumns impulse, gap, normal_velocity;
@@ -224,6 +235,8 @@ private:
   const unsigned int m;
   const InterfaceProblem &interface;
   const bool damped;
+  /** Frequency-range damping (A8): the memory variables are part of the state. */
+  const bool with_memory;
   /** The explicit integrator of the ramp responses (from rest, no loads). */
   std::unique_ptr<CDLagrange> ramp_integrator;
   Response open_ramp;
