@@ -69,7 +69,8 @@ expect_error("negative flange clearance", ["Model/Bridge crane/Flange clearance=
              "'Model/Bridge crane/Flange clearance' [Double 0...0.5 (inclusive)]")
 expect_error("damping ratio > 1", ["Model/Bridge crane/Damping ratio=1.5"],
              "'Model/Bridge crane/Damping ratio' [Double 0...1 (inclusive)]")
-expect_error("damping ratio = 1", ["Model/Bridge crane/Damping ratio=1"],
+expect_error("damping ratio = 1 (Rayleigh)", ["Model/Bridge crane/Damping ratio=1",
+                                              "Model/Bridge crane/Damping type=Rayleigh"],
              "Damping ratio", "[0, 1)")
 expect_error("frequency-range damping ratio above 0.3",
              ["Model/Bridge crane/Damping type=frequency range",

@@ -78,15 +78,15 @@ void declare_masses_contacts_and_mesh(ParameterHandler &prm)
       "structure).");
   prm.declare_entry(
       "Damping type",
-      "Rayleigh",
+      "frequency range",
       Patterns::Selection("frequency range|Rayleigh"),
       "How the Damping ratio is applied when Time integration/Damping is not "
-      "set. frequency range: nearly constant over the Damping band, "
+      "set. frequency range (default): nearly constant over the Damping band, "
       "three Maxwell branches proportional to K (A8, N4): the explicit critical "
       "step shrinks only by 1/sqrt(1 + sum alpha), about 0.92. Rayleigh: "
       "C = a0 M + a1 K reaching the ratio at the first mode dominated by "
       "vertical (Z) and the first dominated by horizontal (X or Y) effective "
-      "mass, computed with the zero-gap contacts closed (default, the paper's case); its "
+      "mass, computed with the zero-gap contacts closed (the paper's case); its "
       "stiffness term divides the explicit critical step by 13 (HATI) to 27 "
       "(fully explicit) on the default crane.");
   prm.declare_entry("Damping band",

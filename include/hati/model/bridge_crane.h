@@ -76,7 +76,7 @@ public:
      * N4); `Rayleigh`: reached at the first vertical and the first
      * horizontal mode.
      */
-    std::string damping_type = "Rayleigh";
+    std::string damping_type = "frequency range";
     /** The band (Hz) of frequency-range damping. */
     std::array<double, 2> damping_band = {{0.5, 30.}};
     /** Element lengths outside and inside the explicit zones (m). */
