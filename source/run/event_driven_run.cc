@@ -3,7 +3,7 @@
 #include <hati/output/output_writer.h>
 #include <hati/output/run_directory.h>
 #include <hati/output/summary.h>
-#include <hati/output/wall_clock.h>
+#include <hati/base/wall_clock.h>
 #include <hati/run/analysis_registry.h>
 #include <hati/run/problem.h>
 #include <hati/run/run_tools.h>

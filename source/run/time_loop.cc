@@ -1,9 +1,9 @@
+#include <hati/base/wall_clock.h>
 #include <hati/output/contact_statistics.h>
 #include <hati/output/output_writer.h>
 #include <hati/output/postprocessor.h>
 #include <hati/output/run_directory.h>
 #include <hati/output/summary.h>
-#include <hati/output/wall_clock.h>
 #include <hati/run/problem.h>
 #include <hati/run/run_tools.h>
 #include <hati/run/time_loop.h>
@@ -56,6 +56,57 @@ OutputState output_state(const Newmark &integrator)
 /** Fewer macro steps of HATI than this get a warning. */
 constexpr unsigned long min_macro_steps = 10;
 
+/**
+ * The largest work the coupling's interface may put into the model (J), as
+ * a fraction of the largest physical energy of the run so far (kinetic,
+ * internal, external and contact work, branch storage). A stable G3'
+ * coupling does not create energy (doc/theory.md G5: its interface work is
+ * zero for the linear scheme and negative, dissipated, with contacts); on
+ * the default crane under Rinaldi it stays below 0.4 % of that scale for
+ * DT up to 2e-4 s (m = 1 to 20), and passes 1 % within the first second
+ * at DT = 4e-4 s, where the run otherwise goes on with wheel forces 10 to
+ * 400 times too large. 5 % stops such a run instead of reporting it
+ * complete.
+ */
+constexpr double interface_energy_limit = 0.05;
+
+/**
+ * Refuse a coupled run whose interface has put more than
+ * interface_energy_limit of @p scale into the model (@p e at time @p t).
+ * @p scale is updated with the physical energies of @p e first.
+ */
+void check_interface_energy(const Energies &e,
+                            double &scale,
+                            const HATICoupling &coupling,
+                            OutputWriter &writer)
+{
+  scale = std::max({scale,
+                    std::abs(e.kinetic),
+                    std::abs(e.internal),
+                    std::abs(e.external_work),
+                    std::abs(e.contact_work),
+                    std::abs(e.damping_stored)});
+  if (!(e.interface_work > interface_energy_limit * scale))
+    return;
+  try
+  {
+    writer.flush(); // the rows so far, whole
+  }
+  catch (...)
+  {
+  }
+  std::ostringstream s;
+  s << std::setprecision(3) << "HATI: the interface has put " << e.interface_work
+    << " J into the model by t = " << coupling.time() << " s ("
+    << 100. * e.interface_work / scale << " % of its largest energy, " << scale
+    << " J; a stable coupling only dissipates): the macro step DT = "
+    << coupling.time_step() << " s (Time step " << coupling.micro_time_step()
+    << " s x Time step ratio " << coupling.time_step_ratio()
+    << ") is too large for this model's contacts; reduce the Time step ratio or the "
+       "Time step";
+  throw ExcMessage(s.str());
+}
+
 /** One transient run of a stepping integrator: run_time_loop() in parts. */
 template <class Integrator> class TimeLoop
 {
@@ -102,6 +153,10 @@ private:
   unsigned long steps_done = 0;
   unsigned long micro_step = 0;
   OutputState contact_row;
+  /** HATI: the largest physical energy so far (check_interface_energy()). */
+  double physical_energy_scale = 0.;
+  /** The contact statistics and contacts.csv rows of every (micro) step. */
+  WallClock statistics_clock;
 };
 
 std::vector<double> initial_gaps(const DiscreteSystem &system)
@@ -163,7 +218,10 @@ template <class Integrator> void TimeLoop<Integrator>::write(const unsigned long
     for (const auto &p : postprocessors)
       p->history_row(s);
     writer.write_history(s);
-    writer.write_energy(s.time, integrator.energies());
+    const Energies e = integrator.energies();
+    writer.write_energy(s.time, e);
+    if constexpr (std::is_same_v<Integrator, HATICoupling>)
+      check_interface_energy(e, physical_energy_scale, integrator, writer);
   }
   if (every_vtu > 0 && (step % every_vtu == 0 || step == n_steps))
     writer.write_vtu(s);
@@ -180,6 +238,7 @@ template <class Integrator> void TimeLoop<Integrator>::connect_micro_steps()
     integrator.after_micro_step =
         [this, every_contact_row](const HATICoupling::ContactSample &sample)
     {
+      const WallClock::Scope scope(statistics_clock);
       writer.track_contacts(sample.gaps, sample.impulses);
       statistics.add_step(sample.time, integrator.micro_time_step(), sample.impulses);
       if (++micro_step % every_contact_row == 0)
@@ -209,6 +268,7 @@ template <class Integrator> void TimeLoop<Integrator>::run(TimerOutput &timer)
     if constexpr (explicit_scheme)
       if (!system.contacts.empty())
       {
+        const WallClock::Scope scope(statistics_clock);
         writer.track_contacts(integrator.gaps(), integrator.impulses());
         statistics.add_step(integrator.time(), dt, integrator.impulses());
       }
@@ -267,6 +327,9 @@ void TimeLoop<Integrator>::add_contact_summary(SummaryEntries &summary)
 {
   if (system.contacts.empty())
     return;
+  if constexpr (!std::is_same_v<Integrator, Newmark>)
+    summary.emplace_back("wall_time_contacts", integrator.contact_seconds());
+  summary.emplace_back("wall_time_contact_statistics", statistics_clock.seconds());
   summary.emplace_back("contacts", statistics.json());
   summary.emplace_back("contact_force_window",
                        problem.output_parameters.contact_force_window);
@@ -304,6 +367,7 @@ void TimeLoop<Integrator>::finish(TimerOutput &timer, SummaryEntries summary)
        {"n_steps", steps_done},
        {"wall_time", wall},
        {"stepping_wall_time", stepping},
+       {"wall_time_output", loop_output},
        {"ns_per_dof_per_step",
         steps_done > 0 ? 1e9 * stepping / (double(steps_done) * system.n_dofs())
                        : std::nan("")},

@@ -410,7 +410,10 @@ void CDLagrange::finish_step(const bool with_contacts)
 {
   std::swap(V, V_prev); // V = V_free, V_prev = V_{n+1/2}
   if (with_contacts && !system.contacts.empty())
+  {
+    const WallClock::Scope scope(contact_clock);
     apply_contacts();
+  }
 }
 
 void CDLagrange::save(Snapshot &s) const

@@ -3,6 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <hati/base/wall_clock.h>
 #include <hati/model/discrete_system.h>
 #include <hati/time/energies.h>
 #include <hati/time/maxwell_memory.h>
@@ -115,6 +116,11 @@ public:
   double time_step() const { return dt; }
   double time() const { return t; }
   unsigned long step_number() const { return n_steps; }
+  /**
+   * Wall time spent in the contact resolution (A4-A6) of every step so
+   * far (s), redone steps included.
+   */
+  double contact_seconds() const { return contact_clock.seconds(); }
 
   /** U_n. */
   const Vector<double> &displacement() const { return U; }
@@ -195,6 +201,8 @@ private:
   double dt_crit;
   double t = 0.;
   unsigned long n_steps = 0;
+  /** The contact resolution's wall time (contact_seconds()). */
+  WallClock contact_clock;
 
   // scaled stiffness dt M^-1 K in rows padded to row_width (free DoFs only)
   unsigned int row_width = 0;

@@ -165,6 +165,9 @@ public:
   double explicit_seconds() const { return seconds[0]; }
   double implicit_seconds() const { return seconds[1]; }
   double interface_seconds() const { return seconds[2]; }
+  /** Wall time of the explicit part's contact resolution (s), within explicit_seconds().
+   */
+  double contact_seconds() const { return explicit_integrator.contact_seconds(); }
   /** Set-up: factorisation, ramp response, interface matrix (s). */
   double setup_seconds() const { return setup; }
 

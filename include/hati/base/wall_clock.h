@@ -1,5 +1,5 @@
-#ifndef hati_output_wall_clock_h
-#define hati_output_wall_clock_h
+#ifndef hati_base_wall_clock_h
+#define hati_base_wall_clock_h
 
 #include <chrono>
 

@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# Real-time factor of the default crane: parameter_files/bridge_crane_hati.prm
+# (HATI, dt = 4e-5 s, m = 5, 2 % frequency-range damping) under the whole
+# Rinaldi record (228 along X, UP along Z, 19.9 s), printed as seconds of
+# stepping per second of earthquake, and where the time goes, per part
+# (summary.json, clocks summed over the steps: a deal.II TimerOutput
+# section per micro step would cost more than the step):
+#   explicit micro steps (us per step and ns per DoF and step; the contact
+#     resolution A4-A6 within it), implicit Newmark steps (ms per macro step),
+#   interface (G3' solves and corrections), contact statistics (per micro
+#     step: impacts, peak forces, contacts.csv rows), output (history and
+#     energy rows inside the loop; VTU snapshots are switched off here).
+# For comparison the fully explicit run (bridge_crane_full_explicit.prm,
+# dt = 2e-5 s) over the same record (FULL_EXPLICIT=0 skips it).
+# Goal (issue #16): at most 0.1 s of stepping per second of earthquake.
+# Usage: [FULL_EXPLICIT=0] bench/crane_realtime.sh [END_TIME [build directory]]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+end_time=${1:-19.9}
+build=${2:-build}
+[ -x "$build/hati" ] || ./scripts/setup.sh hati
+out=output/bench_realtime
+mkdir -p "$out"
+runs="hati"
+[ "${FULL_EXPLICIT:-1}" = 0 ] || runs="hati full_explicit"
+for run in $runs; do
+  echo "== bridge_crane_$run.prm, $end_time s of the record"
+  "$build/hati" "parameter_files/bridge_crane_$run.prm" \
+    --set "Time integration/End time=$end_time" \
+    --set "Output/Output interval=0" \
+    --set "Output/Output directory=$out/$run" | grep -E "dt_crit|done:|steps of"
+done
+/usr/bin/python3 - "$out" $runs <<'PY'
+import json, os, sys
+out, runs = sys.argv[1], sys.argv[2:]
+goal = 0.1
+for run in runs:
+    s = json.load(open(os.path.join(out, run, "summary.json")))
+    T, stepping, output = s["end_time"], s["stepping_wall_time"], s["wall_time_output"]
+    print("\n=== %s: %g s of earthquake, %d DoFs, %s damping" % (
+        run.replace("_", " "), T, s["n_dofs"], s.get("damping_type")))
+    print("stepping %.2f s: %.3f s per s of earthquake (goal %.1f: %s); with the output "
+          "rows inside the loop %.3f s per s" % (stepping, stepping / T, goal,
+          "met" if stepping / T <= goal else "not met, %.1fx above" % (stepping / T / goal),
+          (stepping + output) / T))
+    rows = []
+    if "time_step_ratio" in s:
+        m, n = s["time_step_ratio"], s["n_steps"]
+        micro = n * m
+        nE, nI = s["n_dofs_explicit"], s["n_dofs_implicit"]
+        # the contact statistics run inside the explicit part's clock
+        stats = s.get("wall_time_contact_statistics", 0.)
+        e, c = s["wall_time_explicit"] - stats, s.get("wall_time_contacts", 0.)
+        rows = [("explicit micro steps", e, "%.2f us per micro step, %.0f ns per DoF "
+                 "(%d DoFs, %d micro steps, %d macro steps redone)" % (
+                     1e6 * e / micro, 1e9 * e / micro / nE, nE, micro,
+                     s["redone_macro_steps"])),
+                ("  of which contacts", c, "%.2f us per micro step" % (1e6 * c / micro)),
+                ("implicit steps", s["wall_time_implicit"], "%.1f us per macro step "
+                 "(%d DoFs)" % (1e6 * s["wall_time_implicit"] / n, nI)),
+                ("interface", s["wall_time_interface"], "%.1f us per macro step" % (
+                    1e6 * s["wall_time_interface"] / n))]
+        counted = e + s["wall_time_implicit"] + s["wall_time_interface"]
+    else:
+        n = s["n_steps"]
+        c = s.get("wall_time_contacts", 0.)
+        rows = [("steps (A1-A3)", stepping - c - s.get("wall_time_contact_statistics", 0.),
+                 "%.2f us per step, %.0f ns per DoF (%d steps)" % (
+                     1e6 * stepping / n, 1e9 * stepping / n / s["n_dofs"], n)),
+                ("contacts (A4-A6)", c, "%.2f us per step" % (1e6 * c / n))]
+        counted = stepping - s.get("wall_time_contact_statistics", 0.)
+    stats = s.get("wall_time_contact_statistics", 0.)
+    rows.append(("contact statistics", stats, "impacts, peaks, contacts.csv rows"))
+    rows.append(("other (loop, checks)", max(0., stepping - counted - stats), ""))
+    rows.append(("output rows", output, "history and energy every %g s (not in stepping)"
+                 % s.get("history_interval", float("nan")) if "history_interval" in s else
+                 "history and energy rows (not in stepping)"))
+    print("%-24s %10s %8s   %s" % ("part", "wall (s)", "share", "per step"))
+    for name, t, what in rows:
+        print("%-24s %10.3f %7.1f%%   %s" % (name, t, 100 * t / (stepping + output), what))
+PY
