@@ -374,7 +374,7 @@ std::string BridgeCrane::section_forces_header() const
   return frame.section_forces_header();
 }
 
-void BridgeCrane::write_section_forces(std::ostream &out,
+void BridgeCrane::write_section_forces(std::ostream *out,
                                        const double time,
                                        const Vector<double> &U) const
 {

@@ -513,7 +513,7 @@ std::vector<std::string> Frame::cell_members() const
 
 std::string Frame::section_forces_header() const { return section_force_output.header(); }
 
-void Frame::write_section_forces(std::ostream &out,
+void Frame::write_section_forces(std::ostream *out,
                                  const double time,
                                  const Vector<double> &U) const
 {

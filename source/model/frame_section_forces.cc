@@ -38,7 +38,7 @@ std::string FrameSectionForces::header() const
   return "time,member,element,x,N,Vy,Vz,T,My,Mz";
 }
 
-void FrameSectionForces::write(std::ostream &out,
+void FrameSectionForces::write(std::ostream *out,
                                const double time,
                                const Vector<double> &U,
                                const std::vector<FrameCell> &cells,
@@ -59,11 +59,13 @@ void FrameSectionForces::write(std::ostream &out,
             if (v > envelope[e].value)
               envelope[e] = {v, cell.position + end * cell.length, time, name};
           }
-          out << time << ',' << name << ',' << cell.element << ','
-              << cell.position + end * cell.length;
+          if (out == nullptr)
+            continue;
+          *out << time << ',' << name << ',' << cell.element << ','
+               << cell.position + end * cell.length;
           for (unsigned int k = 0; k < 6; ++k)
-            out << ',' << s[6 * end + k] + 0.; // + 0.: no "-0" in the file
-          out << '\n';
+            *out << ',' << s[6 * end + k] + 0.; // + 0.: no "-0" in the file
+          *out << '\n';
         }
       }
 }

@@ -81,8 +81,10 @@ void OutputWriter::write_history(const OutputState &s)
   if (section_forces.is_open())
   {
     section_rows.str("");
-    model.write_section_forces(section_rows, s.time, *s.displacement);
-    section_forces << section_rows.str();
+    model.write_section_forces(
+        s.section_force_rows ? &section_rows : nullptr, s.time, *s.displacement);
+    if (s.section_force_rows)
+      section_forces << section_rows.str();
   }
   if (s.contact_rows)
     write_contacts(s);

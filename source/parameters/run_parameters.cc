@@ -133,6 +133,13 @@ void OutputParameters::declare_parameters(ParameterHandler &prm)
                     Patterns::Double(0.),
                     "Simulated time between two rows of history.csv, contacts.csv and "
                     "energy.csv (s); 0: every time step.");
+  prm.declare_entry("Section force interval",
+                    "0",
+                    Patterns::Double(0.),
+                    "Simulated time between two rows of section_forces.csv (s); 0: at "
+                    "every history row. Rounded to a whole number of history rows. The "
+                    "section_force_envelope of summary.json is taken at every history "
+                    "row whatever this interval.");
   prm.declare_entry(
       "Contact force window",
       "0.001",
@@ -156,6 +163,7 @@ void OutputParameters::parse_parameters(ParameterHandler &prm)
   directory = prm.get("Output directory");
   vtu_interval = prm.get_double("Output interval");
   history_interval = prm.get_double("History interval");
+  section_force_interval = prm.get_double("Section force interval");
   contact_force_window = prm.get_double("Contact force window");
   progress_interval = prm.get_double("Progress interval");
   prm.leave_subsection();

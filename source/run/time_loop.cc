@@ -135,6 +135,8 @@ private:
   const double dt, end_time;
   OutputWriter writer;
   const unsigned long n_steps, every_history, every_vtu;
+  /** Steps between two rows of section_forces.csv, a multiple of every_history. */
+  const unsigned long every_section_row;
   WallClock output_clock; // a TimerOutput section costs more than a row
   /**
    * The stepping loop and the output inside it, on the one clock of
@@ -180,6 +182,11 @@ TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
       every_vtu(problem.output_parameters.vtu_interval > 0.
                     ? steps_between(problem.output_parameters.vtu_interval, dt)
                     : 0),
+      every_section_row(
+          every_history *
+          std::max(1l,
+                   std::lround(problem.output_parameters.section_force_interval /
+                               (every_history * dt)))),
       statistics(problem.system.contacts,
                  initial_gaps(problem.system),
                  problem.output_parameters.contact_force_window),
@@ -211,10 +218,11 @@ TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
 template <class Integrator> void TimeLoop<Integrator>::write(const unsigned long step)
 {
   const WallClock::Scope scope(output_clock);
-  const OutputState s = output_state(integrator);
+  OutputState s = output_state(integrator);
   check_state(watchdog, writer, *s.displacement, s.velocity, s.time);
   if (step % every_history == 0 || step == n_steps)
   {
+    s.section_force_rows = step % every_section_row == 0 || step == n_steps;
     for (const auto &p : postprocessors)
       p->history_row(s);
     writer.write_history(s);

@@ -104,7 +104,7 @@ public:
   bool has_members() const override { return true; }
   std::string results_table() const override;
   std::string section_forces_header() const override;
-  void write_section_forces(std::ostream &out,
+  void write_section_forces(std::ostream *out,
                             const double time,
                             const Vector<double> &U) const override;
   std::string description() const override;

@@ -61,7 +61,7 @@ public:
       const std::map<std::string, double> &static_contact_forces) const override;
   /** The envelope of the section forces as table lines. */
   std::string results_table() const override;
-  void write_section_forces(std::ostream &out,
+  void write_section_forces(std::ostream *out,
                             const double time,
                             const Vector<double> &U) const override;
 

@@ -69,10 +69,10 @@ public:
 
   /**
    * The rows at time @p time (s) for the displacement @p U (constraints
-   * distributed) of the frame of @p cells under @p gravity (m/s^2); the
-   * envelope is updated.
+   * distributed) of the frame of @p cells under @p gravity (m/s^2), to
+   * @p out unless it is null; the envelope is updated.
    */
-  void write(std::ostream &out,
+  void write(std::ostream *out,
              const double time,
              const Vector<double> &U,
              const std::vector<FrameCell> &cells,

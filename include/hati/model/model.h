@@ -231,8 +231,12 @@ public:
    */
   virtual std::string section_forces_header() const { return ""; }
 
-  /** Rows of `section_forces.csv` at time @p time for displacement @p U. */
-  virtual void write_section_forces(std::ostream & /*out*/,
+  /**
+   * Section forces at time @p time for displacement @p U: their envelope
+   * is updated, and the rows of `section_forces.csv` go to @p out unless it
+   * is null (`Output/Section force interval` coarser than the history).
+   */
+  virtual void write_section_forces(std::ostream * /*out*/,
                                     const double /*time*/,
                                     const Vector<double> & /*U*/) const
   {

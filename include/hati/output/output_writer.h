@@ -41,6 +41,12 @@ struct OutputState
    * they are written at another resolution with write_contacts(), HATI).
    */
   bool contact_rows = true;
+  /**
+   * Whether write_history() writes the section_forces.csv rows (false
+   * between two rows of `Output/Section force interval`: the envelope is
+   * still updated).
+   */
+  bool section_force_rows = true;
 };
 
 /**

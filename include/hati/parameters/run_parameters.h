@@ -62,6 +62,8 @@ struct OutputParameters
   std::string directory;
   double vtu_interval = 0.;     ///< s; 0: no VTU output
   double history_interval = 0.; ///< s; 0: every step
+  /// s; 0: at every history row (section_forces.csv)
+  double section_force_interval = 0.;
   /** s; window of the mean contact force (peak_mean_force); 0: none. */
   double contact_force_window = 1e-3;
   double progress_interval = 2.; ///< s of wall time between progress lines
