@@ -9,6 +9,7 @@
 #include <hati/run/analysis_registry.h>
 #include <hati/run/problem.h>
 #include <hati/run/run_tools.h>
+#include <hati/run/suite_plan.h>
 #include <hati/time/damping.h>
 
 #include <algorithm>
@@ -37,6 +38,7 @@ void Problem::declare_parameters(ParameterHandler &prm)
   prm.leave_subsection();
   prm.leave_subsection();
   OutputParameters::declare_parameters(prm);
+  SuiteParameters::declare_parameters(prm);
 }
 
 Problem::Problem(ParameterHandler &prm, const ConditionalOStream &out) : out(out)
