@@ -6,6 +6,8 @@
 
 #include <hati/base/input_file.h>
 #include <hati/output/run_directory.h>
+#include <hati/run/suite_plan.h>
+#include <hati/run/suite_runner.h>
 #include <hati/simulation.h>
 
 #include <csignal>
@@ -72,6 +74,52 @@ void apply_override(ParameterHandler &prm, const std::string &assignment)
                          " (see hati --print-parameters)"));
 }
 
+void read_parameter_file(ParameterHandler &prm, const std::string &file)
+{
+  AssertThrow(std::filesystem::exists(file),
+              ExcMessage("parameter file '" + file + "' does not exist"));
+  // a FIFO would block the reader, a device never end: refused unopened
+  require_regular_file(file, "", "parameter");
+  const std::string extension = std::filesystem::path(file).extension().string();
+  if (extension == ".json" || extension == ".xml")
+  {
+    // Boost's parser errors name "<unspecified file>(line)": name the file
+    try
+    {
+      prm.parse_input(file);
+    }
+    catch (const std::exception &e)
+    {
+      std::string message = one_line_message(e);
+      const std::string unnamed = "<unspecified file>(";
+      for (auto at = message.find(unnamed); at != std::string::npos;
+           at = message.find(unnamed))
+      {
+        const auto close = message.find(')', at);
+        message.replace(
+            at,
+            close - at + 1,
+            "line " + message.substr(at + unnamed.size(), close - at - unnamed.size()));
+      }
+      AssertThrow(false, ExcMessage("parameter file '" + file + "': " + message));
+    }
+  }
+  else
+  {
+    // .prm: accept a UTF-8 byte-order mark (editors on Windows write one)
+    std::ifstream in(file);
+    AssertThrow(in, ExcMessage("cannot read the parameter file '" + file + "'"));
+    char bom[3] = {0, 0, 0};
+    in.read(bom, 3);
+    if (!(in.gcount() == 3 && bom[0] == '\xEF' && bom[1] == '\xBB' && bom[2] == '\xBF'))
+    {
+      in.clear();
+      in.seekg(0);
+    }
+    prm.parse_input(in, file);
+  }
+}
+
 int run_command_line(int argc, char **argv)
 {
   namespace po = boost::program_options;
@@ -118,51 +166,17 @@ int run_command_line(int argc, char **argv)
       return 2;
     }
     const std::string file = vm["parameter-file"].as<std::string>();
-    AssertThrow(std::filesystem::exists(file),
-                ExcMessage("parameter file '" + file + "' does not exist"));
-    // a FIFO would block the reader, a device never end: refused unopened
-    require_regular_file(file, "", "parameter");
-    const std::string extension = std::filesystem::path(file).extension().string();
-    if (extension == ".json" || extension == ".xml")
-    {
-      // Boost's parser errors name "<unspecified file>(line)": name the file
-      try
-      {
-        prm.parse_input(file);
-      }
-      catch (const std::exception &e)
-      {
-        std::string message = one_line_message(e);
-        const std::string unnamed = "<unspecified file>(";
-        for (auto at = message.find(unnamed); at != std::string::npos;
-             at = message.find(unnamed))
-        {
-          const auto close = message.find(')', at);
-          message.replace(
-              at,
-              close - at + 1,
-              "line " + message.substr(at + unnamed.size(), close - at - unnamed.size()));
-        }
-        AssertThrow(false, ExcMessage("parameter file '" + file + "': " + message));
-      }
-    }
-    else
-    {
-      // .prm: accept a UTF-8 byte-order mark (editors on Windows write one)
-      std::ifstream in(file);
-      AssertThrow(in, ExcMessage("cannot read the parameter file '" + file + "'"));
-      char bom[3] = {0, 0, 0};
-      in.read(bom, 3);
-      if (!(in.gcount() == 3 && bom[0] == '\xEF' && bom[1] == '\xBB' && bom[2] == '\xBF'))
-      {
-        in.clear();
-        in.seekg(0);
-      }
-      prm.parse_input(in, file);
-    }
+    read_parameter_file(prm, file);
+    std::vector<std::string> overrides;
     if (vm.count("set"))
-      for (const auto &s : vm["set"].as<std::vector<std::string>>())
-        apply_override(prm, s);
+      overrides = vm["set"].as<std::vector<std::string>>();
+    for (const auto &s : overrides)
+      apply_override(prm, s);
+
+    SuiteParameters suite;
+    suite.parse_parameters(prm);
+    if (suite.active()) // one Simulation per member (run/suite_runner.h)
+      return SuiteRunner(prm, file, overrides, suite, MPI_COMM_WORLD).run();
 
     simulation = std::make_unique<Simulation>(prm, file);
     simulation->run();

@@ -67,6 +67,14 @@ int run_command_line(int argc, char **argv);
  * does not match its pattern; @p prm is back at its top level either way.
  */
 void apply_override(ParameterHandler &prm, const std::string &assignment);
+
+/**
+ * Read the parameter file @p file (`.prm`, with or without a UTF-8
+ * byte-order mark, `.json` or `.xml`) into @p prm, whose parameters are
+ * declared; a missing file, a file that is not regular (FIFO, device,
+ * folder) or a syntax error is a one-line message naming the file.
+ */
+void read_parameter_file(ParameterHandler &prm, const std::string &file);
 } // namespace hati
 
 #endif

@@ -1,5 +1,8 @@
+#include <deal.II/base/utilities.h>
+
 #include <hati/parameters/run_parameters.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -154,6 +157,24 @@ void OutputParameters::declare_parameters(ParameterHandler &prm)
                     "2",
                     Patterns::Double(0.),
                     "Wall-clock time between two progress lines on the terminal (s).");
+  prm.declare_entry(
+      "Spectra",
+      "",
+      Patterns::List(Patterns::Anything()),
+      "Monitor points whose pseudo-acceleration response spectra (of their absolute "
+      "acceleration, m/s^2) go to spectra.csv with those of the base excitation "
+      "(transient runs with CD-Lagrange, Newmark or HATI), 'name, name, ...'; empty: "
+      "none. Computed from the history rows (exact recursion of Nigam & Jennings "
+      "1969): the history interval must be at most a tenth of the shortest period.");
+  prm.declare_entry("Spectrum damping ratios",
+                    "0.02, 0.05",
+                    Patterns::List(Patterns::Double(0., 0.99)),
+                    "Damping ratios of the response spectra (-), from 0 to 0.99.");
+  prm.declare_entry("Spectrum periods",
+                    "",
+                    Patterns::List(Patterns::Double(0.)),
+                    "Periods of the response spectra (s), increasing, > 0; empty: 100 "
+                    "periods from 0.02 s to 4 s, equally spaced in log T.");
   prm.leave_subsection();
 }
 
@@ -166,6 +187,23 @@ void OutputParameters::parse_parameters(ParameterHandler &prm)
   section_force_interval = prm.get_double("Section force interval");
   contact_force_window = prm.get_double("Contact force window");
   progress_interval = prm.get_double("Progress interval");
+  spectra = Utilities::split_string_list(prm.get("Spectra"));
+  spectrum_damping_ratios = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Spectrum damping ratios")));
+  const std::string periods = prm.get("Spectrum periods");
+  spectrum_periods = Utilities::string_to_double(Utilities::split_string_list(periods));
   prm.leave_subsection();
+  if (spectrum_periods.empty()) // 0.02-4 s, 100 log-spaced (log_spaced_periods())
+    for (unsigned int i = 0; i < 100; ++i)
+      spectrum_periods.push_back(i == 99 ? 4. : 0.02 * std::pow(200., i / 99.));
+  for (unsigned int i = 0; i < spectrum_periods.size(); ++i)
+    AssertThrow(spectrum_periods[i] > 0. &&
+                    (i == 0 || spectrum_periods[i] > spectrum_periods[i - 1]),
+                ExcMessage("Output/Spectrum periods: the periods must be > 0 and "
+                           "increasing (s), got " +
+                           periods));
+  AssertThrow(spectra.empty() || !spectrum_damping_ratios.empty(),
+              ExcMessage("Output/Spectrum damping ratios: at least one damping ratio "
+                         "is needed for Output/Spectra"));
 }
 } // namespace hati

@@ -5,8 +5,11 @@
 #include <hati/base/names.h>
 #include <hati/loading/accelerogram.h>
 #include <hati/loading/base_excitation.h>
+#include <hati/output/response_spectra.h>
 #include <hati/run/analysis_registry.h>
 #include <hati/run/problem.h>
+#include <hati/run/run_tools.h>
+#include <hati/run/suite_plan.h>
 #include <hati/time/damping.h>
 
 #include <algorithm>
@@ -35,6 +38,7 @@ void Problem::declare_parameters(ParameterHandler &prm)
   prm.leave_subsection();
   prm.leave_subsection();
   OutputParameters::declare_parameters(prm);
+  SuiteParameters::declare_parameters(prm);
 }
 
 Problem::Problem(ParameterHandler &prm, const ConditionalOStream &out) : out(out)
@@ -133,6 +137,7 @@ void Problem::decompose()
 
 void Problem::prepare_transient()
 {
+  check_spectrum_request();
   apply_default_frequency_range_damping();
   AssertThrow(!damping.frequency_range() || time_parameters.method == "CD-Lagrange" ||
                   time_parameters.method == "Newmark" || time_parameters.method == "HATI",
@@ -163,6 +168,24 @@ void Problem::prepare_transient()
                          "CD-Lagrange and Newmark integrators only; remove it for "
                          "Method = event-driven."));
   add_damping_summary();
+}
+
+void Problem::check_spectrum_request() const
+{
+  if (output_parameters.spectra.empty())
+    return;
+  AssertThrow(time_parameters.method != "event-driven",
+              ExcMessage("Output/Spectra: response spectra are computed by the "
+                         "CD-Lagrange, Newmark and HATI runs only (not by Method = "
+                         "event-driven)"));
+  // the history rows: every step or every History interval, in (macro) steps
+  const double step = time_parameters.method == "HATI"
+                          ? time_parameters.time_step * hati_parameters.time_step_ratio
+                          : time_parameters.time_step;
+  ResponseSpectra::check_request(output_parameters,
+                                 system,
+                                 steps_between(output_parameters.history_interval, step) *
+                                     step);
 }
 
 void Problem::apply_default_frequency_range_damping()

@@ -209,7 +209,8 @@ TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
   // per contact name: impacts, peak force, time out of contact, episodes
   writer.set_initial_contacts(initial_gaps(system));
   for (const auto &entry : postprocessor_registry().entries())
-    if (auto p = entry.create({problem.system, problem.ground_acceleration}))
+    if (auto p = entry.create(
+            {problem.system, problem.ground_acceleration, problem.output_parameters}))
       postprocessors.push_back(std::move(p));
   if constexpr (std::is_same_v<Integrator, HATICoupling>)
     connect_micro_steps();
@@ -388,6 +389,8 @@ void TimeLoop<Integrator>::finish(TimerOutput &timer, SummaryEntries summary)
   std::cout << problem.model->results_table();
   for (const auto &p : postprocessors)
     p->finish(summary, std::cout);
+  for (const auto &p : postprocessors)
+    p->write_files(directory);
   write_summary(directory.path() + "/summary.json", summary, problem.warnings);
   std::cout << "  done: " << steps_done << " steps in " << wall << " s (output "
             << output_clock.seconds() << " s in " << output_clock.calls() << " calls); ";

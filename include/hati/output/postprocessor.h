@@ -5,6 +5,8 @@
 #include <hati/base/summary_value.h>
 #include <hati/model/discrete_system.h>
 #include <hati/output/output_writer.h>
+#include <hati/output/run_directory.h>
+#include <hati/parameters/run_parameters.h>
 
 #include <array>
 #include <functional>
@@ -30,14 +32,20 @@ public:
 
   /** Add the summary.json entries to @p summary and print the results on @p out. */
   virtual void finish(SummaryEntries &summary, std::ostream &out) const = 0;
+
+  /** Write its own files into @p directory after finish() (none by default). */
+  virtual void write_files(RunDirectory &directory) const { (void)directory; }
 };
 
-/** What a post-processor may use: the system and the ground motion. */
+/** What a post-processor may use: the system, the ground motion, the Output parameters.
+ */
 struct PostprocessorInputs
 {
   const DiscreteSystem &system;
   /** Ground acceleration per direction (m/s^2; empty: none). */
   const std::array<std::function<double(double)>, 3> &ground_acceleration;
+  /** The Output parameters (Output/Spectra and its periods and damping ratios). */
+  const OutputParameters &output;
 };
 
 /**

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
+#include <vector>
 
 namespace hati
 {
@@ -67,6 +68,13 @@ struct OutputParameters
   /** s; window of the mean contact force (peak_mean_force); 0: none. */
   double contact_force_window = 1e-3;
   double progress_interval = 2.; ///< s of wall time between progress lines
+  /** Monitor points whose response spectra go to spectra.csv; empty: none. */
+  std::vector<std::string> spectra;
+  /** Damping ratios of the response spectra (-), each in [0, 1). */
+  std::vector<double> spectrum_damping_ratios = {0.02, 0.05};
+  /** Periods of the response spectra (s), increasing; default 0.02-4 s, 100 log-spaced.
+   */
+  std::vector<double> spectrum_periods;
 };
 } // namespace hati
 

@@ -134,6 +134,11 @@ private:
    * when `Time integration/Damping` is not set (not for event-driven runs).
    */
   void apply_default_frequency_range_damping();
+  /**
+   * Refuse an Output/Spectra request that names no monitor point or whose
+   * history rows are too far apart (ResponseSpectra::check_request()).
+   */
+  void check_spectrum_request() const;
   /** The static equilibrium under the constant loads as the initial state. */
   void set_static_initial_state();
 

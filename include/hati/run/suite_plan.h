@@ -1,0 +1,83 @@
+#ifndef hati_run_suite_plan_h
+#define hati_run_suite_plan_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace hati
+{
+using namespace dealii;
+
+/** One record of `Suite/Records`: its name and its X, Y, Z files (empty: none). */
+struct SuiteRecord
+{
+  std::string name;
+  std::array<std::string, 3> files;
+};
+
+/** One entry of `Suite/Variations`: the parameter path and its values. */
+struct SuiteVariation
+{
+  std::string path;
+  std::vector<std::string> values;
+};
+
+/**
+ * `subsection Suite` (doc/user_guide.md, "Qualifying a crane on a suite of
+ * records"): the records, the scale factors and the parameter variations
+ * whose every combination is one member run, and the statistic over the
+ * records. Without records, variations and scale factors other than 1 the
+ * run is a single run (active() is false).
+ */
+struct SuiteParameters
+{
+  static void declare_parameters(ParameterHandler &prm);
+  /** Read and check them; one-line errors name the entry. */
+  void parse_parameters(ParameterHandler &prm);
+
+  /** Whether the parameter file asks for a suite. */
+  bool active() const;
+  /** `envelope` or `mean`: Statistic, or by default mean from 7 records on. */
+  std::string effective_statistic() const;
+
+  std::vector<SuiteRecord> records;
+  std::vector<double> scale_factors = {1.};
+  std::vector<SuiteVariation> variations;
+  /** As given: empty, `envelope` or `mean`. */
+  std::string statistic;
+};
+
+/** One member run of a suite: which record, scale and variation, and its overrides. */
+struct SuiteMember
+{
+  /** Position in the suite (0-based): records, then scales, then variations. */
+  unsigned int index = 0;
+  /** `<record>_s<scale>_<variation index>`: its folder in the suite's folder. */
+  std::string name;
+  std::string record;
+  double scale = 1.;
+  unsigned int variation = 0;
+  /** The value of each Suite/Variations entry for this member. */
+  std::vector<std::string> variation_values;
+  /** `Subsection/Entry=value` overrides applied after the file and --set. */
+  std::vector<std::string> overrides;
+};
+
+/**
+ * The members of @p suite, in the order records, scale factors, variations
+ * (the first variation varies slowest). @p folder is the suite's output
+ * folder, @p base_scale the file's Loading/Accelerogram scale factor (the
+ * member's factor is base_scale times its scale factor). Each member's
+ * overrides set its accelerograms (unless Records is empty: the file's
+ * own, record name `base`), its scale factor, its variation values, its
+ * Output directory `<folder>/<name>` and reset `subsection Suite`.
+ */
+std::vector<SuiteMember> plan_suite(const SuiteParameters &suite,
+                                    const std::string &folder,
+                                    const double base_scale);
+} // namespace hati
+
+#endif

@@ -1,0 +1,62 @@
+#include <hati/output/member_result.h>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+namespace hati
+{
+namespace
+{
+using Json = nlohmann::ordered_json;
+
+/** Append `<name>.<key>` for each object of @p group that has a number @p key. */
+void add_per_name(const Json &group,
+                  const std::string &key,
+                  const std::string &column,
+                  std::vector<std::pair<std::string, double>> &values)
+{
+  if (!group.is_object())
+    return;
+  for (const auto &[name, entry] : group.items())
+    if (entry.is_object() && entry.contains(key) && entry[key].is_number())
+      values.emplace_back(name + "." + column, entry[key].get<double>());
+}
+} // namespace
+
+std::string read_member_summary(const std::string &folder, MemberResult &result)
+{
+  std::ifstream in(folder + "/summary.json");
+  if (!in)
+    return "";
+  const Json summary = Json::parse(in, nullptr, false);
+  if (summary.is_discarded() || !summary.is_object() || !summary.contains("status") ||
+      !summary["status"].is_string())
+    return "";
+  const std::string status = summary["status"].get<std::string>();
+  if (status != "completed")
+    return status;
+  auto &values = result.values;
+  values.clear();
+  if (summary.contains("wheels"))
+  {
+    add_per_name(summary["wheels"], "peak_mean_force", "peak_mean_force", values);
+    add_per_name(summary["wheels"], "slip_distance", "slip_distance", values);
+    add_per_name(summary["wheels"], "uplift_time", "uplift_time", values);
+  }
+  if (summary.contains("section_force_envelope"))
+    for (const auto &[force, entry] : summary["section_force_envelope"].items())
+      if (entry.is_object() && entry.contains("max_abs") && entry["max_abs"].is_number())
+        values.emplace_back("section_force." + force, entry["max_abs"].get<double>());
+  if (summary.contains("max_absolute_acceleration"))
+    add_per_name(summary["max_absolute_acceleration"],
+                 "value",
+                 "max_absolute_acceleration",
+                 values);
+  if (summary.contains("rope_tension"))
+    add_per_name(summary["rope_tension"], "max", "max_tension", values);
+  if (summary.contains("wall_time") && summary["wall_time"].is_number())
+    result.wall_time = summary["wall_time"].get<double>();
+  return status;
+}
+} // namespace hati

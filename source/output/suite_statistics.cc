@@ -1,0 +1,265 @@
+#include <deal.II/base/utilities.h>
+
+#include <hati/base/summary_value.h>
+#include <hati/output/csv_file.h>
+#include <hati/output/suite_statistics.h>
+#include <hati/output/summary.h>
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+namespace hati
+{
+namespace
+{
+/** @p text as a CSV field: quoted (quotes doubled) if it has a comma, quote or newline.
+ */
+std::string csv_field(const std::string &text)
+{
+  if (text.find_first_of(",\"\n\r") == std::string::npos)
+    return text;
+  std::string quoted = "\"";
+  for (const char c : text)
+    quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+/** Largest value with its member, mean and count of @p values (value, member index). */
+struct Statistic
+{
+  double max = 0., mean = 0.;
+  unsigned int n = 0, governing = 0;
+};
+
+Statistic statistic_of(const std::vector<std::pair<double, unsigned int>> &values)
+{
+  Statistic s;
+  double sum = 0.;
+  for (const auto &[value, member] : values)
+  {
+    if (s.n == 0 || value > s.max)
+    {
+      s.max = value;
+      s.governing = member;
+    }
+    sum += value;
+    ++s.n;
+  }
+  s.mean = s.n > 0 ? sum / s.n : 0.;
+  return s;
+}
+
+/** The spectra.csv text of a member: its column names and rows of numbers. */
+struct SpectraTable
+{
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+};
+
+SpectraTable parse_spectra(const std::string &text)
+{
+  SpectraTable table;
+  std::istringstream in(text);
+  std::string line;
+  if (!std::getline(in, line))
+    return table;
+  table.columns = dealii::Utilities::split_string_list(line, ',');
+  while (std::getline(in, line))
+    if (!line.empty())
+      table.rows.push_back(
+          dealii::Utilities::string_to_double(dealii::Utilities::split_string_list(line, ',')));
+  return table;
+}
+} // namespace
+
+SuiteStatistics::SuiteStatistics(const std::vector<MemberResult> &results,
+                                 const std::vector<std::string> &variation_paths,
+                                 const std::string &statistic)
+    : results(results), variation_paths(variation_paths), statistic(statistic)
+{
+}
+
+std::vector<std::vector<unsigned int>> SuiteStatistics::groups() const
+{
+  std::vector<std::vector<unsigned int>> groups;
+  std::vector<std::pair<double, unsigned int>> keys;
+  for (unsigned int i = 0; i < results.size(); ++i)
+  {
+    const std::pair<double, unsigned int> key(results[i].scale, results[i].variation);
+    const auto it = std::find(keys.begin(), keys.end(), key);
+    if (it == keys.end())
+    {
+      keys.push_back(key);
+      groups.push_back({i});
+    }
+    else
+      groups[it - keys.begin()].push_back(i);
+  }
+  return groups;
+}
+
+std::vector<std::string> SuiteStatistics::quantities() const
+{
+  std::vector<std::string> names;
+  for (const auto &r : results)
+    for (const auto &[name, value] : r.values)
+      if (std::find(names.begin(), names.end(), name) == names.end())
+        names.push_back(name);
+  return names;
+}
+
+std::string SuiteStatistics::csv() const
+{
+  const auto names = quantities();
+  std::string out = "member,record,scale,variation";
+  for (const auto &path : variation_paths)
+    out += "," + csv_field(path);
+  out += ",status,error,wall_time";
+  for (const auto &name : names)
+    out += "," + name;
+  out += '\n';
+  for (const auto &r : results)
+  {
+    out += r.name + "," + r.record + ",";
+    append_number(out, r.scale);
+    out += "," + std::to_string(r.variation);
+    for (const auto &value : r.variation_values)
+      out += "," + csv_field(value);
+    out += "," + r.status + "," + csv_field(r.error) + ",";
+    append_number(out, r.wall_time);
+    for (const auto &name : names)
+    {
+      out += ',';
+      for (const auto &[key, value] : r.values)
+        if (key == name)
+          append_number(out, value);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+std::string SuiteStatistics::summary_json(const SummaryEntries &extra) const
+{
+  SummaryValue failed = SummaryValue::object();
+  unsigned int usable = 0;
+  for (const auto &r : results)
+    if (r.usable())
+      ++usable;
+    else
+      failed.set(r.name, r.error.empty() ? r.status : r.status + ": " + r.error);
+  SummaryValue group_list = SummaryValue::list();
+  for (const auto &members : groups())
+  {
+    const MemberResult &first = results[members[0]];
+    SummaryValue variation = SummaryValue::object();
+    for (unsigned int v = 0; v < variation_paths.size(); ++v)
+      variation.set(variation_paths[v], first.variation_values[v]);
+    SummaryValue names = SummaryValue::list(), quantities_json = SummaryValue::object();
+    for (const unsigned int i : members)
+      names.push_back(results[i].name);
+    for (const auto &quantity : quantities())
+    {
+      std::vector<std::pair<double, unsigned int>> values;
+      for (const unsigned int i : members)
+        if (results[i].usable())
+          for (const auto &[key, value] : results[i].values)
+            if (key == quantity)
+              values.emplace_back(value, i);
+      if (values.empty())
+        continue;
+      const Statistic s = statistic_of(values);
+      quantities_json.set(quantity,
+                          SummaryValue::object()
+                              .set("value", statistic == "mean" ? s.mean : s.max)
+                              .set("max", s.max)
+                              .set("mean", s.mean)
+                              .set("n", s.n)
+                              .set("governing_member", results[s.governing].name));
+    }
+    group_list.push_back(SummaryValue::object()
+                             .set("scale", first.scale)
+                             .set("variation", first.variation)
+                             .set("variation_values", variation)
+                             .set("members", names)
+                             .set("quantities", quantities_json));
+  }
+  SummaryEntries entries = {{"statistic", statistic},
+                            {"n_members", results.size()},
+                            {"n_usable", usable},
+                            {"n_failed", results.size() - usable},
+                            {"failed", failed},
+                            {"groups", group_list}};
+  entries.insert(entries.begin(), extra.begin(), extra.end());
+  std::string out = "{\n";
+  for (unsigned int i = 0; i < entries.size(); ++i)
+    out += "  \"" + entries[i].first + "\": " + to_json(entries[i].second) +
+           (i + 1 < entries.size() ? ",\n" : "\n");
+  return out + "}\n";
+}
+
+std::string SuiteStatistics::spectra_csv() const
+{
+  std::map<unsigned int, SpectraTable> tables;
+  std::vector<std::string> columns; // spectrum columns, in order of appearance
+  for (unsigned int i = 0; i < results.size(); ++i)
+    if (results[i].usable() && !results[i].spectra.empty())
+    {
+      tables[i] = parse_spectra(results[i].spectra);
+      for (unsigned int c = 2; c < tables[i].columns.size(); ++c)
+        if (std::find(columns.begin(), columns.end(), tables[i].columns[c]) ==
+            columns.end())
+          columns.push_back(tables[i].columns[c]);
+    }
+  if (tables.empty())
+    return "";
+  std::string out = "scale,variation,damping_ratio,period";
+  for (const auto &c : columns)
+    out += "," + c;
+  out += '\n';
+  for (const auto &members : groups())
+  {
+    // the rows of the group's first member with spectra set the periods
+    const SpectraTable *reference = nullptr;
+    for (const unsigned int i : members)
+      if (tables.count(i) && reference == nullptr)
+        reference = &tables[i];
+    if (reference == nullptr)
+      continue;
+    for (unsigned int row = 0; row < reference->rows.size(); ++row)
+    {
+      const auto &ref = reference->rows[row];
+      append_number(out, results[members[0]].scale);
+      out += "," + std::to_string(results[members[0]].variation) + ",";
+      append_number(out, ref[0]);
+      out += ',';
+      append_number(out, ref[1]);
+      for (const auto &column : columns)
+      {
+        std::vector<std::pair<double, unsigned int>> values;
+        for (const unsigned int i : members)
+        {
+          const auto it = tables.find(i);
+          if (it == tables.end() || row >= it->second.rows.size() ||
+              it->second.rows[row][0] != ref[0] || it->second.rows[row][1] != ref[1])
+            continue;
+          const auto &cols = it->second.columns;
+          const auto c = std::find(cols.begin(), cols.end(), column) - cols.begin();
+          if (c < static_cast<long>(cols.size()) &&
+              c < static_cast<long>(it->second.rows[row].size()))
+            values.emplace_back(it->second.rows[row][c], i);
+        }
+        out += ',';
+        if (!values.empty())
+        {
+          const Statistic s = statistic_of(values);
+          append_number(out, statistic == "mean" ? s.mean : s.max);
+        }
+      }
+      out += '\n';
+    }
+  }
+  return out;
+}
+} // namespace hati

@@ -1,0 +1,184 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <hati/base/names.h>
+#include <hati/output/csv_file.h>
+#include <hati/run/suite_plan.h>
+
+#include <algorithm>
+
+namespace hati
+{
+void SuiteParameters::declare_parameters(ParameterHandler &prm)
+{
+  prm.enter_subsection("Suite");
+  prm.declare_entry(
+      "Records",
+      "",
+      Patterns::Anything(),
+      "Records of the suite, 'name: X-file, Y-file, Z-file; ...': the accelerograms "
+      "along the global axes (as Loading/Accelerogram X, Y, Z; a component may be "
+      "empty), name of letters, digits, '_', '-' and '.'. With Records, Variations or "
+      "Scale factors other than 1 the file runs as a suite: one member run per record, "
+      "scale factor and variation, each in output/<file>/<record>_s<scale>_<variation "
+      "index>/, with suite.csv, suite_summary.json and suite_spectra.csv. Empty Records: "
+      "the file's own accelerograms (record 'base').");
+  prm.declare_entry(
+      "Scale factors",
+      "1",
+      Patterns::List(Patterns::Double(-100., 100.), 1),
+      "Scale factors of the suite (-), each multiplying Loading/Accelerogram scale "
+      "factor: every record is run at every factor.");
+  prm.declare_entry(
+      "Variations",
+      "",
+      Patterns::Anything(),
+      "Parameters varied over the suite, 'Entry/Path=v1|v2|...; ...' (e.g. "
+      "'Model/Bridge crane/Trolley position=0.1|0.5|0.9'): every combination of the "
+      "values is run with every record and scale factor; the variation index counts "
+      "the combinations from 0, the first entry varying slowest.");
+  prm.declare_entry(
+      "Statistic",
+      "",
+      Patterns::Selection("|envelope|mean"),
+      "Statistic over the records of each scale factor and variation in "
+      "suite_summary.json and suite_spectra.csv: envelope (largest value) or mean; "
+      "empty: mean from 7 records on, else envelope.");
+  prm.leave_subsection();
+}
+
+namespace
+{
+std::vector<SuiteRecord> parse_records(const std::string &text)
+{
+  std::vector<SuiteRecord> records;
+  for (const auto &item : Utilities::split_string_list(text, ';'))
+  {
+    const auto colon = item.find(':');
+    AssertThrow(colon != std::string::npos,
+                ExcMessage("Suite/Records: '" + printable(item) +
+                           "' is not 'name: X-file, Y-file, Z-file'"));
+    SuiteRecord r;
+    r.name = Utilities::trim(item.substr(0, colon));
+    check_name(r.name, "Suite/Records", "record");
+    const std::string files = item.substr(colon + 1);
+    std::vector<std::string> parts;
+    std::string::size_type start = 0, comma;
+    while ((comma = files.find(',', start)) != std::string::npos)
+    {
+      parts.push_back(Utilities::trim(files.substr(start, comma - start)));
+      start = comma + 1;
+    }
+    parts.push_back(Utilities::trim(files.substr(start)));
+    AssertThrow(
+        parts.size() <= 3 &&
+            std::any_of(parts.begin(), parts.end(), [](auto &p) { return !p.empty(); }),
+        ExcMessage("Suite/Records: record '" + r.name +
+                   "' needs one to three files 'X-file, Y-file, Z-file' (a "
+                   "component may be empty), got '" +
+                   printable(Utilities::trim(files)) + "'"));
+    for (unsigned int d = 0; d < parts.size(); ++d)
+      r.files[d] = parts[d];
+    for (const auto &other : records)
+      AssertThrow(
+          other.name != r.name,
+          ExcMessage("Suite/Records: the record name '" + r.name + "' is given twice"));
+    records.push_back(r);
+  }
+  return records;
+}
+
+std::vector<SuiteVariation> parse_variations(const std::string &text)
+{
+  std::vector<SuiteVariation> variations;
+  for (const auto &item : Utilities::split_string_list(text, ';'))
+  {
+    const auto eq = item.find('=');
+    AssertThrow(eq != std::string::npos && eq > 0,
+                ExcMessage("Suite/Variations: '" + printable(item) +
+                           "' is not 'Entry/Path=v1|v2|...'"));
+    SuiteVariation v;
+    v.path = Utilities::trim(item.substr(0, eq));
+    v.values = Utilities::split_string_list(item.substr(eq + 1), '|');
+    AssertThrow(!v.values.empty(),
+                ExcMessage("Suite/Variations: '" + v.path + "' has no values"));
+    variations.push_back(v);
+  }
+  return variations;
+}
+} // namespace
+
+void SuiteParameters::parse_parameters(ParameterHandler &prm)
+{
+  prm.enter_subsection("Suite");
+  const std::string records_text = prm.get("Records");
+  const std::string scales_text = prm.get("Scale factors");
+  const std::string variations_text = prm.get("Variations");
+  statistic = prm.get("Statistic");
+  prm.leave_subsection();
+  records = parse_records(records_text);
+  scale_factors = Utilities::string_to_double(Utilities::split_string_list(scales_text));
+  variations = parse_variations(variations_text);
+}
+
+bool SuiteParameters::active() const
+{
+  return !records.empty() || !variations.empty() || scale_factors.size() != 1 ||
+         scale_factors[0] != 1.;
+}
+
+std::string SuiteParameters::effective_statistic() const
+{
+  if (!statistic.empty())
+    return statistic;
+  return records.size() >= 7 ? "mean" : "envelope";
+}
+
+std::vector<SuiteMember> plan_suite(const SuiteParameters &suite,
+                                    const std::string &folder,
+                                    const double base_scale)
+{
+  std::vector<SuiteRecord> records = suite.records;
+  if (records.empty())
+    records.push_back({"base", {}});
+  unsigned int n_variations = 1;
+  for (const auto &v : suite.variations)
+    n_variations *= v.values.size();
+  std::vector<SuiteMember> members;
+  for (const auto &record : records)
+    for (const double scale : suite.scale_factors)
+      for (unsigned int k = 0; k < n_variations; ++k)
+      {
+        SuiteMember m;
+        m.index = members.size();
+        m.record = record.name;
+        m.scale = scale;
+        m.variation = k;
+        m.name = record.name + "_s" + shortest_number(scale) + "_" + std::to_string(k);
+        if (!suite.records.empty())
+          for (unsigned int d = 0; d < 3; ++d)
+            m.overrides.push_back(std::string("Loading/Accelerogram ") + "XYZ"[d] + "=" +
+                                  record.files[d]);
+        m.overrides.push_back("Loading/Accelerogram scale factor=" +
+                              shortest_number(base_scale * scale));
+        // the first variation varies slowest
+        unsigned int rest = k, stride = n_variations;
+        for (const auto &v : suite.variations)
+        {
+          stride /= v.values.size();
+          const std::string &value = v.values[rest / stride];
+          rest %= stride;
+          m.variation_values.push_back(value);
+          m.overrides.push_back(v.path + "=" + value);
+        }
+        m.overrides.insert(m.overrides.end(),
+                           {"Output/Output directory=" + folder + "/" + m.name,
+                            "Suite/Records=",
+                            "Suite/Scale factors=1",
+                            "Suite/Variations=",
+                            "Suite/Statistic="});
+        members.push_back(m);
+      }
+  return members;
+}
+} // namespace hati

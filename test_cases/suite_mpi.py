@@ -1,0 +1,125 @@
+#!/usr/bin/python3
+"""Suites of records (issue #18): a suite of 3 members (the portal frame of
+portal_frame_elcentro.prm, 0.4 s under El Centro, Rinaldi 228 + UP and
+Rinaldi 228 alone, with its response spectra) run serially and with
+`mpirun -np 2` gives the same suite.csv rows except the wall time, and the
+members' CSV files are bitwise identical; suite_summary.json's envelope and
+mean, with the governing member, equal a hand calculation on suite.csv (the
+mean by rerunning with Statistic = mean, which reuses every member), and
+suite_spectra.csv the envelope of the members' spectra.csv."""
+import csv
+import filecmp
+import json
+import os
+import shutil
+import subprocess
+
+from hati_test import Context
+
+ctx = Context()
+data = os.path.join(ctx.source, "data", "accelerograms")
+elc = os.path.join(data, "RSN6_IMPVALL.I_I-ELC180.AT2")
+r228 = os.path.join(data, "Rinaldi228.AT2")
+rup = os.path.join(data, "RinaldiUP.AT2")
+suite = ["Time integration/End time=0.4",
+         "Output/Output interval=0",
+         "Output/History interval=0.002",
+         "Output/Spectra=A1, D1",
+         "Suite/Records=elc: %s; rin: %s, , %s; rinx: %s" % (elc, r228, rup, r228)]
+prm = ctx.prm("portal_frame_elcentro.prm")
+members = ["elc_s1_0", "rin_s1_0", "rinx_s1_0"]
+
+
+def run_suite(tag, sets, mpi=0):
+    out = os.path.join(ctx.work, tag)
+    cmd = [ctx.hati, prm, "--set", "Output/Output directory=" + out]
+    for s in sets:
+        cmd += ["--set", s]
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    if mpi:
+        cmd = ["mpirun", "-np", str(mpi), "--oversubscribe"] + cmd
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=300, env=env)
+    print("$ " + " ".join(cmd[-6:]) + "\n" + p.stdout[-1500:] + p.stderr[-1500:])
+    return out, p
+
+
+def rows(out):
+    with open(os.path.join(out, "suite.csv"), newline="") as f:
+        return list(csv.DictReader(f))
+
+
+for tag in ("serial", "mpi"):
+    shutil.rmtree(os.path.join(ctx.work, tag), ignore_errors=True)
+serial, p = run_suite("serial", suite)
+ctx.check_true("serial suite: exit code 0", p.returncode == 0, str(p.returncode))
+ctx.check_true("serial suite: progress line of the last member",
+               "member 3/3 done" in p.stdout and "ETA" in p.stdout)
+mpi, p = run_suite("mpi", suite, mpi=2)
+ctx.check_true("mpirun -np 2 suite: exit code 0", p.returncode == 0, str(p.returncode))
+ctx.check_true("mpirun -np 2: both ranks ran members",
+               ", rank 0)" in p.stdout and ", rank 1)" in p.stdout)
+
+a, b = rows(serial), rows(mpi)
+ctx.check_true("suite.csv: 3 rows each", len(a) == 3 and len(b) == 3)
+ctx.check_true("suite.csv: every member completed",
+               all(r["status"] == "completed" for r in a + b))
+for ra, rb in zip(a, b):
+    ra.pop("wall_time"), rb.pop("wall_time")
+    ctx.check_true("suite.csv row %s: serial == mpirun -np 2 (but the wall time)" % ra["member"],
+                   ra == rb)
+for m in members:
+    for f in ("history.csv", "energy.csv", "section_forces.csv", "spectra.csv"):
+        same = filecmp.cmp(os.path.join(serial, m, f), os.path.join(mpi, m, f), shallow=False)
+        ctx.check_true("%s/%s: serial and MPI bitwise identical" % (m, f), same)
+ctx.check_true("suite.csv has the key results",
+               all(k in a[0] for k in ("A1.max_absolute_acceleration", "section_force.My")))
+
+
+def hand_statistics(table):
+    """max, mean and the governing member of every result column."""
+    fixed = {"member", "record", "scale", "variation", "status", "error", "wall_time"}
+    result = {}
+    for q in (k for k in table[0] if k not in fixed):
+        values = [(float(r[q]), r["member"]) for r in table if r[q] != ""]
+        top = max(values)
+        result[q] = (top[0], sum(v for v, _ in values) / len(values), top[1])
+    return result
+
+
+def check_statistic(out, name):
+    with open(os.path.join(out, "suite_summary.json")) as f:
+        summary = json.load(f)
+    ctx.check_true("%s: suite_summary.json says statistic = %s" % (out, name),
+                   summary["statistic"] == name)
+    quantities = summary["groups"][0]["quantities"]
+    hand = hand_statistics(rows(out))
+    ctx.check_true("%s: a statistic for each of the %d quantities" % (name, len(hand)),
+                   sorted(hand) == sorted(quantities))
+    for q, (top, mean, governing) in hand.items():
+        reference = top if name == "envelope" else mean
+        ctx.check("%s of %s" % (name, q), quantities[q]["value"], reference, rel=1e-14)
+        ctx.check_true("governing member of %s: %s" % (q, governing),
+                       quantities[q]["governing_member"] == governing)
+
+
+check_statistic(serial, "envelope")
+# the envelope of the spectra: the largest of the members' spectra.csv
+with open(os.path.join(serial, "suite_spectra.csv"), newline="") as f:
+    spectra = list(csv.DictReader(f))
+member_spectra = []
+for m in members:
+    with open(os.path.join(serial, m, "spectra.csv"), newline="") as f:
+        member_spectra.append(list(csv.DictReader(f)))
+worst = 0.0
+for i, row in enumerate(spectra):
+    for column in ("A1.x", "D1.z", "ground.x", "ground.z"):
+        values = [float(t[i][column]) for t in member_spectra if column in t[i]]
+        worst = max(worst, abs(float(row[column]) - max(values)))
+ctx.check("suite_spectra.csv = envelope of the members' spectra (m/s^2)", worst, 0.0, abs_tol=0.0)
+ctx.check_true("suite_spectra.csv: 2 damping ratios x 100 periods", len(spectra) == 200)
+
+_, p = run_suite("serial", suite + ["Suite/Statistic=mean"])
+ctx.check_true("Statistic = mean: every member reused",
+               p.stdout.count(": reused,") == 3, p.stdout[-300:])
+check_statistic(serial, "mean")
+ctx.finish()
