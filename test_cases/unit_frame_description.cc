@@ -188,19 +188,28 @@ void check_crane()
       {"Travel", "free"},
       {"Explicit zone length", "0"},
       {"Rail mass per metre", "0"},
-      {"Hoist mass", "0"},
+      {"Hoist mass", "0"}, // with Hoist = rigid: a rope needs the load's mass
+      {"Hoist", "rigid"},
+      {"Rope length", "12"},
       {"Trolley position", "0.1"}};
   for (const auto &[entry, value] : variants)
   {
     dealii::ParameterHandler prm;
     hati::BridgeCrane::Parameters::declare_parameters(prm);
     prm.set(entry, value);
+    if (entry == "Hoist mass")
+      prm.set("Hoist", "rigid");
     hati::BridgeCrane::Parameters p;
     p.parse_parameters(prm);
     const FrameDescription d = p.frame();
     const std::string message = error_of(d);
+    // Hoist = rope (the default): the load on its rope, a node only it holds
+    const bool rope = p.hoist == "rope";
     expect(message.empty() && d.members.size() == 12 &&
-               d.nodes.size() == d.node_order.size(),
+               d.nodes.size() == d.node_order.size() &&
+               d.ropes.size() == (rope ? 1u : 0u) &&
+               d.rope_only_nodes() ==
+                   (rope ? std::vector<std::string>{"load"} : std::vector<std::string>{}),
            "the crane's frame with " + entry + " = " + value + " is valid: '" + message +
                "'");
   }

@@ -327,7 +327,7 @@ struct ModalMatrices
   SparsityPattern diagonal_pattern;
   SparseMatrix<double> K, M;
 
-  explicit ModalMatrices(const DiscreteSystem &system)
+  ModalMatrices(const DiscreteSystem &system, const Vector<double> *rope_state)
   {
     const unsigned int n = system.n_dofs();
     if (!system.has_stiffness())
@@ -341,6 +341,12 @@ struct ModalMatrices
     M.reinit(pattern);
     if (system.has_stiffness())
       K.copy_from(system.stiffness);
+    // the ropes' tangent at their state (R1, doc/theory.md 10.4)
+    if (system.has_stiffness() && !system.ropes.empty())
+    {
+      Vector<double> zero(n);
+      add_rope_tangents(system.ropes, rope_state ? *rope_state : zero, K);
+    }
     if (system.has_consistent_mass())
     {
       for (unsigned int i = 0; i < n; ++i)
@@ -460,12 +466,13 @@ void normalise_and_check(const unsigned int k,
 
 ModalResult compute_modes(const DiscreteSystem &system,
                           const unsigned int n_modes,
-                          const bool close_contacts)
+                          const bool close_contacts,
+                          const Vector<double> *rope_state)
 {
   const unsigned int n = system.n_dofs();
   AssertThrow(system.fixed.size() == n,
               ExcMessage("modal analysis: the DiscreteSystem has no fixed flags."));
-  const ModalMatrices matrices(system);
+  const ModalMatrices matrices(system, rope_state);
   const SparseMatrix<double> &K = matrices.K, &M = matrices.M;
   ModalResult result;
   const std::array<Vector<double>, 3> Mr = influence_masses(system, M, result.total_mass);

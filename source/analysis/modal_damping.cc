@@ -40,14 +40,15 @@ ModalRayleighDamping modal_rayleigh_damping(const DiscreteSystem &system,
   unsigned int n_free = 0;
   for (unsigned int i = 0; i < system.n_dofs(); ++i)
     n_free += system.fixed[i] ? 0 : 1;
-  n_free -= compute_modes(system, 0, true).n_constraints;
+  n_free -= compute_modes(system, 0, true, &system.initial_displacement).n_constraints;
   ModalRayleighDamping result;
   result.damping_ratio = damping_ratio;
   unsigned int n_modes = 20, searched = 0;
   while (true)
   {
     n_modes = std::min(n_modes, n_free);
-    const ModalResult r = compute_modes(system, n_modes, true);
+    const ModalResult r =
+        compute_modes(system, n_modes, true, &system.initial_displacement);
     searched = r.frequencies.size();
     const double f_max = r.frequencies.empty() ? 0. : r.frequencies.back();
     result.mode_vertical = result.mode_horizontal = 0;

@@ -384,6 +384,119 @@ void solve_iterative(const DiscreteSystem &system,
                 ExcMessage(singular_message + " (CG + AMG broke down: p.K p = 0)."));
   }
 }
+
+/**
+ * K U = F with the closed contacts @p contacts (solve_closed()) or without
+ * (direct or iterative), the residual checked; @p K has its fixed DoFs
+ * decoupled.
+ */
+void solve_linear(const DiscreteSystem &system,
+                  const ClosedContacts &contacts,
+                  const SparseMatrix<double> &K,
+                  const Vector<double> &F,
+                  const std::string &linear_solver,
+                  Vector<double> &U,
+                  std::vector<double> *contact_forces)
+{
+  const unsigned int n = system.n_dofs();
+  const std::vector<bool> &fixed = system.fixed;
+  const double norm_F = F.l2_norm();
+  if (!contacts.closed.empty())
+  {
+    const std::vector<double> lambda =
+        solve_closed(system, K, F, contacts.closed, contacts.centred, U);
+    const std::vector<double> forces = closed_contact_forces(system, contacts, lambda, F);
+    if (contact_forces != nullptr)
+      *contact_forces = forces;
+    return;
+  }
+
+  if (linear_solver == "direct")
+    solve_direct(K, F, fixed, U);
+  else if (norm_F > 0.)
+    solve_iterative(system, K, F, U);
+
+  AssertThrow(std::isfinite(U.l2_norm()),
+              ExcMessage(singular_message + " (the solution is not finite)."));
+  Vector<double> r(n);
+  residual(K, U, F, fixed, r);
+  const double norm_r = free_norm(r, fixed);
+  if (!(norm_r <= 1e-8 * norm_F))
+  {
+    std::ostringstream message;
+    message << singular_message << " (residual ||K U - F|| = " << norm_r
+            << " > 1e-8 ||F|| = " << 1e-8 * norm_F << ").";
+    AssertThrow(false, ExcMessage(message.str()));
+  }
+  for (unsigned int i = 0; i < n; ++i)
+    if (fixed[i])
+      U[i] = 0.;
+}
+
+/** Newton iterations of the static state with ropes (R1) at most. */
+constexpr unsigned int max_rope_iterations = 50;
+
+/**
+ * The static state with ropes (R1, doc/theory.md 10.3): Newton on the rope
+ * forces, the rest of the model linear,
+ * `(K + K_r(U_k)) U_{k+1} = F + F_r(U_k) + K_r(U_k) U_k` from `U_0 = 0`,
+ * until `||U_{k+1} - U_k|| <= 1e-10 ||U_{k+1}||` (free DoFs). A slack rope
+ * gets a small isotropic stiffness in the iteration matrix (1e-6 k), which
+ * does not change the solution.
+ */
+void solve_with_ropes(const DiscreteSystem &system,
+                      const ClosedContacts &contacts,
+                      const Vector<double> &F,
+                      const std::string &linear_solver,
+                      Vector<double> &U,
+                      std::vector<double> *contact_forces)
+{
+  const unsigned int n = system.n_dofs();
+  const std::vector<bool> &fixed = system.fixed;
+  U.reinit(n);
+  Vector<double> U_next(n), Ft(n), rope_u(n);
+  double du = 0., un = 0.;
+  for (unsigned int iteration = 0; iteration < max_rope_iterations; ++iteration)
+  {
+    SparseMatrix<double> K(system.stiffness_pattern);
+    K.copy_from(system.stiffness);
+    SparseMatrix<double> Kr(system.stiffness_pattern);
+    for (const Rope &rope : system.ropes)
+      add_rope_tangents({rope}, U, Kr, 1e-6 * rope.stiffness * rope.rest_length);
+    K.add(1., Kr);
+    decouple_fixed_dofs(K, fixed);
+    // F + F_r(U_k) + K_r(U_k) U_k
+    Ft = F;
+    for (const Rope &rope : system.ropes)
+      rope.add_force(U, Ft);
+    Kr.vmult(rope_u, U);
+    Ft += rope_u;
+    for (unsigned int i = 0; i < n; ++i)
+      if (fixed[i])
+        Ft[i] = 0.;
+    solve_linear(system, contacts, K, Ft, linear_solver, U_next, contact_forces);
+    du = 0.;
+    for (unsigned int i = 0; i < n; ++i)
+      du += fixed[i] ? 0. : (U_next[i] - U[i]) * (U_next[i] - U[i]);
+    du = std::sqrt(du);
+    un = free_norm(U_next, fixed);
+    U = U_next;
+    if (du <= 1e-10 * un)
+      return;
+  }
+  std::ostringstream message;
+  message << "static analysis: the equilibrium with the ropes did not converge in "
+          << max_rope_iterations << " Newton iterations (last correction " << du
+          << " m of " << un << " m)";
+  for (const Rope &rope : system.ropes)
+    if (rope.tension(U) == 0.)
+    {
+      message << "; the rope '" << rope.name
+              << "' is slack: a load held only by a slack rope has no static state";
+      break;
+    }
+  AssertThrow(false, ExcMessage(message.str()));
+}
 } // namespace
 
 void solve_static(const DiscreteSystem &system,
@@ -420,42 +533,16 @@ void solve_static(const DiscreteSystem &system,
   for (unsigned int i = 0; i < n; ++i)
     if (fixed[i])
       F[i] = 0.;
-  const double norm_F = F.l2_norm();
 
+  if (!system.ropes.empty())
+  {
+    solve_with_ropes(system, contacts, F, linear_solver, U, contact_forces);
+    return;
+  }
   // K with the fixed DoFs decoupled (positive diagonal, no couplings)
   SparseMatrix<double> K(system.stiffness_pattern);
   K.copy_from(system.stiffness);
   decouple_fixed_dofs(K, fixed);
-
-  if (!contacts.closed.empty())
-  {
-    const std::vector<double> lambda =
-        solve_closed(system, K, F, contacts.closed, contacts.centred, U);
-    const std::vector<double> forces = closed_contact_forces(system, contacts, lambda, F);
-    if (contact_forces != nullptr)
-      *contact_forces = forces;
-    return;
-  }
-
-  if (linear_solver == "direct")
-    solve_direct(K, F, fixed, U);
-  else if (norm_F > 0.)
-    solve_iterative(system, K, F, U);
-
-  AssertThrow(std::isfinite(U.l2_norm()),
-              ExcMessage(singular_message + " (the solution is not finite)."));
-  Vector<double> r(n);
-  residual(K, U, F, fixed, r);
-  const double norm_r = free_norm(r, fixed);
-  if (!(norm_r <= 1e-8 * norm_F))
-  {
-    std::ostringstream message;
-    message << singular_message << " (residual ||K U - F|| = " << norm_r
-            << " > 1e-8 ||F|| = " << 1e-8 * norm_F << ").";
-    AssertThrow(false, ExcMessage(message.str()));
-  }
-  for (unsigned int i = 0; i < n; ++i)
-    if (fixed[i])
-      U[i] = 0.;
+  solve_linear(system, contacts, K, F, linear_solver, U, contact_forces);
 }
 } // namespace hati

@@ -51,9 +51,35 @@ void declare_masses_contacts_and_mesh(ParameterHandler &prm)
       "Hoist mass",
       "20350",
       Patterns::Double(0., 1e7),
-      "Lifted load and hook block (kg), from 0 to 1e7 kg, rigidly at the trolley's "
-      "centre (no rope pendulum). Default: the rated 20 t plus a 0.35 t "
-      "hook block (doc/crane_data.md section 0).");
+      "Lifted load and hook block (kg), from 0 to 1e7 kg: on its rope below the "
+      "trolley's centre (Hoist = rope) or rigidly at the trolley's centre (Hoist = "
+      "rigid). Default: the rated 20 t plus a 0.35 t hook block (doc/crane_data.md "
+      "section 0).");
+  prm.declare_entry(
+      "Hoist",
+      "rope",
+      Patterns::Selection("rope|rigid"),
+      "rope: the hoist mass hangs on a rope (Model/Frame/Ropes, R1: tension only, "
+      "geometrically exact; a pendulum that also goes slack) from the trolley's centre "
+      "(node hoist) at the node load, Rope length below it; rigid: the hoist mass sits "
+      "at the trolley's centre (no pendulum: the paper's case). A rope needs "
+      "CD-Lagrange or HATI (the trolley is explicit).");
+  prm.declare_entry("Rope length",
+                    "6",
+                    Patterns::Double(0., 1e3),
+                    "Hoist = rope: length from the hook point (trolley's centre) to the "
+                    "load (m), > 0; the rope's rest length (gravity stretches it by "
+                    "m g / k). Default 6 m: pendulum frequency sqrt(g / L) / (2 pi) = "
+                    "0.2035 Hz.");
+  prm.declare_entry(
+      "Rope stiffness",
+      "0",
+      Patterns::Double(0., 1e12),
+      "Hoist = rope: axial stiffness of the rope, all falls together "
+      "(N/m); 0 (default): the four-fall wire rope of doc/crane_data.md "
+      "section 11, k = 4 E_r A_r / L = 9.328e7 N m / L (d = 20 mm, metallic "
+      "area 0.583 d^2, rope modulus E_r = 100 GPa): 1.555e7 N/m for L = 6 "
+      "m.");
   prm.declare_entry(
       "Flange clearance",
       "0.02",
@@ -244,6 +270,16 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   rail_mass_per_metre = positive("Rail mass per metre", true);
   trolley_mass = positive("Trolley mass", true);
   hoist_mass = positive("Hoist mass", true);
+  hoist = prm.get("Hoist");
+  rope_length = positive("Rope length");
+  rope_stiffness = positive("Rope stiffness", true);
+  if (rope_stiffness == 0.)
+    rope_stiffness = default_rope_stiffness(rope_length);
+  AssertThrow(hoist == "rigid" || hoist_mass > 0.,
+              ExcMessage(where +
+                         "Hoist mass: expected > 0 with Hoist = rope (the load "
+                         "on the rope), got " +
+                         prm.get("Hoist mass")));
   flange_clearance = positive("Flange clearance", true);
   wheel_restitution = prm.get_double("Wheel restitution");
   AssertThrow(wheel_restitution >= 0. && wheel_restitution <= 1.,

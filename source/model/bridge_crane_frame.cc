@@ -237,8 +237,22 @@ void add_trolley(const CraneParameters &p, FrameDescription &f)
   for (const char *n : {"tw1", "tw2", "tw3", "tw4"})
     if (p.trolley_mass > 0.)
       add_point_mass(f, n, 0.25 * p.trolley_mass);
-  if (p.hoist_mass > 0.)
-    add_point_mass(f, "hoist", p.hoist_mass);
+  if (p.hoist == "rigid")
+  {
+    if (p.hoist_mass > 0.)
+      add_point_mass(f, "hoist", p.hoist_mass);
+    return;
+  }
+  // the load on its rope below the trolley's centre (R1)
+  add_node(f, "load", 0., yc, zt - p.rope_length);
+  add_point_mass(f, "load", p.hoist_mass);
+  FrameDescription::RopeData rope;
+  rope.name = "hoist_rope";
+  rope.node = "hoist";
+  rope.other_node = "load";
+  rope.stiffness = p.rope_stiffness;
+  rope.rest_length = p.rope_length;
+  f.ropes.push_back(rope);
 }
 
 /** Supports: braked crane wheels along the runway; pinned wheels. */
@@ -305,6 +319,8 @@ FrameDescription BridgeCrane::Parameters::frame() const
   add_supports(*this, f);
   add_wheel_contacts(*this, f);
   f.monitor_nodes = {"hoist", "tw1", "tw2", "tw3", "tw4", "cw1", "cw2", "cw3", "cw4"};
+  if (hoist == "rope")
+    f.monitor_nodes.push_back("load");
   f.section_force_members = {"girder_1", "girder_2"};
   return f;
 }

@@ -6,6 +6,18 @@
 
 namespace hati
 {
+namespace
+{
+/** The refusal of a rope outside the explicit subdomain (R1). */
+std::string rope_message(const std::string &name)
+{
+  return "Model/Decomposition: the rope '" + name +
+         "' lies in the implicit subdomain; ropes need the explicit CD-Lagrange "
+         "integrator: put its hook point in the Explicit region or the Explicit "
+         "members";
+}
+} // namespace
+
 void extract_subsystem(const DiscreteSystem &full,
                        const std::vector<types::global_dof_index> &dofs,
                        DiscreteSystem &sub)
@@ -96,6 +108,21 @@ void extract_subsystem(const DiscreteSystem &full,
     }
     sub.contacts.push_back(row);
   }
+
+  // ropes (R1): the same for their translations (a held DoF stays invalid)
+  for (const auto &r : full.ropes)
+  {
+    Rope rope = r;
+    for (auto *dofs : {&rope.hook_dofs, &rope.load_dofs})
+      for (auto &dof : *dofs)
+        if (dof != numbers::invalid_dof_index)
+        {
+          AssertThrow(local[dof] >= 0 || full.fixed[dof],
+                      ExcMessage(rope_message(r.name)));
+          dof = local[dof] >= 0 ? local[dof] : numbers::invalid_dof_index;
+        }
+    sub.ropes.push_back(rope);
+  }
 }
 
 void decompose(Model &model,
@@ -143,6 +170,8 @@ void decompose(Model &model,
                            "' lies in the implicit subdomain; contacts need the explicit "
                            "CD-Lagrange integrator: put its node in the Explicit region "
                            "or the Explicit members"));
+    AssertThrow(p == 0 || part.system.ropes.empty(),
+                ExcMessage(rope_message(part.system.ropes[0].name)));
   }
   model.select_part(cell_parts, -1);
 

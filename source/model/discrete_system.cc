@@ -25,6 +25,7 @@ void DiscreteSystem::reinit(const unsigned int n)
   excited_lumped_mass.reinit(0);
   gravity = Tensor<1, 3>();
   contacts.clear();
+  ropes.clear();
   monitors.clear();
 }
 

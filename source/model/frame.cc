@@ -189,6 +189,21 @@ void Frame::set_up_constraints(const MeshLayout &layout,
       if (s.stiffness[c] == 0. && !constraints.is_constrained(node_dofs[s.node][c]))
         constraints.add_line(node_dofs[s.node][c]);
   constraints.close();
+  // the nodes only a rope holds: six DoFs each after the mesh's, their
+  // data owned with the rope's hook point
+  n_mesh_dofs = dof_handler.n_dofs();
+  types::global_dof_index next = n_mesh_dofs;
+  for (const auto &node : frame.rope_only_nodes())
+  {
+    for (unsigned int c = 0; c < 6; ++c)
+      node_dofs[node][c] = next++;
+    for (const auto &r : frame.ropes)
+      if (r.other_node == node)
+      {
+        node_cells[node] = node_cells.at(r.node);
+        break;
+      }
+  }
 }
 
 std::vector<bool> Frame::excited_members(const CommonModelParameters &common) const
@@ -221,12 +236,10 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
 
   if (triangulation.n_active_cells() == 0)
     create_mesh();
-  const unsigned int n = dof_handler.n_dofs();
+  const unsigned int n = n_mesh_dofs + 6 * frame.rope_only_nodes().size();
   system.reinit(n);
 
-  DynamicSparsityPattern dsp(n, n);
-  DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-  system.stiffness_pattern.copy_from(dsp);
+  make_pattern(system);
   system.stiffness.reinit(system.stiffness_pattern);
   system.consistent_mass.reinit(system.stiffness_pattern);
 
@@ -253,15 +266,17 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
     total_mass = mass;
 
   for (unsigned int i = 0; i < n; ++i)
-    system.fixed[i] = constraints.is_constrained(i);
+    system.fixed[i] = held(i);
 
   // critical step bound: elements, plus the springs (Weyl's inequality:
-  // lambda_max(M^-1 (K_e + K_s)) <= element bound + max k_i / m_i)
+  // lambda_max(M^-1 (K_e + K_s)) <= element bound + max k_i / m_i), plus
+  // the ropes (R1: a bar of stiffness k between the two masses)
   double spring_bound = 0.;
   for (unsigned int i = 0; i < n; ++i)
     if (spring[i] > 0. && !system.fixed[i])
       spring_bound = std::max(spring_bound, spring[i] / system.lumped_mass[i]);
-  system.omega_max_bound = std::sqrt(omega2 + spring_bound);
+  const double rope_bound = add_ropes(system);
+  system.omega_max_bound = std::sqrt(omega2 + spring_bound + rope_bound);
 
   add_loads(common, system);
   add_contacts(common, system);
@@ -327,7 +342,7 @@ void Frame::assemble_cells(const std::vector<bool> &excited,
 
 std::vector<double> Frame::add_springs(DiscreteSystem &system) const
 {
-  std::vector<double> spring(dof_handler.n_dofs(), 0.);
+  std::vector<double> spring(system.n_dofs(), 0.);
   for (const auto &s : frame.supports)
     for (unsigned int c = 0; c < 6; ++c)
       if (s.stiffness[c] > 0. && owns_node(node_cells.at(s.node)))
@@ -349,7 +364,7 @@ void Frame::add_point_masses(const std::vector<bool> &excited,
       if (!owns_node(node_cells.at(p.node)))
         break;
       const auto i = node_dofs.at(p.node)[c];
-      if (constraints.is_constrained(i))
+      if (held(i))
         continue;
       const double m = c < 3 ? p.mass : p.rotary_inertia[c - 3];
       system.lumped_mass[i] += m;
@@ -369,13 +384,15 @@ void Frame::add_loads(const CommonModelParameters &common, DiscreteSystem &syste
 {
   // rigid translations; gravity F = M r g (consistent mass, inertia coupled
   // to the supports included); nodal loads
-  const unsigned int n = dof_handler.n_dofs();
+  const unsigned int n = system.n_dofs();
   for (unsigned int d = 0; d < 3; ++d)
   {
     system.influence[d].reinit(n);
     for (const auto &vd : vertex_dofs)
       if (!system.fixed[vd[d]])
         system.influence[d][vd[d]] = 1.;
+    for (types::global_dof_index i = n_mesh_dofs + d; i < n; i += 6)
+      system.influence[d][i] = 1.; // the translations of rope-only nodes
     system.constant_force.add(common.gravity[d], system.mass_influence[d]);
   }
   system.gravity = common.gravity;
@@ -432,6 +449,61 @@ void Frame::add_contacts(const CommonModelParameters &common,
   }
 }
 
+void Frame::make_pattern(DiscreteSystem &system) const
+{
+  const unsigned int n = system.n_dofs();
+  DynamicSparsityPattern mesh(n_mesh_dofs, n_mesh_dofs);
+  DoFTools::make_sparsity_pattern(dof_handler, mesh, constraints, false);
+  if (frame.ropes.empty())
+  {
+    system.stiffness_pattern.copy_from(mesh);
+    return;
+  }
+  // with ropes: the DoFs of the rope-only nodes (their diagonal) and the
+  // couplings of each rope's translations (its tangent, R1)
+  DynamicSparsityPattern dsp(n, n);
+  for (unsigned int i = 0; i < n_mesh_dofs; ++i)
+    for (auto it = mesh.begin(i); it != mesh.end(i); ++it)
+      dsp.add(i, it->column());
+  for (unsigned int i = n_mesh_dofs; i < n; ++i)
+    dsp.add(i, i);
+  for (const auto &r : frame.ropes)
+    for (unsigned int a = 0; a < 3; ++a)
+      for (unsigned int b = 0; b < 3; ++b)
+        for (const auto &[p, q] : {std::make_pair(r.node, r.other_node),
+                                   std::make_pair(r.other_node, r.node),
+                                   std::make_pair(r.node, r.node),
+                                   std::make_pair(r.other_node, r.other_node)})
+          dsp.add(node_dofs.at(p)[a], node_dofs.at(q)[b]);
+  system.stiffness_pattern.copy_from(dsp);
+}
+
+double Frame::add_ropes(DiscreteSystem &system) const
+{
+  for (const auto &r : frame.ropes)
+  {
+    std::vector<unsigned int> rope_cells = node_cells.at(r.node);
+    rope_cells.insert(rope_cells.end(),
+                      node_cells.at(r.other_node).begin(),
+                      node_cells.at(r.other_node).end());
+    if (!owns_node(rope_cells))
+      continue;
+    Rope rope;
+    rope.name = r.name;
+    for (unsigned int d = 0; d < 3; ++d)
+    {
+      const auto h = node_dofs.at(r.node)[d], p = node_dofs.at(r.other_node)[d];
+      rope.hook_dofs[d] = held(h) ? numbers::invalid_dof_index : h;
+      rope.load_dofs[d] = held(p) ? numbers::invalid_dof_index : p;
+    }
+    rope.reference_chord = frame.nodes.at(r.other_node) - frame.nodes.at(r.node);
+    rope.stiffness = r.stiffness;
+    rope.rest_length = r.rest_length > 0. ? r.rest_length : rope.reference_chord.norm();
+    system.ropes.push_back(rope);
+  }
+  return rope_omega_squared_bound(system.ropes, system.lumped_mass, system.fixed);
+}
+
 void Frame::add_monitors(DiscreteSystem &system) const
 {
   for (const auto &node : frame.monitor_nodes)
@@ -462,6 +534,14 @@ void Frame::write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const
   {
     distributed[f] = *fields[f].second;
     constraints.distribute(distributed[f]);
+    if (distributed[f].size() > n_mesh_dofs) // rope-only nodes: not in the mesh
+    {
+      Vector<double> mesh_part(n_mesh_dofs);
+      std::copy(distributed[f].begin(),
+                distributed[f].begin() + n_mesh_dofs,
+                mesh_part.begin());
+      distributed[f].swap(mesh_part);
+    }
     std::vector<std::string> names(3, fields[f].first);
     for (unsigned int c = 0; c < 3; ++c)
       names.push_back(fields[f].first + "_rotational");

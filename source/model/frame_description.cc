@@ -3,6 +3,7 @@
 #include <hati/base/names.h>
 #include <hati/model/frame_description.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -62,6 +63,12 @@ void validate_names(const FrameDescription &d)
     check_name(c.node, frame + "Contacts", "node", NameKind::node);
     if (!c.other_node.empty())
       check_name(c.other_node, frame + "Contacts", "node", NameKind::node);
+  }
+  for (const auto &r : d.ropes)
+  {
+    check_name(r.name, frame + "Ropes", "rope");
+    check_name(r.node, frame + "Ropes", "node", NameKind::node);
+    check_name(r.other_node, frame + "Ropes", "node", NameKind::node);
   }
   for (const auto &n : d.monitor_nodes)
     check_name(n, frame + "Monitor nodes", "monitor", NameKind::node);
@@ -139,14 +146,29 @@ std::set<std::string> validate_members(const FrameDescription &d)
   return used_nodes;
 }
 
-/** The data at nodes: every node they name is a node of a member. */
-void validate_nodal_data(const FrameDescription &d, const std::set<std::string> &used)
+/**
+ * The data at nodes: every node they name is a node of a member (@p used),
+ * or for point masses, monitors and nodal loads a node only a rope holds
+ * (@p held: @p used and those).
+ */
+void validate_nodal_data(const FrameDescription &d,
+                         const std::set<std::string> &used,
+                         const std::set<std::string> &held)
 {
   auto check_node = [&](const std::string &n, const std::string &entry)
   {
-    require(used.count(n),
+    require(held.count(n),
             entry,
             "node '" + n + "' is not an end of any member in Model/Frame/Members");
+  };
+  auto check_member_node = [&](const std::string &n, const std::string &entry)
+  {
+    require(used.count(n),
+            entry,
+            "node '" + n + "' is not an end of any member in Model/Frame/Members" +
+                (held.count(n) ? " (a node held only by a rope takes no support or "
+                                 "hinge)"
+                               : ""));
   };
   for (const auto &p : d.point_masses)
   {
@@ -168,17 +190,56 @@ void validate_nodal_data(const FrameDescription &d, const std::set<std::string> 
   }
   require_unique(supported, "Supports", "node", "listed twice");
   for (const auto &s : d.supports)
-    check_node(s.node, "Supports");
+    check_member_node(s.node, "Supports");
   for (const auto &n : d.hinged_joints)
-    check_node(n, "Hinged joints");
+    check_member_node(n, "Hinged joints");
   for (const auto &n : d.monitor_nodes)
     check_node(n, "Monitor nodes");
   for (const auto &l : d.nodal_loads)
     check_node(l.first, "Nodal loads");
 }
 
+/**
+ * The ropes: unique names, the hook point a member node, the load a node
+ * (of a member or held by the rope alone), two different nodes, the
+ * stiffness and the rest length in range.
+ */
+void validate_ropes(const FrameDescription &d, const std::set<std::string> &used)
+{
+  std::vector<std::string> names;
+  for (const auto &r : d.ropes)
+    names.push_back(r.name);
+  require_unique(names, "Ropes", "rope", "defined twice");
+  for (const auto &r : d.ropes)
+  {
+    const std::string rope = "rope '" + r.name + "'";
+    require(used.count(r.node),
+            "Ropes",
+            rope + ": its hook point '" + r.node +
+                "' is not an end of any member in Model/Frame/Members");
+    require(d.nodes.count(r.other_node),
+            "Ropes",
+            rope + " names node '" + r.other_node +
+                "', which is not in Model/Frame/Nodes");
+    require(
+        r.other_node != r.node, "Ropes", rope + " names the node '" + r.node + "' twice");
+    require(r.stiffness > 0. && r.stiffness <= FrameDescription::max_rope_stiffness,
+            "Ropes",
+            rope + ": the stiffness must be > 0 and at most 1e12 N/m");
+    const double distance = d.nodes.at(r.node).distance(d.nodes.at(r.other_node));
+    require(distance > 0.,
+            "Ropes",
+            rope + ": its nodes '" + r.node + "' and '" + r.other_node +
+                "' are at the same point");
+    require(r.rest_length < 0. ? true
+                               : (r.rest_length > 0. && std::isfinite(r.rest_length)),
+            "Ropes",
+            rope + ": the rest length must be > 0 (m)");
+  }
+}
+
 /** The contacts: their nodes, normals, gaps and restitution coefficients. */
-void validate_contacts(const FrameDescription &d, const std::set<std::string> &used)
+void validate_contacts(const FrameDescription &d, const std::set<std::string> &held)
 {
   for (const auto &c : d.contacts)
   {
@@ -187,7 +248,7 @@ void validate_contacts(const FrameDescription &d, const std::set<std::string> &u
             "Contacts",
             contact + " names the node '" + c.node + "' twice");
     for (const auto &n : {c.node, c.other_node})
-      require(n.empty() || used.count(n),
+      require(n.empty() || held.count(n),
               "Contacts",
               "node '" + n + "' is not an end of any member in Model/Frame/Members");
     require(c.normal.norm() > 0., "Contacts", contact + " has a zero normal");
@@ -208,13 +269,32 @@ void FrameDescription::add_node(const std::string &name, const Point<3> &x)
   node_order.push_back(name);
 }
 
+std::vector<std::string> FrameDescription::rope_only_nodes() const
+{
+  std::set<std::string> member_nodes;
+  for (const auto &m : members)
+    for (const auto &n :
+         m.path.empty() ? std::vector<std::string>{m.start, m.end} : m.path)
+      member_nodes.insert(n);
+  std::vector<std::string> r;
+  for (const auto &rope : ropes)
+    if (!member_nodes.count(rope.other_node) &&
+        std::find(r.begin(), r.end(), rope.other_node) == r.end())
+      r.push_back(rope.other_node);
+  return r;
+}
+
 void FrameDescription::validate() const
 {
   validate_names(*this);
   validate_parts(*this);
   const std::set<std::string> used_nodes = validate_members(*this);
-  validate_nodal_data(*this, used_nodes);
-  validate_contacts(*this, used_nodes);
+  validate_ropes(*this, used_nodes);
+  std::set<std::string> held = used_nodes;
+  for (const auto &n : rope_only_nodes())
+    held.insert(n);
+  validate_nodal_data(*this, used_nodes, held);
+  validate_contacts(*this, held);
   std::set<std::string> member_names;
   for (const auto &m : members)
     member_names.insert(m.name);

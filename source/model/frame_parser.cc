@@ -177,6 +177,18 @@ void FrameParameters::declare_parameters(ParameterHandler &prm)
       "a name are summed in contacts.csv. With Method = HATI a node-to-node contact "
       "is explicit if either node touches an explicit cell.");
   prm.declare_entry(
+      "Ropes",
+      "",
+      Patterns::Anything(),
+      "Ropes (tension only, geometrically exact; CD-Lagrange, or the explicit "
+      "subdomain of HATI), 'name: node, other node, stiffness[, rest length]; ...': "
+      "node is the hook point (a node of a member), other node the load (a node of a "
+      "member, or a node held by the rope alone: it keeps its translations, its "
+      "rotations are held); stiffness k = E A / L of all falls (N/m, > 0); rest length "
+      "(m, > 0), default the distance between the two nodes (gravity then stretches "
+      "the rope). Tension T = max(0, k (l - rest length)) with l the current "
+      "distance between the nodes.");
+  prm.declare_entry(
       "Nodal loads",
       "",
       Patterns::Anything(),
@@ -457,6 +469,30 @@ void parse_nodal_loads(ParameterHandler &prm, FrameDescription &d)
   }
 }
 
+/** One item of Ropes: 'node, other node, stiffness[, rest length]'. */
+FrameDescription::RopeData parse_rope(const Item &it)
+{
+  expect_values(
+      it, "Ropes", {3, 4}, "3 or 4 (node, other node, stiffness[, rest length])");
+  FrameDescription::RopeData r;
+  r.name = it.name;
+  r.node = it.values[0];
+  r.other_node = it.values[1];
+  r.stiffness = to_number(it.values[2], "Ropes", it);
+  AssertThrow(r.stiffness > 0. && r.stiffness <= FrameDescription::max_rope_stiffness,
+              ExcMessage("Model/Frame/Ropes: rope '" + it.name +
+                         "': the stiffness must be > 0 and at most 1e12 N/m, got " +
+                         it.values[2]));
+  if (it.values.size() == 4)
+  {
+    r.rest_length = to_number(it.values[3], "Ropes", it);
+    AssertThrow(r.rest_length > 0.,
+                ExcMessage("Model/Frame/Ropes: rope '" + it.name +
+                           "': the rest length must be > 0 (m), got " + it.values[3]));
+  }
+  return r;
+}
+
 /**
  * One item of Contacts: 'node, nx, ny, nz, gap[, e][, two-sided]' (rigid
  * plane) or 'node, other node, nx, ny, nz, gap[, e][, two-sided]' (node to
@@ -525,5 +561,7 @@ void FrameParameters::parse_parameters(ParameterHandler &prm)
   parse_nodal_loads(prm, d);
   for (const Item &it : parse_items(prm.get("Contacts"), "Contacts"))
     d.contacts.push_back(parse_contact(it, d));
+  for (const Item &it : parse_items(prm.get("Ropes"), "Ropes"))
+    d.ropes.push_back(parse_rope(it));
 }
 } // namespace hati

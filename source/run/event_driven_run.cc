@@ -1,3 +1,4 @@
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/timer.h>
 
 #include <hati/output/output_writer.h>
@@ -17,6 +18,10 @@ namespace hati
 void run_event_driven(Problem &problem, RunDirectory &directory)
 {
   const DiscreteSystem &system = problem.system;
+  AssertThrow(system.ropes.empty(),
+              ExcMessage("Time integration/Method = event-driven: the rope '" +
+                         (system.ropes.empty() ? std::string() : system.ropes[0].name) +
+                         "' needs the CD-Lagrange integrator (or HATI)."));
   const OutputParameters &output = problem.output_parameters;
   TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
   const double T = problem.time_parameters.end_time;

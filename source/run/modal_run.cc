@@ -3,6 +3,7 @@
 #include <deal.II/base/timer.h>
 
 #include <hati/analysis/modal_analysis.h>
+#include <hati/analysis/static_analysis.h>
 #include <hati/output/csv_file.h>
 #include <hati/output/output_writer.h>
 #include <hati/output/run_directory.h>
@@ -27,9 +28,26 @@ void run_modal_analysis(Problem &problem, RunDirectory &directory)
   const auto start = std::chrono::steady_clock::now();
   TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
   ModalResult r;
+  // with ropes (R1): their tangent at the static state under the constant
+  // loads (doc/theory.md 10.4)
+  Vector<double> rope_state(system.n_dofs());
+  SummaryValue tensions = SummaryValue::object();
+  if (!system.ropes.empty())
+  {
+    TimerOutput::Scope scope(timer, "static state of the ropes");
+    solve_static(system, 0., rope_state, problem.newmark_parameters.linear_solver, true);
+    std::cout << "  static rope tension (N):";
+    for (const Rope &rope : system.ropes)
+    {
+      tensions.set(rope.name, rope.tension(rope_state));
+      std::cout << "  " << rope.name << " " << std::setprecision(10)
+                << rope.tension(rope_state);
+    }
+    std::cout << std::endl;
+  }
   {
     TimerOutput::Scope scope(timer, "eigenvalue solve");
-    r = compute_modes(system, problem.analysis_parameters.n_modes);
+    r = compute_modes(system, problem.analysis_parameters.n_modes, true, &rope_state);
   }
   TimerOutput::Scope scope(timer, "output");
   directory.begin();
@@ -87,6 +105,8 @@ void run_modal_analysis(Problem &problem, RunDirectory &directory)
                          {"n_dofs", system.n_dofs()},
                          {"frequencies", list},
                          {"n_closed_contact_rows", r.n_closed_contacts}};
+  if (!system.ropes.empty())
+    summary.emplace_back("static_rope_tension", tensions);
   if (problem.damping.frequency_range())
   {
     // the damping ratio the fitted branches give each mode (A8)

@@ -16,6 +16,13 @@ void run_newmark(Problem &problem, RunDirectory &directory)
       problem.system.contacts.empty(),
       ExcMessage("Time integration/Method = Newmark: the model has contacts, which "
                  "need the explicit CD-Lagrange integrator."));
+  AssertThrow(problem.system.ropes.empty(),
+              ExcMessage("Time integration/Method = Newmark: the rope '" +
+                         (problem.system.ropes.empty() ? std::string()
+                                                       : problem.system.ropes[0].name) +
+                         "' is a nonlinear (tension-only) element, which needs the "
+                         "explicit CD-Lagrange integrator (or HATI with the rope in the "
+                         "explicit subdomain)."));
   const NewmarkParameters &parameters = problem.newmark_parameters;
   TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
   timer.enter_subsection("setup (assembly, factorisation)");

@@ -262,6 +262,23 @@ void Problem::set_static_initial_state()
   const SummaryValue entry = report_static_contact_forces(forces);
   if (entry.kind() != SummaryValue::Kind::null)
     initial_state_summary.emplace_back("static_contact_forces", entry);
+  if (!system.ropes.empty())
+    initial_state_summary.emplace_back("static_rope_tension",
+                                       report_rope_tensions(system.initial_displacement));
+}
+
+SummaryValue Problem::report_rope_tensions(const Vector<double> &U)
+{
+  out << "  static rope tension (N):\n";
+  SummaryValue json = SummaryValue::object();
+  for (const Rope &rope : system.ropes)
+  {
+    const double T = rope.tension(U);
+    out << "    " << std::left << std::setw(28) << rope.name << std::right
+        << std::setw(16) << std::setprecision(10) << T << std::endl;
+    json.set(rope.name, T);
+  }
+  return json;
 }
 
 void Problem::warn(const std::string &message)

@@ -73,6 +73,8 @@ void run_static_analysis(Problem &problem, RunDirectory &directory)
                             {"wall_time", wall}};
   if (contact_entry.kind() != SummaryValue::Kind::null)
     summary.emplace_back("static_contact_forces", contact_entry);
+  if (!system.ropes.empty())
+    summary.emplace_back("static_rope_tension", problem.report_rope_tensions(U));
   for (const auto &entry : problem.model->summary_entries(problem.static_contact_forces))
     summary.push_back(entry);
   write_summary(directory.path() + "/summary.json", summary, problem.warnings);

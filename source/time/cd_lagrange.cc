@@ -24,7 +24,8 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
                        const MaxwellBranches &maxwell)
     : system(system), dt(dt), a0(damping.a0), a1(damping.a1),
       c1((1. - 0.5 * damping.a0 * dt) / (1. + 0.5 * damping.a0 * dt)),
-      c2(1. / (1. + 0.5 * damping.a0 * dt)), branches(maxwell, dt, system.n_dofs())
+      c2(1. / (1. + 0.5 * damping.a0 * dt)), branches(maxwell, dt, system.n_dofs()),
+      rope_forces(system.ropes)
 {
   const unsigned int n = system.n_dofs();
   AssertThrow(dt > 0. && std::isfinite(dt),
@@ -178,6 +179,8 @@ void CDLagrange::initial_state()
   Vector<double> f(force), ku(n), v0(n), kv(n);
   for (unsigned int l = 0; l < load_shapes.size(); ++l)
     f.add(system.time_dependent_loads[l].amplitude(0.), load_shapes[l]);
+  if (rope_forces.active()) // (R1) the rope forces at U_0
+    rope_forces.start(U, f);
   for (unsigned int i = 0; i < n; ++i)
     v0[i] = system.fixed[i] ? 0. : system.initial_velocity[i];
   if (system.has_stiffness())
@@ -264,6 +267,18 @@ void CDLagrange::free_velocity(const bool with_loads)
     a = load_step_force();
   const bool damped = this->damped();
   const unsigned int n = U.size();
+  if (with_loads && rope_forces.active())
+  {
+    // (R1) the rope forces at U_{n+1} with the external force
+    if (a != step_force.data())
+    {
+      if (step_force.size() != n)
+        step_force.reinit(n);
+      std::copy(a, a + n, step_force.begin());
+    }
+    rope_forces.step(U, *V, dt_minv, dt, step_force.data());
+    a = step_force.data();
+  }
   const unsigned int *const col = column.data();
   const double *const val = value.data(), *const u = U.data(), *const v = V->data();
   double *const v_new = V_prev->data();
@@ -432,6 +447,7 @@ void CDLagrange::save(Snapshot &s) const
   s.contact_work = contact_work;
   s.time_dependent_work = time_dependent_work;
   s.dissipated = dissipated;
+  s.ropes = rope_forces.state();
 }
 
 void CDLagrange::restore(const Snapshot &s)
@@ -450,6 +466,8 @@ void CDLagrange::restore(const Snapshot &s)
   contact_work = s.contact_work;
   time_dependent_work = s.time_dependent_work;
   dissipated = s.dissipated;
+  if (rope_forces.active())
+    rope_forces.set_state(s.ropes);
 }
 
 void CDLagrange::apply_contacts()
@@ -587,6 +605,8 @@ Energies CDLagrange::energies() const
     e.kinetic += 0.5 * (*V_prev)[i] * system.lumped_mass[i] * (*V)[i];
   if (system.has_stiffness())
     e.internal = 0.5 * system.stiffness.matrix_norm_square(U);
+  if (rope_forces.active())
+    e.internal += rope_forces.stored_energy();
   Vector<double> du(U);
   du -= U0;
   e.external_work = force * du + time_dependent_work;

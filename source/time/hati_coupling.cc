@@ -170,7 +170,7 @@ void HATICoupling::step()
   // (G2) the micro steps with the known part of the multiplier; with
   // contacts within reach of the ramp response, keep the state to redo them
   start = Clock::now();
-  record_contacts = superposition->contacts_in_reach();
+  record_contacts = superposition->nonlinear_in_reach();
   n_recorded = 0;
   if (record_contacts)
     explicit_integrator.save(snapshot);

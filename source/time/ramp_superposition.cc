@@ -207,6 +207,13 @@ void RampSuperposition::compute_ramp(const std::vector<bool> &active_set,
   r.increment_weighted = SparseColumns(increment_weighted);
   r.H_E = SparseColumns(H_E);
   interface.invert(H_E, r.H_inverse);
+  // (R1) whether the response moves a rope's DoFs (then it is not superposed)
+  r.moves_ropes = false;
+  for (const auto &columns : r.state)
+    for (const auto i : columns.rows())
+      for (const Rope &rope : system.ropes)
+        for (const auto dof : rope.dofs())
+          r.moves_ropes = r.moves_ropes || dof == i;
 }
 
 void RampSuperposition::store_dissipation(
@@ -271,9 +278,10 @@ RampSuperposition::ramp_for(const std::vector<bool> &active_set)
 const RampSuperposition::Response &
 RampSuperposition::response_for_pass(bool &same_active_set)
 {
-  same_active_set = true;
+  same_active_set = !open_ramp.moves_ropes;
   if (!contacts_in_reach())
     return open_ramp;
+  same_active_set = true;
   // the pushing set of every micro step: the contacts with an impulse
   // above round-off (A5) and the bilateral ones
   const unsigned int nrc = reach_contacts.size();
@@ -294,7 +302,11 @@ RampSuperposition::response_for_pass(bool &same_active_set)
         same_active_set = false;
         break;
       }
-  return same_active_set ? ramp_for(pattern) : open_ramp;
+  if (!same_active_set)
+    return open_ramp;
+  const Response &r = ramp_for(pattern);
+  same_active_set = !r.moves_ropes;
+  return same_active_set ? r : open_ramp;
 }
 
 void RampSuperposition::start_pass(const CDLagrange &integrator, const bool contacts)

@@ -56,10 +56,14 @@ struct ModalResult
  *        (less the eliminated ones).
  * @param close_contacts hold the zero-gap contacts closed (true) or ignore
  *        every contact (false).
+ * @param rope_state the displacement (m) at which the ropes' tangent
+ *        `k e e^T + (T / l)(I - e e^T)` (R1, doc/theory.md 10.4) is added to
+ *        K, normally the static state (null: U = 0); no effect without ropes.
  */
 ModalResult compute_modes(const DiscreteSystem &system,
                           const unsigned int n_modes,
-                          const bool close_contacts = true);
+                          const bool close_contacts = true,
+                          const Vector<double> *rope_state = nullptr);
 } // namespace hati
 
 #endif

@@ -44,6 +44,12 @@ using namespace dealii;
  * contact must be in compression (`lambda >= -1e-9 max|lambda|`), otherwise
  * the error names it.
  *
+ * With ropes (R1, doc/theory.md 10.3) the equilibrium is nonlinear: Newton
+ * on the rope forces, the rest linear, each iteration one solve of the
+ * above with `K + K_r(U_k)` (a few iterations; a load hanging alone gets
+ * `T_0 = m g`); a one-line error if it does not converge (e.g. a load held
+ * by a slack rope only).
+ *
  * Throws ExcMessage with "the stiffness matrix is singular: the model can
  * move as a rigid body (check the supports)" if a rigid translation of the
  * model costs no strain energy (`K r_d = 0` for an influence vector; not

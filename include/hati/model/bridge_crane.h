@@ -56,8 +56,17 @@ public:
     double rail_mass_per_metre = 25.;
     /** Trolley (crab) machinery (kg), a quarter on each trolley wheel node. */
     double trolley_mass = 3000.;
-    /** Lifted load and hook block (kg), rigidly at the trolley's centre. */
+    /**
+     * Lifted load and hook block (kg), on its rope (hoist = "rope") or
+     * rigidly at the trolley's centre ("rigid").
+     */
     double hoist_mass = 20350.;
+    /** "rope" (a pendulum on Model/Frame/Ropes, R1) or "rigid". */
+    std::string hoist = "rope";
+    /** Hook point (trolley's centre) to load (m): the rope's rest length. */
+    double rope_length = 6.;
+    /** Axial stiffness of all falls (N/m); default_rope_stiffness(rope_length). */
+    double rope_stiffness = default_rope_stiffness(6.);
     /** Total lateral play of a wheel between its flanges (m). */
     double flange_clearance = 0.02;
     /** Newton's restitution coefficient of every wheel contact (-). */
@@ -135,6 +144,16 @@ public:
 
   /** crane_wheel_1..4 and trolley_wheel_1..4 (the vertical contacts). */
   std::vector<std::string> wheel_contacts() const override;
+
+  /**
+   * The four-fall wire rope of doc/crane_data.md section 11 (N/m): `4 E_r A_r
+   * / L`, `E_r = 100 GPa`, `A_r = 0.583 d^2`, `d = 20 mm`, for a rope
+   * length @p length (m).
+   */
+  static double default_rope_stiffness(const double length)
+  {
+    return 4. * 1.0e11 * 0.583 * 0.02 * 0.02 / length;
+  }
 
   /** Height above the girder axes at which the trolley frame is drawn (m). */
   static constexpr double trolley_height = 0.5;

@@ -8,6 +8,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <hati/contact/sparse_rows.h>
+#include <hati/model/rope.h>
 
 #include <array>
 #include <functional>
@@ -183,6 +184,13 @@ public:
   std::vector<TimeDependentLoad> time_dependent_loads;
 
   std::vector<ContactRow> contacts;
+  /**
+   * Ropes (R1, doc/theory.md 10): nonlinear, tension-only forces that
+   * CD-Lagrange applies step by step; the static and modal analyses use
+   * their tangent. Not part of `stiffness` (its pattern holds their
+   * couplings).
+   */
+  std::vector<Rope> ropes;
   std::vector<MonitorPoint> monitors;
 
   Vector<double> initial_displacement;

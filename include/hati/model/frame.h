@@ -107,6 +107,22 @@ private:
   void add_contacts(const CommonModelParameters &common, DiscreteSystem &system) const;
   /** The monitor points of history.csv. */
   void add_monitors(DiscreteSystem &system) const;
+  /**
+   * The ropes owned by the part built (R1; a rope goes with its hook point),
+   * and the bound of omega^2 they add (1/s^2).
+   */
+  double add_ropes(DiscreteSystem &system) const;
+  /**
+   * The sparsity pattern of the DoFHandler's DoFs, extended by the DoFs of
+   * the nodes only a rope holds and the couplings of every rope's nodes.
+   */
+  void make_pattern(DiscreteSystem &system) const;
+  /** Whether DoF @p i is held: constrained, or a rotation of a rope-only node. */
+  bool held(const types::global_dof_index i) const
+  {
+    return constraints.is_constrained(i) ||
+           (i >= n_mesh_dofs && (i - n_mesh_dofs) % 6 >= 3);
+  }
 
   const FrameDescription frame;
   Triangulation<1, 3> triangulation;
@@ -119,6 +135,12 @@ private:
   std::map<std::string, std::vector<unsigned int>> node_cells;
   /** The six DoFs of every vertex. */
   std::vector<std::array<types::global_dof_index, 6>> vertex_dofs;
+  /**
+   * DoFs of the DoFHandler; the nodes only a rope holds
+   * (FrameDescription::rope_only_nodes()) have six DoFs each after them
+   * (their rotations held), outside the mesh.
+   */
+  types::global_dof_index n_mesh_dofs = 0;
   double total_mass = 0.;
   /** Gravity (m/s^2): the members' weight is a span load for section forces. */
   Tensor<1, 3> gravity;

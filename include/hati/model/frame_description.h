@@ -87,6 +87,21 @@ struct FrameDescription
     bool two_sided = false;
   };
 
+  /**
+   * A rope (doc/theory.md 10, R1) from a hook point (a node of a member) to
+   * a load: another member node, or a node that only the rope holds (with
+   * its point mass): such a node has the three translations only, its
+   * rotations are held (no rotational stiffness or inertia).
+   */
+  struct RopeData
+  {
+    std::string name, node, other_node;
+    /** Axial stiffness k = E A / L of all falls (N/m). */
+    double stiffness = 0.;
+    /** Rest length (m); negative: the distance between the two nodes. */
+    double rest_length = -1.;
+  };
+
   /** Add the node @p name at @p x (m) at the end of node_order. */
   void add_node(const std::string &name, const Point<3> &x);
 
@@ -97,11 +112,23 @@ struct FrameDescription
    * member or support given twice; every node, section and material a member names
    * exists; no member or mesh element of zero length and no node coordinates that
    * overflow; every node that a point mass, support, hinged joint, monitor, nodal load or
-   * contact names is a node of a member; every section-force member exists;
-   * sections, materials, masses, springs and contacts within their ranges.
+   * contact names is a node of a member (or, except for supports and hinged
+   * joints, the load node of a rope); every section-force member exists;
+   * sections, materials, masses, springs, contacts and ropes within their
+   * ranges (a rope: its hook point a member node, two different nodes,
+   * 0 < k <= max_rope_stiffness, rest length > 0).
    * Throws a one-line error naming the `Model/Frame` entry otherwise.
    */
   void validate() const;
+
+  /**
+   * The nodes that only a rope holds (the load nodes of ropes that are not
+   * a node of any member), in rope order, each once.
+   */
+  std::vector<std::string> rope_only_nodes() const;
+
+  /** Largest rope stiffness accepted (N/m). */
+  static constexpr double max_rope_stiffness = 1e12;
 
   /** Node positions (m, global axes) by name. */
   std::map<std::string, Point<3>> nodes;
@@ -117,6 +144,7 @@ struct FrameDescription
   /** Constant nodal loads Fx, Fy, Fz, Mx, My, Mz (N, N m, global axes) by node. */
   std::map<std::string, std::array<double, 6>> nodal_loads;
   std::vector<NodeContact> contacts;
+  std::vector<RopeData> ropes;
   /** Nodes written to history.csv. */
   std::vector<std::string> monitor_nodes;
   /** Members whose section forces are written to section_forces.csv. */

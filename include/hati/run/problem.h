@@ -82,6 +82,11 @@ public:
    * summary.json (name -> N; null if the system has no closed contact).
    */
   SummaryValue report_static_contact_forces(const std::vector<double> &forces);
+  /**
+   * Print the tension of every rope at @p U (R1, N) and return them as a
+   * `summary.json` object (rope name -> tension).
+   */
+  SummaryValue report_rope_tensions(const Vector<double> &U);
 
   /**
    * A warning: one line `hati: warning: @p message` on stderr (unless the

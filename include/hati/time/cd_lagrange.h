@@ -8,6 +8,7 @@
 #include <hati/time/energies.h>
 #include <hati/time/maxwell_memory.h>
 #include <hati/time/rayleigh_damping.h>
+#include <hati/time/rope_forces.h>
 
 #include <array>
 #include <limits>
@@ -99,6 +100,8 @@ public:
     std::vector<double> gap, lambda;
     std::vector<bool> is_active;
     double contact_work = 0., time_dependent_work = 0., dissipated = 0.;
+    /** The ropes' forces, work and tension statistics (R1). */
+    RopeForces::State ropes;
   };
   void save(Snapshot &snapshot) const;
   void restore(const Snapshot &snapshot);
@@ -156,8 +159,14 @@ public:
   /** Add @p energy (J) to dissipated_energy() (corrections of the coupling). */
   void add_dissipated(const double energy) { dissipated += energy; }
 
-  /** Discrete energies at t_n (computes K U_n: call at output times). */
+  /**
+   * Discrete energies at t_n (computes K U_n: call at output times); the
+   * internal energy includes the ropes' (RopeForces::stored_energy()).
+   */
   Energies energies() const;
+
+  /** The ropes (R1): their tensions at t_n and statistics since t = 0. */
+  const RopeForces &ropes() const { return rope_forces; }
 
 private:
   /** (A1), then the memory update (A8); see CouplingView::predict(). */
@@ -259,6 +268,8 @@ private:
   std::vector<std::vector<bool>> lcp_bilateral;
   double contact_work = 0.;
   double time_dependent_work = 0.;
+  /** The ropes (R1), applied with the external loads. */
+  RopeForces rope_forces;
 };
 /**
  * The explicit integrator as the HATI coupling drives it (G2-G3',
@@ -288,7 +299,8 @@ public:
    * `D_{n+1} = a0 M (V_{n+1/2} + V_free)/2 + a1 K V_{n+1/2}`, whose work
    * is booked in dissipated_energy(). Without the external loads if
    * @p with_loads is false (the homogeneous response of the coupling's unit
-   * ramp, G3').
+   * ramp, G3'); the rope forces (R1) go with the loads: they are part of
+   * the actual step, not of the linear ramp response.
    */
   void free_velocity(const bool with_loads = true)
   {

@@ -134,6 +134,8 @@ public:
     return explicit_integrator.normal_velocities();
   }
   const std::vector<double> &impulses() const { return explicit_integrator.impulses(); }
+  /** The ropes of the explicit subdomain (R1): tensions and statistics. */
+  const RopeForces &ropes() const { return explicit_integrator.ropes(); }
   const std::vector<bool> &active() const { return explicit_integrator.active(); }
 
   /** Energies of both subdomains and the interface work (G5). */

@@ -55,7 +55,10 @@ struct InterfaceIncrements
  * response computed with that set bilateral is used (cached per set, up to
  * max_cached_patterns) after superpose() has checked that the LCP of every
  * micro step keeps the set; otherwise HATICoupling redoes the micro steps
- * (max_corrections, continuity_tolerance). With damping (A7) the
+ * (max_corrections, continuity_tolerance). Ropes (R1) are nonlinear like
+ * the contacts and, like their impulses, their forces are part of the pass
+ * and never of the ramp: a macro step whose response reaches a rope's DoFs
+ * is always redone. With damping (A7) the
  * dissipated energy is quadratic in the state: the pass records the
  * velocities, `S V` and damping forces on the reach, and
  * ramp_dissipation() adds the ramp's part. With frequency-range damping
@@ -148,10 +151,21 @@ public:
     SparseColumns impulse, gap, normal_velocity;
     /** H^-1 (inverted once, one product per solve). */
     DenseColumns H_inverse;
+    /**
+     * Whether the response moves a DoF of a rope (R1): the rope forces of
+     * the pass would change with the correction, so the superposition
+     * does not hold and the micro steps are redone.
+     */
+    bool moves_ropes = false;
   };
 
   /** Whether contacts are within reach of the ramp response. */
   bool contacts_in_reach() const { return !reach_contacts.empty(); }
+  /**
+   * Whether the pass must keep its start to redo the micro steps: contacts
+   * or ropes (R1) within reach of the ramp response.
+   */
+  bool nonlinear_in_reach() const { return contacts_in_reach() || open_ramp.moves_ropes; }
   /** Whether the pass records the damping on the reach (damped). */
   bool records_damping() const { return !reach_dofs.empty(); }
   /** Active sets of the contacts within reach whose response was computed. */
@@ -185,7 +199,8 @@ public:
    * The response for the pass: with contacts within reach, the response of
    * their pushing set if it stayed the same over the pass (computed on
    * first use and cached), else the open response and @p same_active_set
-   * false (the micro steps are to be redone).
+   * false (the micro steps are to be redone). A response that moves a rope
+   * (R1) is not superposed either: @p same_active_set false.
    */
   const Response &response_for_pass(bool &same_active_set);
 

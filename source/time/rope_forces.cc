@@ -1,0 +1,72 @@
+#include <hati/time/rope_forces.h>
+
+#include <algorithm>
+
+namespace hati
+{
+double RopeForces::force_of(const unsigned int r,
+                            const Vector<double> &U,
+                            std::array<double, 6> &force) const
+{
+  const Rope &rope = ropes[r];
+  const Tensor<1, 3> c = rope.chord(U);
+  const double l = c.norm();
+  // (R1) T = max(0, k (l - L0)); +T e on the hook point, -T e on the load
+  const double T = std::max(0., rope.stiffness * (l - rope.rest_length));
+  for (unsigned int d = 0; d < 3; ++d)
+  {
+    const double f = T > 0. ? T * c[d] / l : 0.;
+    force[d] = rope.hook_dofs[d] != numbers::invalid_dof_index ? f : 0.;
+    force[3 + d] = rope.load_dofs[d] != numbers::invalid_dof_index ? -f : 0.;
+  }
+  return T;
+}
+
+void RopeForces::start(const Vector<double> &U, Vector<double> &f)
+{
+  const unsigned int n = ropes.size();
+  current.force.assign(n, {});
+  current.tension.assign(n, 0.);
+  current.slack_time.assign(n, 0.);
+  current.work = 0.;
+  initial_energy = 0.;
+  for (unsigned int r = 0; r < n; ++r)
+  {
+    current.tension[r] = force_of(r, U, current.force[r]);
+    initial_energy += ropes[r].strain_energy(U);
+    const auto dofs = ropes[r].dofs();
+    for (unsigned int a = 0; a < 6; ++a)
+      if (dofs[a] != numbers::invalid_dof_index)
+        f[dofs[a]] += current.force[r][a];
+  }
+  current.min_tension = current.tension;
+  current.max_tension = current.tension;
+}
+
+void RopeForces::step(const Vector<double> &U,
+                      const Vector<double> &V,
+                      const Vector<double> &dt_minv,
+                      const double dt,
+                      double *a)
+{
+  std::array<double, 6> force;
+  for (unsigned int r = 0; r < ropes.size(); ++r)
+  {
+    const double T = force_of(r, U, force);
+    const auto dofs = ropes[r].dofs();
+    for (unsigned int k = 0; k < 6; ++k)
+      if (dofs[k] != numbers::invalid_dof_index)
+      {
+        // the work on dU = dt V_{n+1/2}, trapezoidal (E1)
+        current.work += 0.5 * dt * V[dofs[k]] * (current.force[r][k] + force[k]);
+        a[dofs[k]] += dt_minv[dofs[k]] * force[k];
+      }
+    current.force[r] = force;
+    current.tension[r] = T;
+    current.min_tension[r] = std::min(current.min_tension[r], T);
+    current.max_tension[r] = std::max(current.max_tension[r], T);
+    if (T == 0.)
+      current.slack_time[r] += dt;
+  }
+}
+} // namespace hati
