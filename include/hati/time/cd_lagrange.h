@@ -5,6 +5,7 @@
 
 #include <hati/model/discrete_system.h>
 #include <hati/time/energies.h>
+#include <hati/time/frictional_contacts.h>
 #include <hati/time/maxwell_memory.h>
 #include <hati/time/rayleigh_damping.h>
 
@@ -98,6 +99,8 @@ public:
     std::vector<double> gap, lambda;
     std::vector<bool> is_active;
     double contact_work = 0., time_dependent_work = 0., dissipated = 0.;
+    /** Tangential impulses and friction work (A9). */
+    FrictionalContacts::Record friction;
   };
   void save(Snapshot &snapshot) const;
   void restore(const Snapshot &snapshot);
@@ -129,6 +132,11 @@ public:
   const std::vector<double> &impulses() const { return lambda; }
   /** Whether contact k was active (g_k <= 0) in the last step (A4). */
   const std::vector<bool> &active() const { return is_active; }
+  /**
+   * Coulomb friction (A9): tangential impulses and states of the last
+   * step, friction work, the Gauss-Seidel counts.
+   */
+  const FrictionalContacts &friction() const { return frictional_contacts; }
 
   /** Mass-proportional Rayleigh coefficient a0 (1/s). */
   double mass_damping_coefficient() const { return a0; }
@@ -251,6 +259,8 @@ private:
   std::vector<std::vector<bool>> lcp_bilateral;
   double contact_work = 0.;
   double time_dependent_work = 0.;
+  /** The clusters with friction (A9) and their record. */
+  FrictionalContacts frictional_contacts;
 };
 /**
  * The explicit integrator as the HATI coupling drives it (G2-G3',
@@ -374,6 +384,8 @@ public:
   }
   /** Add @p work (J) to the contact work. */
   void add_contact_work(const double work) { integrator->contact_work += work; }
+  /** The friction record (A9), which a redone pass replaces. */
+  FrictionalContacts &friction() { return integrator->frictional_contacts; }
   /** Add @p work (J) to the external work. */
   void add_external_work(const double work) { integrator->time_dependent_work += work; }
   /** Add @p energy (J) to the dissipated energy. */
