@@ -22,7 +22,12 @@ References (exact, a rigid block on an inclined plane):
   velocity is zero to round-off, both contacts `stick`;
 - the static state at 20 deg (tan > mu) is refused in one line naming the
   contact; a frictionless block (mu = 0) on the slope has no static state;
-- bad contact options are refused in one line naming the contact.
+- HATI (block explicit, a rod with a mass implicit) against the fully
+  explicit run: displacement to 1e-4, slip distance to 2 %;
+- modal analysis: the sticking contacts hold the block, so the rod is a
+  cantilever clamped at it (first frequency to 2 %);
+- bad contact options and the event-driven method with friction are
+  refused in one line naming the contact.
 """
 import math
 
@@ -111,6 +116,54 @@ ctx.check("rest 10 deg: static normal forces sum (N) = m g cos",
 ctx.check("rest 10 deg: slip_distance (m)", s["contacts"]["ga"]["slip_distance"], 0.0,
           abs_tol=1e-15)
 
+# -- HATI: the block explicit, a rod with a mass at its end implicit ----------
+# the block a-b (explicit, with the frictional contacts) carries a rod b-c
+# along the slope (implicit, 4 elements, 20 kg at c); the whole slides.
+# Reference: the fully explicit run of the same model (CD-Lagrange at the
+# micro step): displacement of a after 0.5 s to 1e-4, slip distance to 2 %
+# (the spec's HATI-vs-explicit tolerance), states slip, energy balance.
+t20 = math.radians(20.0)
+rod = ["Model/Frame/Nodes=a: 0, 0, 0; b: %.15g, 0, %.15g; c: %.15g, 0, %.15g"
+       % (L * math.cos(t20), L * math.sin(t20), 3 * L * math.cos(t20), 3 * L * math.sin(t20)),
+       "Model/Frame/Members=body: a, b, block, steel, 1; rod: b, c, block, steel, 4",
+       "Model/Frame/Point masses=a: 50; b: 50; c: 20", "Model/Frame/Monitor nodes=a, b, c",
+       "Time integration/End time=0.5", "Output/History interval=0.01"]
+out_cd, _ = ctx.run(prm, "rod_explicit", rod)
+out_h, _ = ctx.run(prm, "rod_hati", rod + ["Time integration/Method=HATI",
+                                           "Model/Decomposition/Explicit members=body",
+                                           "Time integration/HATI/Time step ratio=10"])
+h_cd, h_h = read_csv(out_cd + "/history.csv"), read_csv(out_h + "/history.csv")
+u_cd, u_h = along_slope(h_cd, 20.0)[-1], along_slope(h_h, 20.0)[-1]
+ctx.check("HATI vs explicit: displacement of a along the slope at 0.5 s (m)", u_h, u_cd,
+          rel=1e-4)
+s_cd, s_h = read_summary(out_cd), read_summary(out_h)
+ctx.check("HATI vs explicit: slip distance of ga (m)", s_h["contacts"]["ga"]["slip_distance"],
+          s_cd["contacts"]["ga"]["slip_distance"], rel=0.02)
+ctx.check("HATI: friction_unconverged", s_h["friction_unconverged"], 0, abs_tol=0)
+ctx.check_true("HATI: the macro steps with friction within reach are redone",
+               s_h["redone_macro_steps"] == s_h["n_steps"],
+               "(%d of %d)" % (s_h["redone_macro_steps"], s_h["n_steps"]))
+c = read_csv(out_h + "/contacts.csv")
+ctx.check_true("HATI: contacts.csv state = slip after 0.1 s",
+               bool(np.all(c[c["time"] > 0.1]["state"] == "slip")))
+e = read_csv(out_h + "/energy.csv")
+scale = max(np.max(np.abs(e[k])) for k in ("kinetic", "external_work", "friction_dissipated"))
+ctx.check("HATI: max |balance_drift| / largest energy", float(np.max(np.abs(e["balance_drift"])))
+          / scale, 0.0, abs_tol=1e-9)
+
+# -- modal: the sticking contacts hold the block ---------------------------------
+# the block a-b is held in every translation by its two sticking contacts
+# (and in rotation by its supports), so the rod b-c is a cantilever clamped
+# at b: first bending frequency (Rayleigh, tip mass M, rod mass m_r)
+# f = sqrt(3 E I / (l^3 (M + 0.2357 m_r))) / (2 pi), within 2 % (Timoshenko
+# element and the approximation of the rod's mass)
+out, _ = ctx.run(prm, "modal", rod[:3] + ["Analysis/Type=modal"])
+modes = read_csv(out + "/modes.csv")
+E, I, l_rod = 2.1e11, 0.05 ** 4 / 12, 2 * L
+f_ref = math.sqrt(3 * E * I / (l_rod ** 3 * (20.0 + 0.2357 * 7850 * 0.05 ** 2 * l_rod))) / (2 * math.pi)
+ctx.check("modal: first frequency (Hz) = the rod clamped at the sticking block", modes["frequency"][0],
+          f_ref, rel=0.02)
+
 # -- refusals -------------------------------------------------------------------
 def refused(tag, sets, expected):
     _, p = ctx.run(prm, tag, sets, expect_failure=True)
@@ -127,6 +180,9 @@ refused("frictionless", geometry(20, "0") + ["Analysis/Type=static"],
         "hati: error: static analysis: the stiffness matrix is singular: the model can move as a "
         "rigid body (check the supports): a rigid translation along y costs no strain energy "
         "and no closed contact holds it")
+refused("event_driven", ["Time integration/Method=event-driven"],
+        "hati: error: Time integration/Method = event-driven: the contact 'ga' has Coulomb "
+        "friction (mu > 0), which the event-driven reference does not handle; use CD-Lagrange")
 refused("mu_negative", geometry(20, "0, mu=-0.1"),
         "hati: error: Model/Frame/Contacts: contact 'ga': mu=-0.1: expected the friction "
         "coefficient, a number >= 0")
