@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 namespace hati
@@ -319,12 +320,33 @@ std::vector<double> closed_contact_forces(const DiscreteSystem &system,
   return forces;
 }
 
+/** Whether rows @p a and @p b are parallel on the free DoFs (the same constraint). */
+bool parallel_rows(const SparseRow &a, const SparseRow &b, const std::vector<bool> &fixed)
+{
+  std::map<types::global_dof_index, double> ca, cb;
+  for (unsigned int j = 0; j < a.dofs.size(); ++j)
+    if (!fixed[a.dofs[j]] && a.coefficients[j] != 0.)
+      ca[a.dofs[j]] += a.coefficients[j];
+  for (unsigned int j = 0; j < b.dofs.size(); ++j)
+    if (!fixed[b.dofs[j]] && b.coefficients[j] != 0.)
+      cb[b.dofs[j]] += b.coefficients[j];
+  if (ca.empty() || ca.size() != cb.size())
+    return false;
+  const double ratio = cb.begin()->second / ca.begin()->second;
+  for (auto ia = ca.begin(), ib = cb.begin(); ia != ca.end(); ++ia, ++ib)
+    if (ia->first != ib->first ||
+        std::abs(ib->second - ratio * ia->second) > 1e-12 * std::abs(ib->second))
+      return false;
+  return true;
+}
+
 /**
  * The tangent rows of the closed contacts with friction (not the pairs with
  * a clearance, which do not touch), appended to @p held with a zero
  * right-hand side: per closed row with friction, its index in `closed`,
  * the index of its first tangent row in @p held and their number (tangent
- * rows on fixed DoFs only are left out).
+ * rows on fixed DoFs only, or parallel to a row held already, are left
+ * out).
  */
 std::vector<std::array<unsigned int, 3>>
 sticking_tangents(const DiscreteSystem &system,
@@ -346,6 +368,11 @@ sticking_tangents(const DiscreteSystem &system,
         free_dof = free_dof || !system.fixed[dof];
       if (!free_dof)
         continue; // a tangent direction a support holds already
+      bool parallel = false;
+      for (const SparseRow *h : held)
+        parallel = parallel || parallel_rows(*h, t, system.fixed);
+      if (parallel)
+        continue; // held already, e.g. by a wheel's centred flange pair
       held.push_back(&t);
       held_rhs.push_back(0.);
     }
