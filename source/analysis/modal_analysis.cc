@@ -196,11 +196,26 @@ struct ContactElimination
 
   explicit ContactElimination(const DiscreteSystem &system)
   {
-    const std::vector<bool> &fixed = system.fixed;
     for (const ContactRow &row : system.contacts)
     {
       if (row.initial_gap != 0.)
         continue; // open: a contact with a positive gap does not act on small vibrations
+      eliminate(system.fixed, row, true);
+      // a closed contact with friction sticks: it also holds its tangent
+      // directions (A9, doc/theory.md A9), not a rolling axis
+      if (row.frictional())
+        for (const SparseRow &tangent : row.tangents)
+          eliminate(system.fixed, tangent, false);
+    }
+  }
+
+  /**
+   * Eliminate the constraint `row U = 0` (see the class); @p count: a
+   * contact row (n_closed, n_redundant), not a tangent row of friction.
+   */
+  void eliminate(const std::vector<bool> &fixed, const SparseRow &row, const bool count)
+  {
+    {
       std::map<unsigned int, double> a;
       double scale = 0.;
       for (unsigned int j = 0; j < row.dofs.size(); ++j)
@@ -218,8 +233,8 @@ struct ContactElimination
             a[master] += c * cm;
       }
       if (scale == 0.)
-        continue; // only fixed DoFs: nothing to hold
-      ++n_closed;
+        return; // only fixed DoFs: nothing to hold
+      n_closed += count ? 1 : 0;
       unsigned int pivot = numbers::invalid_unsigned_int;
       double largest = 0.;
       for (const auto &[dof, c] : a)
@@ -230,8 +245,8 @@ struct ContactElimination
         }
       if (pivot == numbers::invalid_unsigned_int)
       {
-        ++n_redundant;
-        continue;
+        n_redundant += count ? 1 : 0;
+        return;
       }
       std::vector<std::pair<unsigned int, double>> expression;
       for (const auto &[dof, c] : a)

@@ -13,7 +13,9 @@
 #include <hati/linear_algebra/direct_solver.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 namespace hati
@@ -54,7 +56,7 @@ void residual(const SparseMatrix<double> &K,
  * without straining. Round-off scale: sum_j |K_ij| |r_j| per row.
  */
 void check_rigid_translations(const DiscreteSystem &system,
-                              const std::vector<unsigned int> &closed)
+                              const std::vector<const SparseRow *> &closed)
 {
   const char *direction[3] = {"x", "y", "z"};
   const unsigned int n = system.n_dofs();
@@ -87,9 +89,9 @@ void check_rigid_translations(const DiscreteSystem &system,
       continue;
     // a closed contact whose row sees the translation holds it
     bool held = false;
-    for (const unsigned int k : closed)
+    for (const SparseRow *row : closed)
     {
-      const ContactRow &c = system.contacts[k];
+      const SparseRow &c = *row;
       double lr = 0.;
       for (unsigned int j = 0; j < c.dofs.size(); ++j)
         if (!system.fixed[c.dofs[j]])
@@ -124,8 +126,8 @@ bool opposite_rows(const ContactRow &a, const ContactRow &b)
 std::vector<double> solve_closed(const DiscreteSystem &system,
                                  const SparseMatrix<double> &K,
                                  const Vector<double> &F,
-                                 const std::vector<unsigned int> &closed,
-                                 const std::vector<unsigned int> &centred,
+                                 const std::vector<const SparseRow *> &closed,
+                                 const std::vector<double> &closed_rhs,
                                  Vector<double> &U)
 {
   const unsigned int n = system.n_dofs(), m = closed.size(), N = n + m;
@@ -136,7 +138,7 @@ std::vector<double> solve_closed(const DiscreteSystem &system,
       dsp.add(i, it->column());
   for (unsigned int r = 0; r < m; ++r)
   {
-    const ContactRow &c = system.contacts[closed[r]];
+    const SparseRow &c = *closed[r];
     dsp.add(n + r, n + r);
     for (const auto dof : c.dofs)
       if (!fixed[dof])
@@ -156,17 +158,14 @@ std::vector<double> solve_closed(const DiscreteSystem &system,
     b[i] = F[i];
   for (unsigned int k = 0; k < m; ++k)
   {
-    const ContactRow &c = system.contacts[closed[k]];
+    const SparseRow &c = *closed[k];
     for (unsigned int j = 0; j < c.dofs.size(); ++j)
       if (!fixed[c.dofs[j]])
       {
         A.add(n + k, c.dofs[j], c.coefficients[j]);
         A.add(c.dofs[j], n + k, c.coefficients[j]);
       }
-    // a two-sided pair with a clearance is held where it is (L U = 0)
-    const bool held_centred =
-        std::find(centred.begin(), centred.end(), closed[k]) != centred.end();
-    b[n + k] = held_centred ? 0. : -c.initial_gap;
+    b[n + k] = closed_rhs[k];
   }
   DirectSolver solver;
   solver.factorize(A,
@@ -321,6 +320,102 @@ std::vector<double> closed_contact_forces(const DiscreteSystem &system,
   return forces;
 }
 
+/** Whether rows @p a and @p b are parallel on the free DoFs (the same constraint). */
+bool parallel_rows(const SparseRow &a, const SparseRow &b, const std::vector<bool> &fixed)
+{
+  std::map<types::global_dof_index, double> ca, cb;
+  for (unsigned int j = 0; j < a.dofs.size(); ++j)
+    if (!fixed[a.dofs[j]] && a.coefficients[j] != 0.)
+      ca[a.dofs[j]] += a.coefficients[j];
+  for (unsigned int j = 0; j < b.dofs.size(); ++j)
+    if (!fixed[b.dofs[j]] && b.coefficients[j] != 0.)
+      cb[b.dofs[j]] += b.coefficients[j];
+  if (ca.empty() || ca.size() != cb.size())
+    return false;
+  const double ratio = cb.begin()->second / ca.begin()->second;
+  for (auto ia = ca.begin(), ib = cb.begin(); ia != ca.end(); ++ia, ++ib)
+    if (ia->first != ib->first ||
+        std::abs(ib->second - ratio * ia->second) > 1e-12 * std::abs(ib->second))
+      return false;
+  return true;
+}
+
+/**
+ * The tangent rows of the closed contacts with friction (not the pairs with
+ * a clearance, which do not touch), appended to @p held with a zero
+ * right-hand side: per closed row with friction, its index in `closed`,
+ * the index of its first tangent row in @p held and their number (tangent
+ * rows on fixed DoFs only, or parallel to a row held already, are left
+ * out).
+ */
+std::vector<std::array<unsigned int, 3>>
+sticking_tangents(const DiscreteSystem &system,
+                  const ClosedContacts &contacts,
+                  std::vector<const SparseRow *> &held,
+                  std::vector<double> &held_rhs)
+{
+  std::vector<std::array<unsigned int, 3>> sticking;
+  for (unsigned int r = 0; r < contacts.closed.size(); ++r)
+  {
+    const ContactRow &c = system.contacts[contacts.closed[r]];
+    if (!c.frictional() || contacts.is_centred(contacts.closed[r]))
+      continue;
+    const unsigned int first = held.size();
+    for (const SparseRow &t : c.tangents)
+    {
+      bool free_dof = false;
+      for (const auto dof : t.dofs)
+        free_dof = free_dof || !system.fixed[dof];
+      if (!free_dof)
+        continue; // a tangent direction a support holds already
+      bool parallel = false;
+      for (const SparseRow *h : held)
+        parallel = parallel || parallel_rows(*h, t, system.fixed);
+      if (parallel)
+        continue; // held already, e.g. by a wheel's centred flange pair
+      held.push_back(&t);
+      held_rhs.push_back(0.);
+    }
+    sticking.push_back({{r, first, static_cast<unsigned int>(held.size()) - first}});
+  }
+  return sticking;
+}
+
+/**
+ * Coulomb's cone at the sticking closed contacts (A9): `||lambda_t|| <= mu
+ * |lambda_n|` with the multipliers @p lambda of solve_closed(); throws a
+ * one-line error naming the first contact where the static state would
+ * slide.
+ */
+void check_static_friction(const DiscreteSystem &system,
+                           const ClosedContacts &contacts,
+                           const std::vector<std::array<unsigned int, 3>> &sticking,
+                           const std::vector<double> &lambda)
+{
+  double largest = 0.;
+  for (const double l : lambda)
+    largest = std::max(largest, std::abs(l));
+  for (const auto &[r, first, count] : sticking)
+  {
+    const ContactRow &c = system.contacts[contacts.closed[r]];
+    double t2 = 0.;
+    for (unsigned int t = 0; t < count; ++t)
+      t2 += lambda[first + t] * lambda[first + t];
+    const double tangential = std::sqrt(t2), normal = std::abs(lambda[r]);
+    if (tangential > c.friction * normal + 1e-12 * largest)
+    {
+      std::ostringstream message;
+      message << "static analysis: the closed contact '" << c.name
+              << "' does not stick: its tangential force " << tangential
+              << " N exceeds mu times its normal force, " << c.friction << " x " << normal
+              << " = " << c.friction * normal
+              << " N (Coulomb friction, mu = " << c.friction
+              << "): there is no static state on it (support it or raise mu)";
+      AssertThrow(false, ExcMessage(message.str()));
+    }
+  }
+}
+
 /**
  * K U = F by one Amesos_Klu factorisation (it stops at an exactly zero
  * pivot), then the solve and up to two steps of iterative refinement with it.
@@ -386,12 +481,25 @@ void solve_iterative(const DiscreteSystem &system,
 }
 
 /**
- * K U = F with the closed contacts @p contacts (solve_closed()) or without
- * (direct or iterative), the residual checked; @p K has its fixed DoFs
- * decoupled.
+ * The rows a static solve holds: the closed contacts, then the tangent rows
+ * of the closed contacts with friction, which stick (A9), with their
+ * right-hand sides, and where each sticking contact's tangents are.
+ */
+struct HeldRows
+{
+  std::vector<const SparseRow *> rows;
+  std::vector<double> rhs;
+  std::vector<std::array<unsigned int, 3>> sticking;
+};
+
+/**
+ * K U = F with the held rows @p held (solve_closed(), Coulomb's cone checked
+ * at the sticking contacts) or without (direct or iterative), the residual
+ * checked; @p K has its fixed DoFs decoupled.
  */
 void solve_linear(const DiscreteSystem &system,
                   const ClosedContacts &contacts,
+                  const HeldRows &held,
                   const SparseMatrix<double> &K,
                   const Vector<double> &F,
                   const std::string &linear_solver,
@@ -404,8 +512,9 @@ void solve_linear(const DiscreteSystem &system,
   if (!contacts.closed.empty())
   {
     const std::vector<double> lambda =
-        solve_closed(system, K, F, contacts.closed, contacts.centred, U);
+        solve_closed(system, K, F, held.rows, held.rhs, U);
     const std::vector<double> forces = closed_contact_forces(system, contacts, lambda, F);
+    check_static_friction(system, contacts, held.sticking, lambda);
     if (contact_forces != nullptr)
       *contact_forces = forces;
     return;
@@ -446,6 +555,7 @@ constexpr unsigned int max_rope_iterations = 50;
  */
 void solve_with_ropes(const DiscreteSystem &system,
                       const ClosedContacts &contacts,
+                      const HeldRows &held,
                       const Vector<double> &F,
                       const std::string &linear_solver,
                       Vector<double> &U,
@@ -474,7 +584,7 @@ void solve_with_ropes(const DiscreteSystem &system,
     for (unsigned int i = 0; i < n; ++i)
       if (fixed[i])
         Ft[i] = 0.;
-    solve_linear(system, contacts, K, Ft, linear_solver, U_next, contact_forces);
+    solve_linear(system, contacts, held, K, Ft, linear_solver, U_next, contact_forces);
     du = 0.;
     for (unsigned int i = 0; i < n; ++i)
       du += fixed[i] ? 0. : (U_next[i] - U[i]) * (U_next[i] - U[i]);
@@ -523,7 +633,17 @@ void solve_static(const DiscreteSystem &system,
               ExcMessage(singular_message + ": the model has no stiffness."));
 
   const ClosedContacts contacts(system);
-  check_rigid_translations(system, contacts.closed);
+  // the rows held: the closed contacts, `L U = -g0` (a two-sided pair with a
+  // clearance held where it is, L U = 0), then the tangent rows of the
+  // closed contacts with friction, which stick (A9): `T U = 0`
+  HeldRows held;
+  for (const unsigned int k : contacts.closed)
+  {
+    held.rows.push_back(&system.contacts[k]);
+    held.rhs.push_back(contacts.is_centred(k) ? 0. : -system.contacts[k].initial_gap);
+  }
+  held.sticking = sticking_tangents(system, contacts, held.rows, held.rhs);
+  check_rigid_translations(system, held.rows);
 
   Vector<double> F(n);
   if (constant_loads_only)
@@ -536,13 +656,13 @@ void solve_static(const DiscreteSystem &system,
 
   if (!system.ropes.empty())
   {
-    solve_with_ropes(system, contacts, F, linear_solver, U, contact_forces);
+    solve_with_ropes(system, contacts, held, F, linear_solver, U, contact_forces);
     return;
   }
   // K with the fixed DoFs decoupled (positive diagonal, no couplings)
   SparseMatrix<double> K(system.stiffness_pattern);
   K.copy_from(system.stiffness);
   decouple_fixed_dofs(K, fixed);
-  solve_linear(system, contacts, K, F, linear_solver, U, contact_forces);
+  solve_linear(system, contacts, held, K, F, linear_solver, U, contact_forces);
 }
 } // namespace hati

@@ -123,14 +123,35 @@ void declare_masses_contacts_and_mesh(ParameterHandler &prm)
                     "ratio, 0 < lower < upper. Default 0.5-30 Hz: the band of crane "
                     "seismic response (rigid-body sway of the hoisted load to the "
                     "local girder modes; floor spectra rarely hold energy above 30 Hz).");
-  prm.declare_entry("Travel",
-                    "braked",
-                    Patterns::Selection("braked|free"),
-                    "braked: the crane wheels are held along the runway (X) and the "
-                    "trolley wheels tied to their girder nodes along Y (two-sided "
-                    "contacts without clearance, trolley_wheel_<i>_travel); free: both "
-                    "roll freely (then a static state along X and Y does not exist: "
-                    "use Initial state = given).");
+  prm.declare_entry(
+      "Travel",
+      "braked",
+      Patterns::Selection("braked|free|tied"),
+      "How the crane and the trolley are held along their travel (doc/user_guide.md "
+      "3.4). braked (default): Coulomb friction (A9) with the Wheel friction "
+      "coefficient at the wheel contacts; the Braked crane wheels hold in every "
+      "direction of the rail's plane, the other crane wheels roll freely along the "
+      "runway (X; friction only across it), the four trolley wheels are braked. "
+      "free: every wheel rolls along its rail (crane wheels along X, trolley wheels "
+      "along Y), friction only across it (then a static state along X and Y does "
+      "not exist: use Initial state = given). tied: the crane wheels are held along "
+      "the runway (X) by supports, even when lifted off, and the trolley wheels tied "
+      "to their girder nodes along Y (two-sided contacts without clearance, "
+      "trolley_wheel_<i>_travel); no friction (the paper's case, the results before "
+      "friction).");
+  prm.declare_entry("Braked crane wheels",
+                    "one per end carriage",
+                    Patterns::Selection("one per end carriage|all|none"),
+                    "Travel = braked: which crane wheels are braked (the others roll "
+                    "along the runway). one per end carriage (default: one driven and "
+                    "braked wheel per end carriage, the usual central or twin drive): "
+                    "crane_wheel_1 and crane_wheel_3; all; none (all roll).");
+  prm.declare_entry("Wheel friction coefficient",
+                    "0.15",
+                    Patterns::Double(0., 2.),
+                    "Coulomb friction coefficient mu (-) of the wheel contacts with "
+                    "Travel = braked or free, from 0 to 2. Default 0.15, steel wheel "
+                    "on steel rail (doc/crane_data.md section 12).");
   prm.declare_entry("Crane wheels",
                     "contacts",
                     Patterns::Selection("contacts|pinned"),
@@ -304,6 +325,8 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
                          "got " +
                          prm.get("Damping band")));
   travel = prm.get("Travel");
+  braked_crane_wheels = prm.get("Braked crane wheels");
+  wheel_friction = prm.get_double("Wheel friction coefficient");
   crane_wheels = prm.get("Crane wheels");
   element_length = positive("Element length");
   explicit_element_length = positive("Explicit element length");

@@ -255,10 +255,10 @@ void add_trolley(const CraneParameters &p, FrameDescription &f)
   f.ropes.push_back(rope);
 }
 
-/** Supports: braked crane wheels along the runway; pinned wheels. */
+/** Supports: tied crane wheels along the runway; pinned wheels. */
 void add_supports(const CraneParameters &p, FrameDescription &f)
 {
-  if (p.travel == "braked" || p.crane_wheels == "pinned")
+  if (p.travel == "tied" || p.crane_wheels == "pinned")
     for (unsigned int k = 1; k <= 4; ++k)
     {
       FrameDescription::Support s;
@@ -273,14 +273,29 @@ void add_supports(const CraneParameters &p, FrameDescription &f)
 /** The wheel contacts of the crane wheels on the rails and the trolley wheels. */
 void add_wheel_contacts(const CraneParameters &p, FrameDescription &f)
 {
+  // Travel = braked | free: Coulomb friction at the vertical wheel contacts,
+  // a wheel that is not braked rolls along its rail (rolls=, A9)
+  const bool friction = p.travel != "tied";
+  auto crane_wheel_braked = [&](const unsigned int k)
+  {
+    return p.travel == "braked" &&
+           (p.braked_crane_wheels == "all" ||
+            (p.braked_crane_wheels == "one per end carriage" && (k == 1 || k == 3)));
+  };
   auto contact = [&](const std::string &name,
                      const std::string &node_name,
                      const std::string &other,
                      const Tensor<1, 3> &normal,
                      const double gap,
-                     const bool two_sided)
+                     const bool two_sided,
+                     const int rolls = -2)
   {
     FrameDescription::NodeContact c;
+    if (friction && rolls > -2)
+    {
+      c.friction = p.wheel_friction;
+      c.rolls = rolls;
+    }
     c.name = name;
     c.node = node_name;
     c.other_node = other;
@@ -294,16 +309,17 @@ void add_wheel_contacts(const CraneParameters &p, FrameDescription &f)
   for (unsigned int k = 1; k <= 4 && p.crane_wheels == "contacts"; ++k)
   {
     const std::string cw = "crane_wheel_" + std::to_string(k);
-    contact(cw, "cw" + std::to_string(k), "", ez, 0., false);
+    contact(
+        cw, "cw" + std::to_string(k), "", ez, 0., false, crane_wheel_braked(k) ? -1 : 0);
     contact(cw + "_lateral", "cw" + std::to_string(k), "", ey, p.flange_clearance, true);
   }
   for (unsigned int k = 1; k <= 4; ++k)
   {
     const std::string tw = "trolley_wheel_" + std::to_string(k),
                       wn = "tw" + std::to_string(k), rn = "rail_" + std::to_string(k);
-    contact(tw, wn, rn, ez, 0., false);
+    contact(tw, wn, rn, ez, 0., false, p.travel == "braked" ? -1 : 1);
     contact(tw + "_lateral", wn, rn, ex, p.flange_clearance, true);
-    if (p.travel == "braked")
+    if (p.travel == "tied")
       contact(tw + "_travel", wn, rn, ey, 0., true);
   }
 }

@@ -91,21 +91,28 @@ void extract_subsystem(const DiscreteSystem &full,
   for (const auto &c : full.contacts)
   {
     ContactRow row = c;
-    row.dofs.clear();
-    row.coefficients.clear();
-    for (unsigned int i = 0; i < c.dofs.size(); ++i)
+    // the normal row and the tangent rows of friction (A9) alike
+    auto renumber = [&](const SparseRow &from, SparseRow &to)
     {
-      AssertThrow(local[c.dofs[i]] >= 0 || full.fixed[c.dofs[i]],
-                  ExcMessage("Model/Decomposition: the contact '" + c.name +
-                             "' lies in the implicit subdomain; contacts need the "
-                             "explicit CD-Lagrange integrator: put its node in the "
-                             "Explicit region or the Explicit members"));
-      if (local[c.dofs[i]] >= 0)
+      to.dofs.clear();
+      to.coefficients.clear();
+      for (unsigned int i = 0; i < from.dofs.size(); ++i)
       {
-        row.dofs.push_back(local[c.dofs[i]]);
-        row.coefficients.push_back(c.coefficients[i]);
+        AssertThrow(local[from.dofs[i]] >= 0 || full.fixed[from.dofs[i]],
+                    ExcMessage("Model/Decomposition: the contact '" + c.name +
+                               "' lies in the implicit subdomain; contacts need the "
+                               "explicit CD-Lagrange integrator: put its node in the "
+                               "Explicit region or the Explicit members"));
+        if (local[from.dofs[i]] >= 0)
+        {
+          to.dofs.push_back(local[from.dofs[i]]);
+          to.coefficients.push_back(from.coefficients[i]);
+        }
       }
-    }
+    };
+    renumber(c, row);
+    for (unsigned int t = 0; t < c.tangents.size(); ++t)
+      renumber(c.tangents[t], row.tangents[t]);
     sub.contacts.push_back(row);
   }
 

@@ -75,6 +75,14 @@ void DiscreteSystem::fill_default_mass_influence()
   }
 }
 
+bool has_friction(const std::vector<ContactRow> &contacts)
+{
+  for (const auto &c : contacts)
+    if (c.frictional())
+      return true;
+  return false;
+}
+
 void check_finite(const DiscreteSystem &system)
 {
   auto finite = [](const SparseMatrix<double> &a)

@@ -444,6 +444,28 @@ void Frame::add_contacts(const CommonModelParameters &common,
         }
       row.initial_gap = c.two_sided ? 0.5 * c.gap : c.gap;
       row.restitution = c.restitution >= 0. ? c.restitution : common.restitution;
+      // Coulomb friction (A9): the rows of the tangential relative velocity
+      // t . (u_node - u_other), the same for both sides of a clearance
+      if (c.friction > 0.)
+      {
+        row.friction = c.friction;
+        for (const auto &t : contact_tangent_directions(c.normal, c.rolls))
+        {
+          SparseRow tangent;
+          for (unsigned int d = 0; d < 3; ++d)
+            if (t[d] != 0.)
+            {
+              tangent.dofs.push_back(node_dofs.at(c.node)[d]);
+              tangent.coefficients.push_back(t[d]);
+              if (!c.other_node.empty())
+              {
+                tangent.dofs.push_back(node_dofs.at(c.other_node)[d]);
+                tangent.coefficients.push_back(-t[d]);
+              }
+            }
+          row.tangents.push_back(tangent);
+        }
+      }
       system.contacts.push_back(row);
     }
   }

@@ -259,9 +259,40 @@ void validate_contacts(const FrameDescription &d, const std::set<std::string> &h
     require(c.restitution <= 1.,
             "Contacts",
             contact + ": the restitution coefficient must be in [0, 1]");
+    require(std::isfinite(c.friction) && c.friction >= 0.,
+            "Contacts",
+            contact + ": the friction coefficient mu must be a finite number >= 0");
+    require(c.rolls < 0 || !contact_tangent_directions(c.normal, c.rolls).empty(),
+            "Contacts",
+            contact + ": the rolling axis (rolls=) lies along the contact normal; it "
+                      "must lie in the contact plane");
   }
 }
 } // namespace
+
+std::vector<Tensor<1, 3>> contact_tangent_directions(const Tensor<1, 3> &normal,
+                                                     const int rolls)
+{
+  const Tensor<1, 3> n = normal / normal.norm();
+  if (rolls >= 0)
+  {
+    Tensor<1, 3> axis;
+    axis[rolls] = 1.;
+    const Tensor<1, 3> t = cross_product_3d(n, axis);
+    if (t.norm() < 1e-12)
+      return {};
+    return {t / t.norm()};
+  }
+  unsigned int least = 0;
+  for (unsigned int d = 1; d < 3; ++d)
+    if (std::abs(n[d]) < std::abs(n[least]))
+      least = d;
+  Tensor<1, 3> t1;
+  t1[least] = 1.;
+  t1 -= (t1 * n) * n;
+  t1 /= t1.norm();
+  return {t1, cross_product_3d(n, t1)};
+}
 
 void FrameDescription::add_node(const std::string &name, const Point<3> &x)
 {

@@ -175,7 +175,12 @@ void FrameParameters::declare_parameters(ParameterHandler &prm)
       "clearance c (m, >= 0, e.g. a wheel flange's lateral play): two rows with "
       "normals n and -n and initial gaps c / 2, both under the one name. Rows sharing "
       "a name are summed in contacts.csv. With Method = HATI a node-to-node contact "
-      "is explicit if either node touches an explicit cell.");
+      "is explicit if either node touches an explicit cell. Trailing options, "
+      "in any order: 'mu=<coefficient>' Coulomb friction (-, >= 0, default 0: "
+      "frictionless; CD-Lagrange and the explicit subdomain of HATI; static and "
+      "modal analyses hold a closed frictional contact in its tangential "
+      "directions) and 'rolls=<x|y|z>' the global axis, in the contact plane, "
+      "along which the node rolls freely (no friction along it).");
   prm.declare_entry(
       "Ropes",
       "",
@@ -494,6 +499,54 @@ FrameDescription::RopeData parse_rope(const Item &it)
 }
 
 /**
+ * The trailing options of a Contacts item, in any order, taken off the end
+ * of @p v: 'two-sided', 'mu=<coefficient>' (Coulomb friction, A9) and
+ * 'rolls=<x|y|z>' (the axis along which the node rolls freely).
+ */
+void parse_contact_options(const Item &it,
+                           std::vector<std::string> &v,
+                           FrameDescription::NodeContact &c)
+{
+  const std::string contact = "Model/Frame/Contacts: contact '" + it.name + "': ";
+  while (!v.empty())
+  {
+    const std::string &last = v.back();
+    const auto eq = last.find('=');
+    const std::string key = Utilities::trim(last.substr(0, eq)),
+                      value = eq == std::string::npos
+                                  ? ""
+                                  : Utilities::trim(last.substr(eq + 1));
+    if (last == "two-sided")
+      c.two_sided = true;
+    else if (eq != std::string::npos && key == "mu")
+    {
+      char *end = nullptr;
+      c.friction = std::strtod(value.c_str(), &end);
+      AssertThrow(!value.empty() && *end == '\0' && std::isfinite(c.friction) &&
+                      c.friction >= 0.,
+                  ExcMessage(contact + "mu=" + value +
+                             ": expected the friction coefficient, a number >= 0"));
+    }
+    else if (eq != std::string::npos && key == "rolls")
+    {
+      AssertThrow(value == "x" || value == "y" || value == "z",
+                  ExcMessage(contact + "rolls=" + value +
+                             ": expected the rolling axis x, y or z"));
+      c.rolls = value[0] - 'x';
+    }
+    else if (eq != std::string::npos)
+    {
+      AssertThrow(false,
+                  ExcMessage(contact + "unknown option '" + last +
+                             "', expected mu=<coefficient> or rolls=<x|y|z>"));
+    }
+    else
+      break;
+    v.pop_back();
+  }
+}
+
+/**
  * One item of Contacts: 'node, nx, ny, nz, gap[, e][, two-sided]' (rigid
  * plane) or 'node, other node, nx, ny, nz, gap[, e][, two-sided]' (node to
  * node, recognised by the second value naming a node of @p d).
@@ -503,18 +556,16 @@ FrameDescription::NodeContact parse_contact(const Item &it, const FrameDescripti
   std::vector<std::string> v = it.values;
   FrameDescription::NodeContact c;
   c.name = it.name;
-  if (!v.empty() && v.back() == "two-sided")
-  {
-    c.two_sided = true;
-    v.pop_back();
-  }
+  parse_contact_options(it, v, c);
   const bool node_to_node = v.size() >= 2 && d.nodes.count(v[1]) > 0 && !is_number(v[1]);
   const unsigned int first = node_to_node ? 2 : 1; // index of nx
-  AssertThrow(v.size() == first + 4 || v.size() == first + 5,
-              ExcMessage("Model/Frame/Contacts: item '" + it.name + "' has " +
-                         std::to_string(it.values.size()) +
-                         " values, expected 'node, nx, ny, nz, gap[, e][, two-sided]' "
-                         "or 'node, other node, nx, ny, nz, gap[, e][, two-sided]'"));
+  AssertThrow(
+      v.size() == first + 4 || v.size() == first + 5,
+      ExcMessage("Model/Frame/Contacts: item '" + it.name + "' has " +
+                 std::to_string(it.values.size()) +
+                 " values, expected 'node, nx, ny, nz, gap[, e][, two-sided][, mu=..][, "
+                 "rolls=..]' or 'node, other node, nx, ny, nz, gap[, e][, "
+                 "two-sided][, mu=..][, rolls=..]'"));
   c.node = v[0];
   if (node_to_node)
     c.other_node = v[1];

@@ -129,6 +129,57 @@ void ContactStatistics::add_step(const double time,
   }
 }
 
+void ContactStatistics::add_friction_step(const double time,
+                                          const double dt,
+                                          const std::vector<double> &tangential,
+                                          const std::vector<double> &slip)
+{
+  const unsigned int ng = groups.size();
+  if (!friction)
+  {
+    friction = true;
+    group_tangential.assign(2 * ng, 0.);
+    group_slip.assign(ng, 0.);
+    friction_window.assign(ng * std::max(1UL, n_window), 0.);
+    friction_sum.assign(ng, 0.);
+  }
+  std::fill(group_tangential.begin(), group_tangential.end(), 0.);
+  std::fill(group_slip.begin(), group_slip.end(), 0.);
+  for (unsigned int k = 0; k < slip.size(); ++k)
+  {
+    const unsigned int g = group_of_row[k];
+    group_tangential[2 * g] += tangential[2 * k];
+    group_tangential[2 * g + 1] += tangential[2 * k + 1];
+    group_slip[g] = std::max(group_slip[g], slip[k]);
+  }
+  const unsigned long n = std::max(1UL, n_window);
+  const unsigned long slot = (n_steps - 1) % n;
+  for (unsigned int g = 0; g < ng; ++g)
+  {
+    Entry &e = groups[g];
+    e.slip_distance += group_slip[g] * dt;
+    const double impulse =
+        std::hypot(group_tangential[2 * g], group_tangential[2 * g + 1]);
+    // the same window as the mean contact force (summed afresh once per turn)
+    double &old = friction_window[g * n + slot];
+    friction_sum[g] += impulse - old;
+    old = impulse;
+    if (slot == n - 1)
+    {
+      double sum = 0.;
+      for (unsigned long i = 0; i < n; ++i)
+        sum += friction_window[g * n + i];
+      friction_sum[g] = sum;
+    }
+    const double force = friction_sum[g] / (n * dt);
+    if ((n_steps > n || !initially_closed[g]) && force > e.peak_friction_force)
+    {
+      e.peak_friction_force = force;
+      e.peak_friction_force_time = time;
+    }
+  }
+}
+
 SummaryValue ContactStatistics::json(const std::vector<std::string> &names) const
 {
   SummaryValue result = SummaryValue::object();
@@ -136,16 +187,20 @@ SummaryValue ContactStatistics::json(const std::vector<std::string> &names) cons
   {
     if (!names.empty() && std::find(names.begin(), names.end(), e.name) == names.end())
       continue;
-    result.set(e.name,
-               SummaryValue::object()
-                   .set("n_impacts", e.n_impacts)
-                   .set("peak_impact_force", e.peak_force)
-                   .set("peak_force_time", e.peak_force_time)
-                   .set("peak_impulse", e.peak_impulse)
-                   .set("peak_mean_force", e.peak_mean_force)
-                   .set("peak_mean_force_time", e.peak_mean_force_time)
-                   .set("uplift_time", e.uplift_time)
-                   .set("n_contact_loss_episodes", e.episodes.size()));
+    SummaryValue entry = SummaryValue::object()
+                             .set("n_impacts", e.n_impacts)
+                             .set("peak_impact_force", e.peak_force)
+                             .set("peak_force_time", e.peak_force_time)
+                             .set("peak_impulse", e.peak_impulse)
+                             .set("peak_mean_force", e.peak_mean_force)
+                             .set("peak_mean_force_time", e.peak_mean_force_time)
+                             .set("uplift_time", e.uplift_time)
+                             .set("n_contact_loss_episodes", e.episodes.size());
+    if (friction)
+      entry.set("slip_distance", e.slip_distance)
+          .set("peak_friction_force", e.peak_friction_force)
+          .set("peak_friction_force_time", e.peak_friction_force_time);
+    result.set(e.name, std::move(entry));
   }
   return result;
 }

@@ -25,6 +25,7 @@ OutputWriter::OutputWriter(RunDirectory &run,
                            const DiscreteSystem &system,
                            const Model &model)
     : run(run), dir(run.path()), system(system), model(model),
+      friction(has_friction(system.contacts)),
       last_flush(std::chrono::steady_clock::now()), last_pvd_sync(last_flush)
 {
   run.begin();
@@ -42,7 +43,10 @@ OutputWriter::OutputWriter(RunDirectory &run,
   history << '\n';
 
   contacts.open(run.open("contacts.csv"));
-  contacts << "time,contact,gap,normal_velocity,impulse,force,active\n";
+  contacts << "time,contact,gap,normal_velocity,impulse,force,active";
+  if (friction)
+    contacts << ",tangential_impulse,slip_velocity,state";
+  contacts << '\n';
   for (const auto &c : system.contacts)
   {
     auto it = std::find(contact_names.begin(), contact_names.end(), c.name);
@@ -56,7 +60,10 @@ OutputWriter::OutputWriter(RunDirectory &run,
   energy.open(run.open("energy.csv"));
   energy << "time,kinetic,internal,external_work,contact_work,dissipated,interface_work,"
             "total,balance_drift,kinetic_explicit,kinetic_implicit,internal_explicit,"
-            "internal_implicit,damping_stored\n";
+            "internal_implicit,damping_stored";
+  if (friction)
+    energy << ",friction_dissipated";
+  energy << '\n';
 
   const std::string header = model.section_forces_header();
   if (!header.empty())
@@ -112,12 +119,47 @@ void OutputWriter::write_contacts(const OutputState &s)
     ++n_rows[g];
     n_active[g] += s.active[k] ? 1 : 0;
   }
+  const bool with_friction = friction && s.friction_states.size() == s.gaps.size();
+  if (with_friction)
+    group_friction(s);
   for (unsigned int g = 0; g < ng; ++g)
+  {
     contacts << s.time << ',' << contact_names[g] << ',' << gap[g] << ','
              << vn[g] / n_rows[g] << ',' << imp[g] << ','
              << (s.impulse_duration > 0. ? imp[g] / s.impulse_duration : 0.) << ','
-             << n_active[g] << '\n';
+             << n_active[g];
+    if (with_friction)
+    {
+      static const char *const state_names[] = {"open", "stick", "slip"};
+      contacts << ',' << std::hypot(group_tangential[2 * g], group_tangential[2 * g + 1])
+               << ',' << group_slip[g] << ','
+               << state_names[static_cast<int>(group_state[g])];
+    }
+    contacts << '\n';
+  }
   flush_if_due();
+}
+
+void OutputWriter::group_friction(const OutputState &s)
+{
+  // per contact name: the tangential impulses summed (the rows of a name
+  // share their tangents), the largest slip velocity, and stick if a row
+  // sticks, else slip if a row slides, else open
+  const unsigned int ng = contact_names.size();
+  group_tangential.assign(2 * ng, 0.);
+  group_slip.assign(ng, 0.);
+  group_state.assign(ng, FrictionState::open);
+  for (unsigned int k = 0; k < s.gaps.size(); ++k)
+  {
+    const unsigned int g = contact_group[k];
+    group_tangential[2 * g] += s.tangential_impulses[2 * k];
+    group_tangential[2 * g + 1] += s.tangential_impulses[2 * k + 1];
+    group_slip[g] = std::max(group_slip[g], s.slip_velocities[k]);
+    const FrictionState f = s.friction_states[k];
+    if (f == FrictionState::stick ||
+        (f == FrictionState::slip && group_state[g] == FrictionState::open))
+      group_state[g] = f;
+  }
 }
 
 void OutputWriter::set_initial_contacts(const std::vector<double> &initial_gaps)
@@ -161,12 +203,16 @@ void OutputWriter::write_energy(const double time, const Energies &e)
                            std::abs(e.external_work),
                            std::abs(e.contact_work),
                            std::abs(e.interface_work),
-                           std::abs(e.damping_stored)});
+                           std::abs(e.damping_stored),
+                           std::abs(e.friction_dissipated)});
   energy << time << ',' << e.kinetic << ',' << e.internal << ',' << e.external_work << ','
          << e.contact_work << ',' << e.dissipated << ',' << e.interface_work << ','
          << total << ',' << last_drift << ',' << e.kinetic_explicit << ','
          << e.kinetic_implicit << ',' << e.internal_explicit << ',' << e.internal_implicit
-         << ',' << e.damping_stored << '\n';
+         << ',' << e.damping_stored;
+  if (friction)
+    energy << ',' << e.friction_dissipated;
+  energy << '\n';
   flush_if_due();
 }
 

@@ -33,8 +33,26 @@ template <class Integrator> unsigned int time_step_ratio(const Integrator &integ
 
 OutputState output_state(const CDLagrange &integrator)
 {
-  return contact_state(integrator, integrator.time_step());
+  OutputState s = contact_state(integrator, integrator.time_step());
+  if (integrator.friction().any())
+    integrator.friction().sample(integrator.velocity(),
+                                 s.impulses,
+                                 s.tangential_impulses,
+                                 s.slip_velocities,
+                                 s.friction_states);
+  return s;
 }
+
+/** Coulomb friction of an integrator (A9); nullptr for Newmark (no contacts). */
+const FrictionalContacts *friction_of(const CDLagrange &integrator)
+{
+  return &integrator.friction();
+}
+const FrictionalContacts *friction_of(const HATICoupling &integrator)
+{
+  return &integrator.friction();
+}
+const FrictionalContacts *friction_of(const Newmark &) { return nullptr; }
 
 OutputState output_state(const HATICoupling &integrator)
 {
@@ -161,6 +179,10 @@ private:
   double physical_energy_scale = 0.;
   /** The contact statistics and contacts.csv rows of every (micro) step. */
   WallClock statistics_clock;
+  /** With friction (A9): the record of a step for the statistics. */
+  const FrictionalContacts *const friction;
+  std::vector<double> step_tangential, step_slip;
+  std::vector<FrictionState> step_states;
 };
 
 std::vector<double> initial_gaps(const DiscreteSystem &system)
@@ -193,7 +215,10 @@ TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
                  initial_gaps(problem.system),
                  problem.output_parameters.contact_force_window),
       progress(problem.output_parameters.progress_interval, end_time),
-      watchdog(*problem.model, problem.system)
+      watchdog(*problem.model, problem.system),
+      friction(friction_of(integrator) && friction_of(integrator)->any()
+                   ? friction_of(integrator)
+                   : nullptr)
 {
   std::cout << "  " << n_steps << " steps of " << dt << " s to t = " << end_time << " s"
             << std::endl;
@@ -252,6 +277,11 @@ template <class Integrator> void TimeLoop<Integrator>::connect_micro_steps()
       const WallClock::Scope scope(statistics_clock);
       writer.track_contacts(sample.gaps, sample.impulses);
       statistics.add_step(sample.time, integrator.micro_time_step(), sample.impulses);
+      if (friction)
+        statistics.add_friction_step(sample.time,
+                                     integrator.micro_time_step(),
+                                     sample.tangential_impulses,
+                                     sample.slip_velocities);
       if (++micro_step % every_contact_row == 0)
       {
         contact_row.time = sample.time;
@@ -260,6 +290,9 @@ template <class Integrator> void TimeLoop<Integrator>::connect_micro_steps()
         contact_row.impulses = sample.impulses;
         contact_row.active = sample.active;
         contact_row.impulse_duration = integrator.micro_time_step();
+        contact_row.tangential_impulses = sample.tangential_impulses;
+        contact_row.slip_velocities = sample.slip_velocities;
+        contact_row.friction_states = sample.friction_states;
         writer.write_contacts(contact_row);
       }
     };
@@ -282,6 +315,15 @@ template <class Integrator> void TimeLoop<Integrator>::run(TimerOutput &timer)
         const WallClock::Scope scope(statistics_clock);
         writer.track_contacts(integrator.gaps(), integrator.impulses());
         statistics.add_step(integrator.time(), dt, integrator.impulses());
+        if (friction)
+        {
+          friction->sample(integrator.velocity(),
+                           integrator.impulses(),
+                           step_tangential,
+                           step_slip,
+                           step_states);
+          statistics.add_friction_step(integrator.time(), dt, step_tangential, step_slip);
+        }
       }
     if (step % every_history == 0 || (every_vtu > 0 && step % every_vtu == 0) ||
         step == n_steps)
@@ -341,6 +383,17 @@ void TimeLoop<Integrator>::add_contact_summary(SummaryEntries &summary)
   if constexpr (!std::is_same_v<Integrator, Newmark>)
     summary.emplace_back("wall_time_contacts", integrator.contact_seconds());
   summary.emplace_back("wall_time_contact_statistics", statistics_clock.seconds());
+  if (friction)
+  {
+    // the nonsmooth Gauss-Seidel of the frictional clusters (A9): never silent
+    summary.emplace_back("friction_iterations_max", friction->max_sweeps());
+    summary.emplace_back("friction_unconverged", friction->unconverged());
+    if (friction->unconverged() > 0)
+      problem.warn("Coulomb friction: " + std::to_string(friction->unconverged()) +
+                   " contact cluster solutions did not converge to the relative "
+                   "tolerance 1e-10 (nonsmooth Gauss-Seidel, at most 1000 sweeps); "
+                   "their impulses are the last iterate");
+  }
   summary.emplace_back("contacts", statistics.json());
   summary.emplace_back("contact_force_window",
                        problem.output_parameters.contact_force_window);

@@ -25,7 +25,7 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
     : system(system), dt(dt), a0(damping.a0), a1(damping.a1),
       c1((1. - 0.5 * damping.a0 * dt) / (1. + 0.5 * damping.a0 * dt)),
       c2(1. / (1. + 0.5 * damping.a0 * dt)), branches(maxwell, dt, system.n_dofs()),
-      rope_forces(system.ropes)
+      rope_forces(system.ropes), frictional_contacts(system.contacts)
 {
   const unsigned int n = system.n_dofs();
   AssertThrow(dt > 0. && std::isfinite(dt),
@@ -218,14 +218,33 @@ void CDLagrange::build_contacts()
                            "' acts only on fixed or massless degrees of freedom"));
     gap[k] = c.initial_gap + c.apply(U);
   }
+  // the DoFs a contact's impulse acts on: its row, and its tangent rows
+  // with friction (A9)
+  auto shares_dof = [&](const SparseRow &a, const SparseRow &b)
+  {
+    bool shared = false;
+    for (const auto d : a.dofs)
+      if (!system.fixed[d])
+        for (const auto e : b.dofs)
+          shared = shared || (d == e);
+    return shared;
+  };
   for (unsigned int k = 0; k < nc; ++k)
     for (unsigned int l = k + 1; l < nc; ++l)
     {
-      bool shared = false;
-      for (const auto d : system.contacts[k].dofs)
-        if (!system.fixed[d])
-          for (const auto e : system.contacts[l].dofs)
-            shared = shared || (d == e);
+      bool shared = shares_dof(system.contacts[k], system.contacts[l]);
+      if (frictional_contacts.any())
+      {
+        std::vector<const SparseRow *> rows_k{&system.contacts[k]},
+            rows_l{&system.contacts[l]};
+        for (const auto &t : system.contacts[k].tangents)
+          rows_k.push_back(&t);
+        for (const auto &t : system.contacts[l].tangents)
+          rows_l.push_back(&t);
+        for (const auto *a : rows_k)
+          for (const auto *b : rows_l)
+            shared = shared || shares_dof(*a, *b);
+      }
       if (shared)
       {
         coupled_with[k].push_back(l);
@@ -448,6 +467,7 @@ void CDLagrange::save(Snapshot &s) const
   s.time_dependent_work = time_dependent_work;
   s.dissipated = dissipated;
   s.ropes = rope_forces.state();
+  frictional_contacts.save(s.friction);
 }
 
 void CDLagrange::restore(const Snapshot &s)
@@ -468,6 +488,7 @@ void CDLagrange::restore(const Snapshot &s)
   dissipated = s.dissipated;
   if (rope_forces.active())
     rope_forces.set_state(s.ropes);
+  frictional_contacts.restore(s.friction);
 }
 
 void CDLagrange::apply_contacts()
@@ -479,6 +500,8 @@ void CDLagrange::apply_contacts()
   for (unsigned int k = 0; k < nc; ++k)
     if (lambda[k] != 0.)
       contact_work += 0.5 * system.contacts[k].apply(*V_prev) * lambda[k];
+  if (frictional_contacts.any())
+    frictional_contacts.begin_step(*V_prev);
 
   // (A4) active set from the position-level gap (or the prescribed one)
   active_list.clear();
@@ -511,6 +534,12 @@ void CDLagrange::apply_contacts()
         }
 
     const unsigned int m = cluster.size();
+    // (A9) a cluster with friction: nonsmooth Gauss-Seidel over its contacts
+    if (frictional_contacts.any() && frictional_contacts.frictional(cluster))
+    {
+      frictional_contacts.solve(cluster, minv, *V_prev, prescribed != nullptr, v, lambda);
+      continue;
+    }
     if (m == 1)
     {
       // a single contact: lambda = max(0, -q / W) (bilateral: -q / W)
@@ -580,6 +609,8 @@ void CDLagrange::apply_contacts()
   for (const unsigned int k : active_list)
     if (lambda[k] != 0.)
       contact_work += 0.5 * system.contacts[k].apply(*V_prev) * lambda[k];
+  if (frictional_contacts.any())
+    frictional_contacts.end_step(*V_prev);
 }
 
 std::vector<double> CDLagrange::normal_velocities() const
@@ -612,6 +643,7 @@ Energies CDLagrange::energies() const
   e.external_work = force * du + time_dependent_work;
   e.contact_work = contact_work;
   e.dissipated = dissipated;
+  e.friction_dissipated = -frictional_contacts.work();
   if (branches.active())
   {
     e.damping_stored = branches.stored_energy(system.stiffness);

@@ -88,11 +88,18 @@ EventDriven::EventDriven(const DiscreteSystem &system,
   lambda.assign(system.contacts.size(), 0.);
   is_active.assign(system.contacts.size(), false);
   for (const auto &c : system.contacts)
+  {
+    AssertThrow(!c.frictional(),
+                ExcMessage("Time integration/Method = event-driven: the contact '" +
+                           c.name +
+                           "' has Coulomb friction (mu > 0), which the event-driven "
+                           "reference does not handle; use CD-Lagrange"));
     AssertThrow(!c.bilateral,
                 ExcMessage("Time integration/Method = event-driven: the contact '" +
                            c.name +
                            "' is two-sided without clearance (bilateral), which the "
                            "event-driven reference does not handle; use CD-Lagrange"));
+  }
 
   check(SUNContext_Create(nullptr, &cvode->context), "SUNContext_Create");
   cvode->y = N_VNew_Serial(2 * n, cvode->context);

@@ -194,12 +194,15 @@ void HATICoupling::step()
 
   // the correction added by superposition, or the micro steps redone
   start = Clock::now();
-  if (same_active_set && superposition->superpose(ramp,
-                                                  delta_lambda,
-                                                  explicit_integrator,
-                                                  increments,
-                                                  contact_record,
-                                                  n_recorded))
+  // friction within reach of the ramp (A9) is not linear in the
+  // multiplier: those macro steps are redone with the full multiplier
+  if (same_active_set && !superposition->friction_in_reach() &&
+      superposition->superpose(ramp,
+                               delta_lambda,
+                               explicit_integrator,
+                               increments,
+                               contact_record,
+                               n_recorded))
   {
     if (after_micro_step)
       for (unsigned int j = 0; j < n_recorded; ++j)
@@ -276,6 +279,10 @@ void HATICoupling::take_sample(ContactSample &s) const
   s.normal_velocities.resize(contacts.size());
   for (unsigned int k = 0; k < contacts.size(); ++k)
     s.normal_velocities[k] = contacts[k].apply(V);
+  const FrictionalContacts &friction = explicit_integrator.friction();
+  if (friction.any())
+    friction.sample(
+        V, s.impulses, s.tangential_impulses, s.slip_velocities, s.friction_states);
 }
 
 const Vector<double> &HATICoupling::to_global(const Vector<double> &implicit_part,
@@ -309,6 +316,7 @@ Energies HATICoupling::energies() const
   r.internal = e.internal + i.internal;
   r.external_work = e.external_work + i.external_work;
   r.contact_work = e.contact_work;
+  r.friction_dissipated = e.friction_dissipated;
   r.dissipated = e.dissipated + i.dissipated;
   r.damping_stored = e.damping_stored + i.damping_stored;
   r.interface_work = interface_work;

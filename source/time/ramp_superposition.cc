@@ -63,12 +63,20 @@ void RampSuperposition::find_reach()
     for (const auto i : columns.rows())
       reach[i] = true;
   for (unsigned int c = 0; c < system.contacts.size(); ++c)
+  {
+    // the normal row, and with friction its tangent rows (A9)
+    bool in_reach = false;
     for (const auto d : system.contacts[c].dofs)
-      if (reach[d])
-      {
-        reach_contacts.push_back(c);
-        break;
-      }
+      in_reach = in_reach || reach[d];
+    for (const auto &t : system.contacts[c].tangents)
+      for (const auto d : t.dofs)
+        in_reach = in_reach || reach[d];
+    if (in_reach)
+    {
+      reach_contacts.push_back(c);
+      reach_friction = reach_friction || system.contacts[c].frictional();
+    }
+  }
   if (!damped)
     return;
 

@@ -71,8 +71,17 @@ public:
     double flange_clearance = 0.02;
     /** Newton's restitution coefficient of every wheel contact (-). */
     double wheel_restitution = 0.;
-    /** "braked" (crane wheels fixed along X, trolley tied along Y) or "free". */
+    /**
+     * "braked" (friction at the wheels: braked wheels hold, the others roll
+     * along their rail), "free" (every wheel rolls along its rail, friction
+     * across it) or "tied" (crane wheels fixed along X, trolley tied along
+     * Y, no friction).
+     */
     std::string travel = "braked";
+    /** Travel = braked: "one per end carriage", "all" or "none". */
+    std::string braked_crane_wheels = "one per end carriage";
+    /** Coulomb friction coefficient of the wheel contacts (-, A9). */
+    double wheel_friction = 0.15;
     /** "contacts" (on the runway rails) or "pinned" (held in X, Y, Z: paper case). */
     std::string crane_wheels = "contacts";
     /**

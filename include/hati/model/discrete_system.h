@@ -36,7 +36,26 @@ struct ContactRow : SparseRow
    * wheel): always active, its impulse of either sign (A5 as an equality).
    */
   bool bilateral = false;
+  /**
+   * Coulomb friction coefficient `mu` (-, A9, doc/theory.md A9); 0: a
+   * frictionless contact (the A5 LCP, tangents empty).
+   */
+  double friction = 0.;
+  /**
+   * Rows of the tangential relative velocity `u_t = T_k V` (A9): the
+   * tangent directions of the contact plane in which friction acts (two,
+   * or one when the node rolls freely along an axis of the plane), with the
+   * same DoFs as the normal row plus the other translations of its nodes.
+   * The tangential impulse acts on the structure as `T_k^T lambda_t`.
+   * Empty for a frictionless contact.
+   */
+  std::vector<SparseRow> tangents;
+  /** Whether the contact has friction (mu > 0 and a tangent row). */
+  bool frictional() const { return friction > 0. && !tangents.empty(); }
 };
+
+/** Whether a contact of @p contacts has friction (ContactRow::frictional()). */
+bool has_friction(const std::vector<ContactRow> &contacts);
 
 /**
  * A named point whose displacement and velocity components are written to

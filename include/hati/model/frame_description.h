@@ -31,6 +31,18 @@ using namespace dealii;
  * Errors name the `Model/Frame` entry that holds the wrong item, also for a
  * generated description: the entries are the frame's vocabulary.
  */
+/**
+ * The tangent directions in which the friction of a contact with the unit
+ * normal @p normal acts (A9, doc/theory.md A9): two orthonormal vectors
+ * `t1, t2` of the contact plane, `t1` along the global axis least aligned
+ * with the normal projected on the plane and `t2 = n x t1`; with a rolling
+ * axis @p rolls (0, 1, 2; -1: none) the one direction `n x e_rolls`
+ * (normalised), which excludes the axis. Empty if the rolling axis is along
+ * the normal (validate() refuses that).
+ */
+std::vector<Tensor<1, 3>> contact_tangent_directions(const Tensor<1, 3> &normal,
+                                                     const int rolls);
+
 struct FrameDescription
 {
   /** A straight member, or a chain of straight elements (mesh members). */
@@ -85,6 +97,13 @@ struct FrameDescription
     double restitution = -1.;
     /** Two rows, one per side of the clearance, both named `name`. */
     bool two_sided = false;
+    /** Coulomb friction coefficient mu (-, >= 0; 0: frictionless, A9). */
+    double friction = 0.;
+    /**
+     * The global axis (0, 1, 2 for x, y, z) along which the node rolls
+     * freely (no friction along it, `rolls=`); -1: none.
+     */
+    int rolls = -1;
   };
 
   /**

@@ -54,6 +54,14 @@ public:
     double peak_mean_force = 0., peak_mean_force_time = 0.;
     /** Total time without push after the first push (s). */
     double uplift_time = 0.;
+    /** With friction (A9): the accumulated slip `sum ||u_t|| dt` (m). */
+    double slip_distance = 0.;
+    /**
+     * With friction: the largest mean friction force (N), `sum ||lambda_t||`
+     * over the force window divided by its length (per step, / dt, without
+     * a window), and the end of that window (s).
+     */
+    double peak_friction_force = 0., peak_friction_force_time = 0.;
     /** Contact-loss episodes (start, end) in s; end < 0: still open. */
     std::vector<std::pair<double, double>> episodes;
   };
@@ -75,6 +83,17 @@ public:
    */
   void add_step(const double time, const double dt, const std::vector<double> &impulses);
 
+  /**
+   * With friction (A9), after add_step() of the same step: the tangential
+   * impulses @p tangential (N s, two per row) and the slip velocities
+   * @p slip (m/s per row) give each name's slip distance and peak friction
+   * force (the rows of a name share their tangents: their impulses are
+   * summed, the largest slip velocity counts). No allocation.
+   */
+  void add_friction_step(const double time,
+                         const double dt,
+                         const std::vector<double> &tangential,
+                         const std::vector<double> &slip);
   const std::vector<Entry> &entries() const { return groups; }
 
   /** `{"name": {"n_impacts": .., "peak_impact_force": .., "uplift_time": ..}, ...}`. */
@@ -98,6 +117,10 @@ private:
   double force_window = 0.;
   unsigned long n_window = 0;
   std::vector<double> window_impulses, window_sum;
+  // friction (A9): whether add_friction_step() was called, per-name scratch
+  // and the ring of the mean friction force
+  bool friction = false;
+  std::vector<double> group_tangential, group_slip, friction_window, friction_sum;
 };
 } // namespace hati
 

@@ -3,6 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <hati/contact/friction_solver.h>
 #include <hati/model/discrete_system.h>
 #include <hati/model/model.h>
 #include <hati/output/csv_file.h>
@@ -36,6 +37,13 @@ struct OutputState
   std::vector<bool> active;
   /** Duration over which the impulses act (s): dt for CD-Lagrange. */
   double impulse_duration = 0.;
+  /**
+   * With friction (A9; empty otherwise): the tangential impulses (N s, two
+   * per row, along its tangent rows), the slip velocity `||T_k V||` of each
+   * touching row (m/s, 0 when open or frictionless) and its state.
+   */
+  std::vector<double> tangential_impulses, slip_velocities;
+  std::vector<FrictionState> friction_states;
   /**
    * Whether write_history() also writes the contacts.csv rows (false when
    * they are written at another resolution with write_contacts(), HATI).
@@ -116,6 +124,8 @@ public:
 private:
   /** flush() when the buffers are large or 2 s have passed since the last one. */
   void flush_if_due();
+  /** The friction columns of write_contacts() per contact name (A9). */
+  void group_friction(const OutputState &state);
 
   RunDirectory &run;
   const std::string dir;
@@ -127,6 +137,11 @@ private:
   /** Scratch of write_contacts() per contact name. */
   std::vector<double> group_gap, group_velocity, group_impulse;
   std::vector<unsigned int> group_rows, group_active;
+  /** Whether a contact has friction: the friction columns are written (A9). */
+  const bool friction;
+  /** Scratch of write_contacts() with friction: t1, t2 sums, slip, state. */
+  std::vector<double> group_tangential, group_slip;
+  std::vector<FrictionState> group_state;
   std::chrono::steady_clock::time_point last_flush;
   /** When solution.pvd was last replaced durably; whether its last version is. */
   std::chrono::steady_clock::time_point last_pvd_sync;

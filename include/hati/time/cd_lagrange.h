@@ -6,6 +6,7 @@
 #include <hati/base/wall_clock.h>
 #include <hati/model/discrete_system.h>
 #include <hati/time/energies.h>
+#include <hati/time/frictional_contacts.h>
 #include <hati/time/maxwell_memory.h>
 #include <hati/time/rayleigh_damping.h>
 #include <hati/time/rope_forces.h>
@@ -102,6 +103,8 @@ public:
     double contact_work = 0., time_dependent_work = 0., dissipated = 0.;
     /** The ropes' forces, work and tension statistics (R1). */
     RopeForces::State ropes;
+    /** Tangential impulses and friction work (A9). */
+    FrictionalContacts::Record friction;
   };
   void save(Snapshot &snapshot) const;
   void restore(const Snapshot &snapshot);
@@ -138,6 +141,11 @@ public:
   const std::vector<double> &impulses() const { return lambda; }
   /** Whether contact k was active (g_k <= 0) in the last step (A4). */
   const std::vector<bool> &active() const { return is_active; }
+  /**
+   * Coulomb friction (A9): tangential impulses and states of the last
+   * step, friction work, the Gauss-Seidel counts.
+   */
+  const FrictionalContacts &friction() const { return frictional_contacts; }
 
   /** Mass-proportional Rayleigh coefficient a0 (1/s). */
   double mass_damping_coefficient() const { return a0; }
@@ -270,6 +278,8 @@ private:
   double time_dependent_work = 0.;
   /** The ropes (R1), applied with the external loads. */
   RopeForces rope_forces;
+  /** The clusters with friction (A9) and their record. */
+  FrictionalContacts frictional_contacts;
 };
 /**
  * The explicit integrator as the HATI coupling drives it (G2-G3',
@@ -394,6 +404,8 @@ public:
   }
   /** Add @p work (J) to the contact work. */
   void add_contact_work(const double work) { integrator->contact_work += work; }
+  /** The friction record (A9), which a redone pass replaces. */
+  FrictionalContacts &friction() { return integrator->frictional_contacts; }
   /** Add @p work (J) to the external work. */
   void add_external_work(const double work) { integrator->time_dependent_work += work; }
   /** Add @p energy (J) to the dissipated energy. */

@@ -32,6 +32,11 @@ struct Energies
    * side's own discrete work (G5); zero for a single domain.
    */
   double interface_work = 0.;
+  /**
+   * Energy dissipated by Coulomb friction since t = 0 (J, >= 0): minus the
+   * work of the tangential impulses (A9); zero without friction.
+   */
+  double friction_dissipated = 0.;
   /** Kinetic and internal energies of the explicit and implicit subdomains (J). */
   double kinetic_explicit = 0., kinetic_implicit = 0.;
   double internal_explicit = 0., internal_implicit = 0.;
@@ -42,8 +47,10 @@ struct Energies
    */
   double total() const
   {
-    return kinetic + internal + damping_stored + dissipated - external_work -
-           contact_work - interface_work;
+    const double t = kinetic + internal + damping_stored + dissipated - external_work -
+                     contact_work - interface_work;
+    // added only with friction, so that a frictionless total keeps its bits
+    return friction_dissipated != 0. ? t + friction_dissipated : t;
   }
 };
 } // namespace hati

@@ -156,6 +156,8 @@ public:
 
   /** Largest |C_E V_E + C_I V_I| at a macro-step end so far (m/s). */
   double interface_velocity_jump() const { return max_jump; }
+  /** Coulomb friction of the explicit subdomain (A9): its record and counts. */
+  const FrictionalContacts &friction() const { return explicit_integrator.friction(); }
   /** Macro steps whose micro steps were redone because of contacts. */
   unsigned long redone_macro_steps() const { return n_redone; }
   /** Largest number of interface corrections in one macro step. */

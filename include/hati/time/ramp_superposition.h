@@ -3,6 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <hati/contact/friction_solver.h>
 #include <hati/model/discrete_system.h>
 #include <hati/time/cd_lagrange.h>
 #include <hati/time/column_matrices.h>
@@ -24,6 +25,9 @@ struct ContactSample
   double time = 0.;
   std::vector<double> gaps, normal_velocities, impulses;
   std::vector<bool> active;
+  /** With friction (A9): as in OutputState (two per row, per row, per row). */
+  std::vector<double> tangential_impulses, slip_velocities;
+  std::vector<FrictionState> friction_states;
 };
 
 /**
@@ -166,6 +170,11 @@ public:
    * or ropes (R1) within reach of the ramp response.
    */
   bool nonlinear_in_reach() const { return contacts_in_reach() || open_ramp.moves_ropes; }
+   * Whether a contact with friction (A9) lies within reach: its response is
+   * not linear in the multiplier, so the coupling redoes the micro steps
+   * instead of superposing.
+   */
+  bool friction_in_reach() const { return reach_friction; }
   /** Whether the pass records the damping on the reach (damped). */
   bool records_damping() const { return !reach_dofs.empty(); }
   /** Active sets of the contacts within reach whose response was computed. */
@@ -260,6 +269,7 @@ private:
 
   // contacts within reach of the ramp response (indices)
   std::vector<unsigned int> reach_contacts;
+  bool reach_friction = false;
   // the pass over the contacts within reach: impulses, gaps, normal
   // velocities and active flags per micro step (row-major, j x contact)
   std::vector<double> pass_impulse, pass_gap, pass_normal;

@@ -1,0 +1,204 @@
+// Unit test of the Coulomb friction solver (algorithms.md A9, doc/theory.md
+// A9). References: the numpy prototype proto/cdl_friction.py of the spec
+// (a point mass, W = I/m, each local problem exact in closed form):
+//  (a) a mass on a slope stepped with CD-Lagrange: at rest to round-off at
+//      10 deg with mu = 0.3; at 20 and 30 deg the speed after 1 s is
+//      g (sin - mu cos) t exactly (the prototype prints it to six digits,
+//      checked here to 1e-9 relative; the distance is the discrete sum
+//      -a dt^2 N (N - 1) / 2);
+//  (c) a wheel node with a frictional vertical contact (mu = 0.15) and a
+//      frictionless lateral flange contact in one cluster: nonsmooth
+//      Gauss-Seidel converges (the prototype: 13 sweeps at 1e-12), post
+//      velocity (-0.27, 0, 0), saturated cone |lambda_t| = mu lambda_n,
+//      flange impulse 500 N s.
+// Then the law itself as an independent criterion on random anisotropic
+// 3x3 and 2x2 blocks (Newton on the sliding angle), unilateral and
+// bilateral: complementarity, cone, sticking u_t = 0 or sliding r_t
+// opposite to u_t on the cone's boundary.
+#include "test_tools.h"
+
+#include <hati/contact/friction_solver.h>
+
+#include <cmath>
+#include <random>
+#include <utility>
+
+using namespace dealii;
+using namespace hati;
+using namespace hati_test;
+
+namespace
+{
+/** A vector of three components. */
+struct V3
+{
+  V3(const double a = 0., const double b = 0., const double d = 0.) : c{a, b, d} {}
+  double c[3];
+  double &operator[](const int i) { return c[i]; }
+  double operator[](const int i) const { return c[i]; }
+};
+double dot(const V3 &a, const V3 &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/** The prototype's slope(): returns {distance along t1, speed along t1}. */
+std::pair<double, double> slope(const double theta, const double mu)
+{
+  const double dt = 1e-4, g = 9.81, m = 2.;
+  const V3 n{-std::sin(theta), 0., std::cos(theta)},
+      t1{std::cos(theta), 0., std::sin(theta)}, t2{0., 1., 0.};
+  V3 x{0., 0., 0.}, v{0., 0., 0.};
+  const double W[9] = {1. / m, 0., 0., 0., 1. / m, 0., 0., 0., 1. / m};
+  for (int step = 0; step < 10000; ++step)
+  {
+    for (int i = 0; i < 3; ++i)
+      x[i] += dt * v[i];
+    V3 vfree = v;
+    vfree[2] -= dt * g;
+    const double q[3] = {dot(n, vfree), dot(t1, vfree), dot(t2, vfree)};
+    double r[3];
+    bool exact = true;
+    solve_local_coulomb(W, 3, q, mu, false, r, exact);
+    for (int i = 0; i < 3; ++i)
+      v[i] = vfree[i] + (r[0] * n[i] + r[1] * t1[i] + r[2] * t2[i]) / m;
+  }
+  return {dot(x, t1), dot(v, t1)};
+}
+
+/** Check the law on one local problem; returns the largest violation (relative). */
+double law_violation(const std::vector<double> &W,
+                     const unsigned int size,
+                     const double *q,
+                     const double mu,
+                     const bool bilateral,
+                     const double *r,
+                     const FrictionState state)
+{
+  double u[3] = {0., 0., 0.}, scale = 0.;
+  for (unsigned int i = 0; i < size; ++i)
+  {
+    u[i] = q[i];
+    for (unsigned int j = 0; j < size; ++j)
+      u[i] += W[i * size + j] * r[j];
+    scale = std::max(scale, std::abs(q[i]));
+  }
+  const double rt = std::hypot(r[1], size > 2 ? r[2] : 0.),
+               ut = std::hypot(u[1], size > 2 ? u[2] : 0.);
+  double v = 0.;
+  if (!bilateral)
+    v = std::max(
+        {v, -r[0] / scale, -u[0] / scale, std::abs(r[0] * u[0]) / (scale * scale)});
+  else
+    v = std::max(v, std::abs(u[0]) / scale);
+  v = std::max(v, (rt - mu * std::abs(r[0])) / std::max(scale, std::abs(r[0])));
+  if (state == FrictionState::stick)
+    v = std::max(v, ut / scale);
+  if (state == FrictionState::slip)
+  {
+    // on the boundary of the cone, opposite to the sliding velocity
+    v = std::max(v,
+                 std::abs(rt - mu * std::abs(r[0])) / std::max(1e-300, std::abs(r[0])));
+    for (unsigned int i = 1; i < size; ++i)
+      v = std::max(v, std::abs(r[i] / std::max(1e-300, rt) + u[i] / ut));
+  }
+  return v;
+}
+} // namespace
+
+int main()
+{
+  // (a) the slope
+  const double g = 9.81;
+  for (const double deg : {10., 20., 30.})
+  {
+    const double theta = deg * std::acos(-1.) / 180., mu = 0.3;
+    const auto [s, v] = slope(theta, mu);
+    const double a = std::max(0., g * (std::sin(theta) - mu * std::cos(theta)));
+    const std::string where = "slope " + std::to_string(int(deg)) + " deg, mu 0.3: ";
+    if (a == 0.)
+    {
+      check(where + "distance after 1 s (at rest to round-off)", s, 0., 1e-14);
+      check(where + "speed after 1 s", v, 0., 1e-14);
+    }
+    else
+    {
+      check(where + "speed after 1 s vs -g (sin - mu cos) t", v, -a, 1e-9 * a);
+      check(where + "distance vs the discrete -a dt^2 N (N-1)/2",
+            s,
+            -a * 1e-8 * 10000. * 9999. / 2.,
+            1e-9 * a);
+    }
+  }
+
+  // (c) the wheel cluster: rows n0 = ez, t01 = ex, t02 = ey | n1 = ey
+  {
+    const double m = 1000., mu = 0.15;
+    const V3 vfree{-0.3, -0.5, -0.2};
+    FullMatrix<double> W(4, 4);
+    const V3 rows[4] = {{0., 0., 1.}, {1., 0., 0.}, {0., 1., 0.}, {0., 1., 0.}};
+    Vector<double> q(4);
+    for (unsigned int a = 0; a < 4; ++a)
+    {
+      q[a] = dot(rows[a], vfree);
+      for (unsigned int b = 0; b < 4; ++b)
+        W(a, b) = dot(rows[a], rows[b]) / m;
+    }
+    Vector<double> r;
+    std::vector<FrictionState> state;
+    const FrictionSolverResult result =
+        solve_frictional_cluster(W, q, {0, 3, 4}, {mu, 0.}, {false, false}, r, state);
+    V3 v = vfree;
+    for (unsigned int a = 0; a < 4; ++a)
+      for (int i = 0; i < 3; ++i)
+        v[i] += rows[a][i] * r[a] / m;
+    std::cout << "     wheel cluster: " << result.sweeps
+              << " Gauss-Seidel sweeps at the relative tolerance 1e-10" << std::endl;
+    expect(result.converged && result.sweeps <= 13,
+           "wheel cluster converged within the prototype's 13 sweeps");
+    check("wheel cluster: post velocity x", v[0], -0.27, 1e-12);
+    check("wheel cluster: post velocity y", v[1], 0., 1e-12);
+    check("wheel cluster: post velocity z", v[2], 0., 1e-12);
+    check("wheel cluster: |lambda_t| / (mu lambda_n) (saturated cone)",
+          std::hypot(r[1], r[2]) / (mu * r[0]),
+          1.,
+          1e-10);
+    check("wheel cluster: flange impulse (N s)", r[3], 500., 1e-7);
+    expect(state[0] == FrictionState::slip, "wheel cluster: the wheel contact slides");
+  }
+
+  // the law on random anisotropic blocks (Newton on the sliding angle)
+  std::mt19937 gen(17);
+  std::uniform_real_distribution<double> u(-1., 1.);
+  double worst = 0.;
+  unsigned int n_states[3] = {0, 0, 0}, n_inexact = 0;
+  for (unsigned int trial = 0; trial < 4000; ++trial)
+  {
+    const unsigned int size = 2 + trial % 2;
+    const bool bilateral = trial % 5 == 0;
+    std::vector<double> B(size * size), W(size * size, 0.);
+    for (auto &b : B)
+      b = u(gen);
+    for (unsigned int i = 0; i < size; ++i)
+      for (unsigned int j = 0; j < size; ++j)
+      {
+        for (unsigned int k = 0; k < size; ++k)
+          W[i * size + j] += B[i * size + k] * B[j * size + k];
+        W[i * size + j] += (i == j ? 0.5 : 0.);
+      }
+    double q[3] = {u(gen), u(gen), u(gen)}, r[3];
+    const double mu = 0.05 + 0.6 * (u(gen) + 1.) / 2.;
+    bool exact = true;
+    const FrictionState s =
+        solve_local_coulomb(W.data(), size, q, mu, bilateral, r, exact);
+    n_inexact += exact ? 0 : 1;
+    ++n_states[static_cast<int>(s)];
+    if (exact)
+      worst = std::max(worst, law_violation(W, size, q, mu, bilateral, r, s));
+  }
+  std::cout << "     random blocks: " << n_states[0] << " open, " << n_states[1]
+            << " stick, " << n_states[2] << " slip, " << n_inexact
+            << " without an exact solution" << std::endl;
+  check("random anisotropic blocks: largest violation of the law", worst, 0., 1e-10);
+  expect(n_inexact == 0, "random anisotropic blocks: every local problem solved exactly");
+  expect(n_states[1] > 100 && n_states[2] > 100,
+         "random blocks: both stick and slip seen");
+  return finish();
+}
