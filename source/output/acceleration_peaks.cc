@@ -35,10 +35,15 @@ void AccelerationPeaks::history_row(const OutputState &s)
     double a2 = 0.;
     for (unsigned int i = 0; i < m.dofs.size(); ++i)
     {
+      // translations only: a frame monitor's rotations (rx, ry, rz, rad/s^2)
+      // are not part of the acceleration (m/s^2)
+      const std::string &label = m.labels[i];
+      if (label != "x" && label != "y" && label != "z")
+        continue;
       const double v = (*s.velocity)[m.dofs[i]];
       if (have_last && s.time > last_time)
       {
-        const unsigned int d = m.labels[i] == "x" ? 0 : m.labels[i] == "y" ? 1 : 2;
+        const unsigned int d = label == "x" ? 0 : label == "y" ? 1 : 2;
         const double a = (v - last[i]) / (s.time - last_time) +
                          (ground[d] ? ground[d](0.5 * (s.time + last_time)) : 0.);
         a2 += a * a;

@@ -310,10 +310,15 @@ int SuiteRunner::finish(std::vector<MemberResult> &results, const double wall_ti
   const std::string spectra = statistics.spectra_csv();
   if (!spectra.empty())
     out.replace("suite_spectra.csv", spectra, true);
+  // the ranks' time against the members' (n_ranks x wall time - their sum)
+  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
   std::cout << "hati: suite: " << results.size() << " members in " << wall_time
-            << " s (members " << member_time << " s, overhead "
-            << (member_time > 0. ? 100. * (wall_time - member_time) / member_time : 0.)
-            << " %): " << folder << "/suite.csv, suite_summary.json"
+            << " s on " << n_ranks << (n_ranks == 1 ? " rank" : " ranks") << " (members "
+            << member_time << " s, overhead "
+            << (member_time > 0.
+                    ? 100. * (n_ranks * wall_time - member_time) / member_time
+                    : 0.)
+            << " % of the ranks' time): " << folder << "/suite.csv, suite_summary.json"
             << (spectra.empty() ? "" : ", suite_spectra.csv") << std::endl;
   if (!stop_requested())
   {
