@@ -164,6 +164,81 @@ int main()
     expect(state[0] == FrictionState::slip, "wheel cluster: the wheel contact slides");
   }
 
+  // (d) a cluster captured from the default crane (Travel = braked, Hoist =
+  // rope) under HATI, which Gauss-Seidel did not converge in 1000 sweeps:
+  // a braked wheel (normal z, tangents x, y, mu = 0.15) and its lateral
+  // flange contact, whose row equals the wheel's y tangent (W singular).
+  // Independent solution (closed form, W = w I on the wheel node): the
+  // flange holds y (u_y = 0, flange impulse -q_y / w), the wheel's normal
+  // impulse is -q_n / w and its sticking x impulse -q_x / w lies just
+  // outside the cone, so the wheel slides along x with r_x = mu r_n and
+  // u_x = q_x + w mu r_n (the post velocities are unique although the split
+  // of the y impulse between the two rows would not be when sticking).
+  {
+    const double w = 0.034392153086351761, mu = 0.15;
+    const double qv[4] = {-0.13590225207076351,
+                          -0.020389218466158335,
+                          -0.014489508722631252,
+                          -0.014489508722631252};
+    FullMatrix<double> W(4, 4);
+    Vector<double> q(4);
+    for (unsigned int a = 0; a < 4; ++a)
+    {
+      q[a] = qv[a];
+      W(a, a) = w;
+    }
+    W(2, 3) = W(3, 2) = w;
+    Vector<double> r;
+    std::vector<FrictionState> state;
+    const FrictionSolverResult result =
+        solve_frictional_cluster(W, q, {0, 3, 4}, {mu, 0.}, {false, false}, r, state);
+    std::cout << "     crane wheel cluster: " << result.sweeps << " sweeps" << std::endl;
+    expect(result.converged && result.sweeps <= 2,
+           "crane wheel cluster converged (wheel and flange solved as one block)");
+    Vector<double> u(q);
+    W.vmult_add(u, r);
+    const double rn = -qv[0] / w, scale = std::abs(qv[0]);
+    check("crane wheel cluster: u_n", u[0], 0., 1e-10 * scale);
+    check("crane wheel cluster: u_y (flange closed)", u[3], 0., 1e-10 * scale);
+    check("crane wheel cluster: u_x (slides) vs q_x + w mu r_n",
+          u[1],
+          qv[1] + w * mu * rn,
+          1e-10 * scale);
+    check("crane wheel cluster: wheel normal impulse", r[0], rn, 1e-10 * rn);
+    check("crane wheel cluster: friction impulse x = mu r_n (cone saturated)",
+          r[1],
+          mu * rn,
+          1e-10 * rn);
+    check("crane wheel cluster: cone |r_t| <= mu r_n",
+          std::max(0., std::hypot(r[1], r[2]) - mu * r[0]),
+          0.,
+          1e-10 * rn);
+    check("crane wheel cluster: y impulse (wheel + flange) vs -q_y / w",
+          r[2] + r[3],
+          -qv[2] / w,
+          1e-10 * rn);
+    expect(r[3] >= 0. && state[0] == FrictionState::slip,
+           "crane wheel cluster: flange impulse >= 0, the wheel slides");
+  }
+
+  // (e) a single wheel captured from the explicit crane run: the sticking
+  // impulse lies outside the cone by 1.7e-6 relative (isotropic block, the
+  // sliding solution r_t = -mu r_n q_t / |q_t| in closed form)
+  {
+    const double w = 0.010318212498128854, mu = 0.15;
+    const double q[3] = {
+        -0.01188005420057503, 0.0012661056043010554, -0.0012540095949597056};
+    const double W[9] = {w, 0., 0., 0., w, 0., 0., 0., w};
+    double r[3];
+    bool exact = true;
+    const FrictionState s = solve_local_coulomb(W, 3, q, mu, false, r, exact);
+    const double rn = -q[0] / w, qt = std::hypot(q[1], q[2]);
+    expect(exact && s == FrictionState::slip, "near-cone wheel: solved exactly, slides");
+    check("near-cone wheel: r_n", r[0], rn, 1e-12 * rn);
+    check("near-cone wheel: r_t1", r[1], -mu * rn * q[1] / qt, 1e-12 * rn);
+    check("near-cone wheel: r_t2", r[2], -mu * rn * q[2] / qt, 1e-12 * rn);
+  }
+
   // the law on random anisotropic blocks (Newton on the sliding angle)
   std::mt19937 gen(17);
   std::uniform_real_distribution<double> u(-1., 1.);

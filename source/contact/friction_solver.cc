@@ -107,6 +107,10 @@ bool slide_two_tangents(
   const SlidingAngle f{W, q, mu, sigma};
   // the fixed point s <- u_t(s) / |u_t(s)| from s = q_t / |q_t|: exact for
   // an isotropic block (W_nt = 0, W_tt = w I), a start for Newton otherwise
+  const double scale = std::abs(q[0]) *
+                           (std::abs(W[0]) + std::abs(W[4]) + std::abs(W[8])) /
+                           std::max(std::abs(W[0]), 1e-300) +
+                       std::abs(q[1]) + std::abs(q[2]);
   double phi = std::atan2(q[2], q[1]);
   double g = 0., dg = 0., rho = 0., alpha = 0.;
   for (unsigned int it = 0; it < 3; ++it)
@@ -115,14 +119,11 @@ bool slide_two_tangents(
       break;
     const double s[2] = {std::cos(phi), std::sin(phi)};
     const double u0 = alpha * s[0] - g * s[1], u1 = alpha * s[1] + g * s[0];
-    if (g == 0.)
+    // stop at a root: near sticking u_t is tiny and its angle mostly round-off
+    if (std::abs(g) <= 1e-15 * scale)
       break;
     phi = std::atan2(u1, u0);
   }
-  const double scale = std::abs(q[0]) *
-                           (std::abs(W[0]) + std::abs(W[4]) + std::abs(W[8])) /
-                           std::max(std::abs(W[0]), 1e-300) +
-                       std::abs(q[1]) + std::abs(q[2]);
   for (unsigned int it = 0; it < 50; ++it)
   {
     if (!f(phi, g, dg, rho, alpha))
@@ -253,6 +254,186 @@ FrictionState solve_local_coulomb(const double *W,
   return FrictionState::slip;
 }
 
+namespace
+{
+/**
+ * A frictional contact and its partners: the frictionless one-row contacts
+ * of the cluster whose row is parallel to one of its tangent rows (a wheel's
+ * flange against its lateral tangent). Gauss-Seidel cannot split the
+ * tangential impulse between such rows efficiently (the sweeps contract by
+ * about the ratio of the slip speed to the relative velocity), so the
+ * block is solved exactly as one local problem (block_solve()).
+ */
+struct FrictionBlock
+{
+  unsigned int contact;
+  std::vector<unsigned int> partners;
+  /** Per partner the global row of the tangent it is parallel to. */
+  std::vector<unsigned int> parallel_to;
+};
+
+/** Whether rows i and j of the Delassus matrix are parallel (Cauchy-Schwarz equality). */
+bool parallel_rows(const FullMatrix<double> &W,
+                   const unsigned int i,
+                   const unsigned int j)
+{
+  const double wii = W(i, i), wjj = W(j, j), wij = W(i, j);
+  return wii > 0. && wjj > 0. && wij * wij >= (1. - 1e-12) * wii * wjj;
+}
+
+/** The blocks of a cluster: every contact once, frictional contacts with their partners.
+ */
+std::vector<FrictionBlock> friction_blocks(const FullMatrix<double> &W,
+                                           const std::vector<unsigned int> &first,
+                                           const std::vector<double> &mu)
+{
+  const unsigned int m = mu.size();
+  std::vector<int> owner(m, -1);
+  std::vector<FrictionBlock> blocks;
+  for (unsigned int k = 0; k < m; ++k)
+    if (mu[k] > 0. && first[k + 1] - first[k] > 1)
+    {
+      FrictionBlock b{k, {}, {}};
+      for (unsigned int f = 0; f < m && b.partners.size() < 2; ++f)
+        if (f != k && owner[f] < 0 && first[f + 1] - first[f] == 1)
+          for (unsigned int t = first[k] + 1; t < first[k + 1]; ++t)
+            if (parallel_rows(W, first[f], t))
+            {
+              b.partners.push_back(f);
+              b.parallel_to.push_back(t);
+              owner[f] = k;
+              break;
+            }
+      owner[k] = k;
+      blocks.push_back(b);
+    }
+  std::vector<FrictionBlock> all;
+  for (unsigned int k = 0; k < m; ++k)
+    if (owner[k] == static_cast<int>(k))
+      all.push_back(*std::find_if(blocks.begin(),
+                                  blocks.end(),
+                                  [k](const FrictionBlock &b)
+                                  { return b.contact == k; }));
+    else if (owner[k] < 0)
+      all.push_back(FrictionBlock{k, {}, {}});
+  return all;
+}
+
+/**
+ * The exact solution of a block with partners: for each set S of closed
+ * partners (bilateral partners always closed) the tangents parallel to a
+ * closed partner are held by it (no slip along them, their friction impulse
+ * zero: the partner carries that direction), the partners' rows are
+ * eliminated (u_f = 0, Schur complement) and the contact's reduced local
+ * problem is solved exactly (solve_local_coulomb()); the first S whose
+ * partner impulses are >= 0 and whose open partners do not close is taken.
+ * @p Wb, @p qb the block's rows (the contact's, then one per partner),
+ * @p held the contact's local tangent row each partner is parallel to.
+ * False if no set gave a consistent solution.
+ */
+bool block_solve(const FullMatrix<double> &Wb,
+                 const std::vector<double> &qb,
+                 const unsigned int size,
+                 const std::vector<unsigned int> &held,
+                 const double mu,
+                 const bool bilateral,
+                 const std::vector<bool> &partner_bilateral,
+                 std::vector<double> &rb,
+                 FrictionState &state)
+{
+  const unsigned int p = held.size(), nb = size + p;
+  for (unsigned int mask = 0; mask < (1u << p); ++mask)
+  {
+    bool valid = true;
+    std::vector<unsigned int> S, F{0};
+    for (unsigned int i = 0; i < p; ++i)
+      if (mask & (1u << i))
+        S.push_back(size + i);
+      else if (partner_bilateral[i])
+        valid = false;
+    if (!valid)
+      continue;
+    for (unsigned int t = 1; t < size; ++t)
+    {
+      bool is_held = false;
+      for (unsigned int i = 0; i < p; ++i)
+        is_held = is_held || ((mask & (1u << i)) && held[i] == t);
+      if (!is_held)
+        F.push_back(t);
+    }
+    const unsigned int s = S.size(), f = F.size();
+    FullMatrix<double> WSS_inv(s, s);
+    for (unsigned int i = 0; i < s; ++i)
+      for (unsigned int j = 0; j < s; ++j)
+        WSS_inv(i, j) = Wb(S[i], S[j]);
+    if (s > 0)
+    {
+      if (s == 2 && std::abs(WSS_inv.determinant()) <=
+                        1e-12 * std::abs(WSS_inv(0, 0) * WSS_inv(1, 1)))
+        continue; // two partners along the same direction cannot both hold
+      WSS_inv.gauss_jordan();
+    }
+    // W' = W_FF - W_FS W_SS^-1 W_SF, q' = q_F - W_FS W_SS^-1 q_S
+    double Wr[9], qr[3], rr[3];
+    for (unsigned int a = 0; a < f; ++a)
+    {
+      qr[a] = qb[F[a]];
+      for (unsigned int i = 0; i < s; ++i)
+        for (unsigned int j = 0; j < s; ++j)
+          qr[a] -= Wb(F[a], S[i]) * WSS_inv(i, j) * qb[S[j]];
+      for (unsigned int c = 0; c < f; ++c)
+      {
+        double w = Wb(F[a], F[c]);
+        for (unsigned int i = 0; i < s; ++i)
+          for (unsigned int j = 0; j < s; ++j)
+            w -= Wb(F[a], S[i]) * WSS_inv(i, j) * Wb(S[j], F[c]);
+        Wr[a * f + c] = w;
+      }
+    }
+    bool exact = true;
+    const FrictionState st = solve_local_coulomb(Wr, f, qr, mu, bilateral, rr, exact);
+    if (!exact)
+      continue;
+    std::fill(rb.begin(), rb.end(), 0.);
+    for (unsigned int a = 0; a < f; ++a)
+      rb[F[a]] = rr[a];
+    // r_S = -W_SS^-1 (q_S + W_SF r_F)
+    for (unsigned int i = 0; i < s; ++i)
+    {
+      double v = 0.;
+      for (unsigned int j = 0; j < s; ++j)
+      {
+        double u = qb[S[j]];
+        for (unsigned int a = 0; a < f; ++a)
+          u += Wb(S[j], F[a]) * rr[a];
+        v -= WSS_inv(i, j) * u;
+      }
+      rb[S[i]] = v;
+      if (!partner_bilateral[S[i] - size] && v < 0.)
+        valid = false;
+    }
+    // the open partners must not close
+    for (unsigned int i = 0; i < p && valid; ++i)
+      if (!(mask & (1u << i)))
+      {
+        double u = qb[size + i], scale = std::abs(qb[size + i]);
+        for (unsigned int j = 0; j < nb; ++j)
+        {
+          u += Wb(size + i, j) * rb[j];
+          scale += std::abs(Wb(size + i, j) * rb[j]);
+        }
+        valid = u >= -1e-12 * scale;
+      }
+    if (valid)
+    {
+      state = st;
+      return true;
+    }
+  }
+  return false;
+}
+} // namespace
+
 FrictionSolverResult solve_frictional_cluster(const FullMatrix<double> &W,
                                               const Vector<double> &q,
                                               const std::vector<unsigned int> &first,
@@ -271,43 +452,112 @@ FrictionSolverResult solve_frictional_cluster(const FullMatrix<double> &W,
     r = 0.;
   state.assign(m, FrictionState::open);
   FrictionSolverResult result;
+  const std::vector<FrictionBlock> blocks = friction_blocks(W, first, mu);
   double Wk[9], qk[3], rk[3];
+  FullMatrix<double> Wb;
+  std::vector<double> qb, rb;
+  std::vector<unsigned int> rows_b, held;
+  std::vector<bool> partner_bilateral;
   for (unsigned int sweep = 1;; ++sweep)
   {
     double change = 0., norm = 0.;
     bool exact_sweep = true;
-    for (unsigned int k = 0; k < m; ++k)
+    for (const FrictionBlock &block : blocks)
     {
+      const unsigned int k = block.contact;
       const unsigned int a = first[k], size = first[k + 1] - a;
       AssertThrow(size >= 1 && size <= 3,
                   ExcMessage("friction solver: a contact has 0 or more than 2 tangents"));
-      // the local problem with the other contacts' impulses as they are
-      for (unsigned int i = 0; i < size; ++i)
+      if (!block.partners.empty())
       {
-        double s = q[a + i];
-        for (unsigned int j = 0; j < n; ++j)
-          if (j < a || j >= a + size)
-            s += W(a + i, j) * r[j];
-        qk[i] = s;
-        for (unsigned int j = 0; j < size; ++j)
-          Wk[i * size + j] = W(a + i, a + j);
+        // the contact and its partners as one local problem (block_solve())
+        rows_b.clear();
+        held.clear();
+        partner_bilateral.clear();
+        for (unsigned int i = 0; i < size; ++i)
+          rows_b.push_back(a + i);
+        for (unsigned int i = 0; i < block.partners.size(); ++i)
+        {
+          rows_b.push_back(first[block.partners[i]]);
+          held.push_back(block.parallel_to[i] - a);
+          partner_bilateral.push_back(bilateral[block.partners[i]]);
+        }
+        const unsigned int nb = rows_b.size();
+        Wb.reinit(nb, nb);
+        qb.assign(nb, 0.);
+        rb.assign(nb, 0.);
+        for (unsigned int i = 0; i < nb; ++i)
+        {
+          double v = q[rows_b[i]];
+          for (unsigned int j = 0; j < n; ++j)
+            if (std::find(rows_b.begin(), rows_b.end(), j) == rows_b.end())
+              v += W(rows_b[i], j) * r[j];
+          qb[i] = v;
+          for (unsigned int j = 0; j < nb; ++j)
+            Wb(i, j) = W(rows_b[i], rows_b[j]);
+        }
+        FrictionState block_state = FrictionState::open;
+        if (block_solve(Wb,
+                        qb,
+                        size,
+                        held,
+                        mu[k],
+                        bilateral[k],
+                        partner_bilateral,
+                        rb,
+                        block_state))
+        {
+          state[k] = block_state;
+          for (unsigned int i = 0; i < block.partners.size(); ++i)
+            state[block.partners[i]] =
+                rb[size + i] != 0. ? FrictionState::slip : FrictionState::open;
+          double d = 0., l = 0.;
+          for (unsigned int i = 0; i < nb; ++i)
+          {
+            d += (rb[i] - r[rows_b[i]]) * (rb[i] - r[rows_b[i]]);
+            l += rb[i] * rb[i];
+            r[rows_b[i]] = rb[i];
+          }
+          change += std::sqrt(d);
+          norm += std::sqrt(l);
+          continue;
+        }
+        exact_sweep = false;
       }
-      bool exact = true;
-      state[k] = solve_local_coulomb(Wk, size, qk, mu[k], bilateral[k], rk, exact);
-      exact_sweep = exact_sweep && exact;
-      double d = 0., l = 0.;
-      for (unsigned int i = 0; i < size; ++i)
+      // each contact of the block on its own with the others' impulses as they are
+      std::vector<unsigned int> members{k};
+      members.insert(members.end(), block.partners.begin(), block.partners.end());
+      for (const unsigned int c : members)
       {
-        d += (rk[i] - r[a + i]) * (rk[i] - r[a + i]);
-        l += rk[i] * rk[i];
-        r[a + i] = rk[i];
+        const unsigned int a = first[c], size = first[c + 1] - a;
+        for (unsigned int i = 0; i < size; ++i)
+        {
+          double s = q[a + i];
+          for (unsigned int j = 0; j < n; ++j)
+            if (j < a || j >= a + size)
+              s += W(a + i, j) * r[j];
+          qk[i] = s;
+          for (unsigned int j = 0; j < size; ++j)
+            Wk[i * size + j] = W(a + i, a + j);
+        }
+        bool exact = true;
+        state[c] = solve_local_coulomb(Wk, size, qk, mu[c], bilateral[c], rk, exact);
+        exact_sweep = exact_sweep && exact;
+        double d = 0., l = 0.;
+        for (unsigned int i = 0; i < size; ++i)
+        {
+          d += (rk[i] - r[a + i]) * (rk[i] - r[a + i]);
+          l += rk[i] * rk[i];
+          r[a + i] = rk[i];
+        }
+        change += std::sqrt(d);
+        norm += std::sqrt(l);
       }
-      change += std::sqrt(d);
-      norm += std::sqrt(l);
     }
     result.sweeps = sweep;
     result.converged = exact_sweep;
-    if (m == 1 || change <= control.tolerance * norm)
+    if ((blocks.size() == 1 && (blocks[0].partners.empty() || exact_sweep)) ||
+        change <= control.tolerance * norm)
       return result;
     if (sweep >= control.max_sweeps)
     {
