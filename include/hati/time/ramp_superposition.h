@@ -170,6 +170,7 @@ public:
    * or ropes (R1) within reach of the ramp response.
    */
   bool nonlinear_in_reach() const { return contacts_in_reach() || open_ramp.moves_ropes; }
+  /**
    * Whether a contact with friction (A9) lies within reach: its response is
    * not linear in the multiplier, so the coupling redoes the micro steps
    * instead of superposing.
