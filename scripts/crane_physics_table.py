@@ -147,7 +147,7 @@ def figures(out, hoist, records):
         "rope T max (kN)": rope["max"] / 1e3 if rope else None,
         "rope T min (kN)": rope["min"] / 1e3 if rope else None,
         "rope slack (s)": rope["slack_time"] if rope else None,
-        "warnings": len(s.get("warnings", [])),
+        "warnings (count)": len(s.get("warnings", [])),
     }
 
 
@@ -168,6 +168,9 @@ def main():
     p.add_argument("--reuse", action="store_true")
     p.add_argument("--png")
     args = p.parse_args()
+    if not os.access(args.hati, os.X_OK):
+        sys.exit("crane_physics_table: %s is not an executable: build hati first "
+                 "(scripts/setup.sh hati) or give --hati" % args.hati)
     args.out = os.path.abspath(args.out)
     os.makedirs(args.out, exist_ok=True)
     png = args.png or os.path.join(args.out, "crane_physics.png")
