@@ -13,7 +13,9 @@ References (exact, a rigid block on an inclined plane):
   round-off (balance_drift <= 1e-9 of the largest energy over 1e5 steps:
   the same block without friction drifts by 1.2e-10); slip_distance
   in summary.json = the distance slid, peak_friction_force = mu N / 2 per
-  contact;
+  contact; the terminal contact table gains the columns slip distance,
+  friction force and its time, equal to summary.json (a frictionless run's
+  table keeps its seven columns);
 - tan(theta) < mu (10 deg), Initial state = static: the static state holds
   the tangential directions of the closed frictional contacts (the block on
   frictional contacts alone is not singular) and the block stays exactly at
@@ -58,7 +60,7 @@ def along_slope(h, theta_deg, node="a", what="u"):
 # -- sliding at 20 degrees ----------------------------------------------------
 theta = 20.0
 a_ref = g * (math.sin(math.radians(theta)) - mu * math.cos(math.radians(theta)))
-out, _ = ctx.run(prm, "slide20", ["Output/History interval=0.01"])
+out, run20 = ctx.run(prm, "slide20", ["Output/History interval=0.01"])
 h = read_csv(out + "/history.csv")
 v = along_slope(h, theta, "a", "v")
 i_half = int(np.argmin(np.abs(h["time"] - 0.5)))
@@ -93,6 +95,40 @@ for name in ("ga", "gb"):
 ctx.check("slide 20 deg: peak_friction_force of both contacts (N) = mu N",
           s["contacts"]["ga"]["peak_friction_force"] + s["contacts"]["gb"]["peak_friction_force"],
           mu * N, rel=1e-3)
+
+
+def table_rows(stdout):
+    """The terminal contact table: its header and {name: [columns]}."""
+    lines = stdout.splitlines()
+    i = next(k for k, line in enumerate(lines) if line.startswith("  contacts:"))
+    rows = {}
+    for line in lines[i + 1:]:
+        fields = line.split()
+        if not line.startswith("    ") or not fields or fields[0].startswith("("):
+            if rows:
+                break
+            continue
+        rows[fields[0]] = fields[1:]
+    return lines[i], rows
+
+
+# the terminal table with friction: slip distance, friction force and its time
+header, rows = table_rows(run20.stdout)
+ctx.check_true("slide 20 deg: the contact table has the friction columns",
+               header.endswith("  slip distance (m)  friction force (N)    at t (s)"), header)
+for name in ("ga", "gb"):
+    ctx.check("slide 20 deg: %s slip distance in the table (m) = slip_distance" % name,
+              float(rows[name][7]), s["contacts"][name]["slip_distance"], rel=1e-5)
+    ctx.check("slide 20 deg: %s friction force in the table (N) = peak_friction_force" % name,
+              float(rows[name][8]), s["contacts"][name]["peak_friction_force"], rel=1e-5)
+# a frictionless block: the table of frictionless runs, unchanged
+_, run0 = ctx.run(prm, "slide20_mu0", ["Output/History interval=0", "Time integration/End time=0.01"]
+                  + geometry(20, "0"))
+header, rows = table_rows(run0.stdout)
+ctx.check_true("frictionless: the contact table without friction columns",
+               header == "  contacts:        name   impacts  peak force (N)    at t (s)  mean force "
+               "(N)    at t (s)  time out of contact (s)  loss episodes"
+               and all(len(r) == 7 for r in rows.values()), header)
 
 # -- at rest at 10 degrees, from the static state -----------------------------
 theta = 10.0

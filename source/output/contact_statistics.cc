@@ -226,17 +226,29 @@ void ContactStatistics::print_table(std::ostream &out) const
   const auto precision = out.precision();
   out << "  contacts:        name   impacts  peak force (N)    at t (s)  mean force (N)  "
          "  at t "
-         "(s)  time out of contact (s)  loss episodes\n";
+         "(s)  time out of contact (s)  loss episodes";
+  // with friction (A9): the slip distance and the peak friction force
+  if (friction)
+    out << "  slip distance (m)  friction force (N)    at t (s)";
+  out << '\n';
   if (force_window > 0.)
     out << "    (peak force: impulse of one step / dt; mean force: largest impulse "
            "within "
-        << force_window << " s / " << force_window << " s)\n";
+        << force_window << " s / " << force_window << " s"
+        << (friction ? "; friction force: the same with the tangential impulse" : "")
+        << ")\n";
   for (const auto &e : groups)
+  {
     out << "    " << std::setw(24) << e.name << std::setw(10) << e.n_impacts
         << std::setw(16) << std::setprecision(6) << e.peak_force << std::setw(12)
         << e.peak_force_time << std::setw(16) << e.peak_mean_force << std::setw(12)
         << e.peak_mean_force_time << std::setw(25) << e.uplift_time << std::setw(15)
-        << e.episodes.size() << '\n';
+        << e.episodes.size();
+    if (friction)
+      out << std::setw(19) << e.slip_distance << std::setw(20) << e.peak_friction_force
+          << std::setw(12) << e.peak_friction_force_time;
+    out << '\n';
+  }
   out.flags(flags);
   out.precision(precision);
 }

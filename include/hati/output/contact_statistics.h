@@ -102,7 +102,11 @@ public:
   /** `contact_episodes.csv`: contact,start,end,duration (s; end empty if open). */
   void write_episodes(std::ostream &out) const;
 
-  /** The results table (one line per contact name) for the terminal. */
+  /**
+   * The results table (one line per contact name) for the terminal; with
+   * friction (add_friction_step() called) also the slip distance, the peak
+   * friction force and its time of each name.
+   */
   void print_table(std::ostream &out) const;
 
 private:
