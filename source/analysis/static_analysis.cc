@@ -511,8 +511,7 @@ void solve_linear(const DiscreteSystem &system,
   const double norm_F = F.l2_norm();
   if (!contacts.closed.empty())
   {
-    const std::vector<double> lambda =
-        solve_closed(system, K, F, held.rows, held.rhs, U);
+    const std::vector<double> lambda = solve_closed(system, K, F, held.rows, held.rhs, U);
     const std::vector<double> forces = closed_contact_forces(system, contacts, lambda, F);
     check_static_friction(system, contacts, held.sticking, lambda);
     if (contact_forces != nullptr)

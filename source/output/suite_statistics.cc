@@ -67,8 +67,8 @@ SpectraTable parse_spectra(const std::string &text)
   table.columns = dealii::Utilities::split_string_list(line, ',');
   while (std::getline(in, line))
     if (!line.empty())
-      table.rows.push_back(
-          dealii::Utilities::string_to_double(dealii::Utilities::split_string_list(line, ',')));
+      table.rows.push_back(dealii::Utilities::string_to_double(
+          dealii::Utilities::split_string_list(line, ',')));
   return table;
 }
 } // namespace

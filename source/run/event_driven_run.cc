@@ -1,10 +1,10 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/timer.h>
 
+#include <hati/base/wall_clock.h>
 #include <hati/output/output_writer.h>
 #include <hati/output/run_directory.h>
 #include <hati/output/summary.h>
-#include <hati/base/wall_clock.h>
 #include <hati/run/analysis_registry.h>
 #include <hati/run/problem.h>
 #include <hati/run/run_tools.h>
