@@ -76,3 +76,17 @@ run_case bar_impact_1d_damped parameter_files/bar_impact_1d.prm 0.5 \
   --set "Time integration/Damping/Stiffness coefficient=1e-7"
 run_case crane_hati_undamped parameter_files/bridge_crane_hati.prm 0.3 \
   --set "Model/Bridge crane/Damping ratio=0"
+# the crane's defaults (Coulomb friction at braked wheels, the load on its rope)
+run_case crane_braked_rope_explicit parameter_files/bridge_crane_full_explicit.prm 0.3 \
+  --set "Model/Bridge crane/Travel=braked" --set "Model/Bridge crane/Hoist=rope"
+run_case crane_braked_rope_hati parameter_files/bridge_crane_hati.prm 0.3 \
+  --set "Model/Bridge crane/Travel=braked" --set "Model/Bridge crane/Hoist=rope"
+run_case crane_braked_rope_static parameter_files/bridge_crane_static.prm 1 \
+  --set "Model/Bridge crane/Travel=braked" --set "Model/Bridge crane/Hoist=rope"
+# frequency-range damping under Newmark (N4)
+run_case portal_frame_newmark_frequency_range parameter_files/portal_frame_dynamic.prm 0.2 \
+  --set "Time integration/Method=Newmark" \
+  --set "Time integration/Damping/Type=frequency range" \
+  --set "Time integration/Damping/Damping ratio=0.05" \
+  --set "Time integration/Damping/Lower frequency=1" \
+  --set "Time integration/Damping/Upper frequency=30"

@@ -6,9 +6,9 @@
 
 #include <hati/base/input_file.h>
 #include <hati/output/run_directory.h>
+#include <hati/run/simulation.h>
 #include <hati/run/suite_plan.h>
 #include <hati/run/suite_runner.h>
-#include <hati/simulation.h>
 
 #include <csignal>
 #include <filesystem>

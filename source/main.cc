@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <hati/base/mpi_environment.h>
-#include <hati/simulation.h>
+#include <hati/run/simulation.h>
 
 int main(int argc, char **argv)
 {

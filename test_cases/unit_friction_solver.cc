@@ -55,8 +55,7 @@ std::pair<double, double> slope(const double theta, const double mu)
     vfree[2] -= dt * g;
     const double q[3] = {dot(n, vfree), dot(t1, vfree), dot(t2, vfree)};
     double r[3];
-    bool exact = true;
-    solve_local_coulomb(W, 3, q, mu, false, r, exact);
+    solve_local_coulomb(W, 3, q, mu, false, r);
     for (int i = 0; i < 3; ++i)
       v[i] = vfree[i] + (r[0] * n[i] + r[1] * t1[i] + r[2] * t2[i]) / m;
   }
@@ -144,7 +143,7 @@ int main()
     Vector<double> r;
     std::vector<FrictionState> state;
     const FrictionSolverResult result =
-        solve_frictional_cluster(W, q, {0, 3, 4}, {mu, 0.}, {false, false}, r, state);
+        solve_frictional_cluster({W, q, {0, 3, 4}, {mu, 0.}, {false, false}}, r, state);
     V3 v = vfree;
     for (unsigned int a = 0; a < 4; ++a)
       for (int i = 0; i < 3; ++i)
@@ -191,7 +190,7 @@ int main()
     Vector<double> r;
     std::vector<FrictionState> state;
     const FrictionSolverResult result =
-        solve_frictional_cluster(W, q, {0, 3, 4}, {mu, 0.}, {false, false}, r, state);
+        solve_frictional_cluster({W, q, {0, 3, 4}, {mu, 0.}, {false, false}}, r, state);
     std::cout << "     crane wheel cluster: " << result.sweeps << " sweeps" << std::endl;
     expect(result.converged && result.sweeps <= 2,
            "crane wheel cluster converged (wheel and flange solved as one block)");
@@ -230,8 +229,9 @@ int main()
         -0.01188005420057503, 0.0012661056043010554, -0.0012540095949597056};
     const double W[9] = {w, 0., 0., 0., w, 0., 0., 0., w};
     double r[3];
-    bool exact = true;
-    const FrictionState s = solve_local_coulomb(W, 3, q, mu, false, r, exact);
+    const LocalCoulombSolution local = solve_local_coulomb(W, 3, q, mu, false, r);
+    const bool exact = local.exact;
+    const FrictionState s = local.state;
     const double rn = -q[0] / w, qt = std::hypot(q[1], q[2]);
     expect(exact && s == FrictionState::slip, "near-cone wheel: solved exactly, slides");
     check("near-cone wheel: r_n", r[0], rn, 1e-12 * rn);
@@ -260,9 +260,10 @@ int main()
       }
     double q[3] = {u(gen), u(gen), u(gen)}, r[3];
     const double mu = 0.05 + 0.6 * (u(gen) + 1.) / 2.;
-    bool exact = true;
-    const FrictionState s =
-        solve_local_coulomb(W.data(), size, q, mu, bilateral, r, exact);
+    const LocalCoulombSolution local =
+        solve_local_coulomb(W.data(), size, q, mu, bilateral, r);
+    const bool exact = local.exact;
+    const FrictionState s = local.state;
     n_inexact += exact ? 0 : 1;
     ++n_states[static_cast<int>(s)];
     if (exact)

@@ -184,8 +184,7 @@ int main(int argc, char **argv)
                           1.,
                           parameters,
                           NewmarkParameters(),
-                          RayleighDamping(),
-                          b);
+                          DampingModel{"frequency range", RayleighDamping(), b});
     const double DT = m * dt;
     const unsigned int n_steps = std::lround(40. / f_lumped / DT);
     std::vector<double> u{problem.system.initial_displacement[tip]};

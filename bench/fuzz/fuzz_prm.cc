@@ -18,7 +18,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
-#include <hati/simulation.h>
+#include <hati/run/simulation.h>
 
 #include "fuzz_common.h"
 #include "fuzz_front_end.h"

@@ -493,36 +493,48 @@ struct HeldRows
 };
 
 /**
- * K U = F with the held rows @p held (solve_closed(), Coulomb's cone checked
+ * What every static solve of one model takes: the model, its closed
+ * contacts, the rows held, the linear solver (`direct` or `iterative`) and
+ * where the contact forces go (N; nullptr: nowhere).
+ */
+struct StaticSolve
+{
+  const DiscreteSystem &system;
+  const ClosedContacts &contacts;
+  const HeldRows &held;
+  const std::string &linear_solver;
+  std::vector<double> *contact_forces;
+};
+
+/**
+ * K U = F with the held rows of @p s (solve_closed(), Coulomb's cone checked
  * at the sticking contacts) or without (direct or iterative), the residual
  * checked; @p K has its fixed DoFs decoupled.
  */
-void solve_linear(const DiscreteSystem &system,
-                  const ClosedContacts &contacts,
-                  const HeldRows &held,
+void solve_linear(const StaticSolve &s,
                   const SparseMatrix<double> &K,
                   const Vector<double> &F,
-                  const std::string &linear_solver,
-                  Vector<double> &U,
-                  std::vector<double> *contact_forces)
+                  Vector<double> &U)
 {
-  const unsigned int n = system.n_dofs();
-  const std::vector<bool> &fixed = system.fixed;
+  const unsigned int n = s.system.n_dofs();
+  const std::vector<bool> &fixed = s.system.fixed;
   const double norm_F = F.l2_norm();
-  if (!contacts.closed.empty())
+  if (!s.contacts.closed.empty())
   {
-    const std::vector<double> lambda = solve_closed(system, K, F, held.rows, held.rhs, U);
-    const std::vector<double> forces = closed_contact_forces(system, contacts, lambda, F);
-    check_static_friction(system, contacts, held.sticking, lambda);
-    if (contact_forces != nullptr)
-      *contact_forces = forces;
+    const std::vector<double> lambda =
+        solve_closed(s.system, K, F, s.held.rows, s.held.rhs, U);
+    const std::vector<double> forces =
+        closed_contact_forces(s.system, s.contacts, lambda, F);
+    check_static_friction(s.system, s.contacts, s.held.sticking, lambda);
+    if (s.contact_forces != nullptr)
+      *s.contact_forces = forces;
     return;
   }
 
-  if (linear_solver == "direct")
+  if (s.linear_solver == "direct")
     solve_direct(K, F, fixed, U);
   else if (norm_F > 0.)
-    solve_iterative(system, K, F, U);
+    solve_iterative(s.system, K, F, U);
 
   AssertThrow(std::isfinite(U.l2_norm()),
               ExcMessage(singular_message + " (the solution is not finite)."));
@@ -552,14 +564,9 @@ constexpr unsigned int max_rope_iterations = 50;
  * gets a small isotropic stiffness in the iteration matrix (1e-6 k), which
  * does not change the solution.
  */
-void solve_with_ropes(const DiscreteSystem &system,
-                      const ClosedContacts &contacts,
-                      const HeldRows &held,
-                      const Vector<double> &F,
-                      const std::string &linear_solver,
-                      Vector<double> &U,
-                      std::vector<double> *contact_forces)
+void solve_with_ropes(const StaticSolve &s, const Vector<double> &F, Vector<double> &U)
 {
+  const DiscreteSystem &system = s.system;
   const unsigned int n = system.n_dofs();
   const std::vector<bool> &fixed = system.fixed;
   U.reinit(n);
@@ -583,7 +590,7 @@ void solve_with_ropes(const DiscreteSystem &system,
     for (unsigned int i = 0; i < n; ++i)
       if (fixed[i])
         Ft[i] = 0.;
-    solve_linear(system, contacts, held, K, Ft, linear_solver, U_next, contact_forces);
+    solve_linear(s, K, Ft, U_next);
     du = 0.;
     for (unsigned int i = 0; i < n; ++i)
       du += fixed[i] ? 0. : (U_next[i] - U[i]) * (U_next[i] - U[i]);
@@ -653,15 +660,16 @@ void solve_static(const DiscreteSystem &system,
     if (fixed[i])
       F[i] = 0.;
 
+  const StaticSolve s{system, contacts, held, linear_solver, contact_forces};
   if (!system.ropes.empty())
   {
-    solve_with_ropes(system, contacts, held, F, linear_solver, U, contact_forces);
+    solve_with_ropes(s, F, U);
     return;
   }
   // K with the fixed DoFs decoupled (positive diagonal, no couplings)
   SparseMatrix<double> K(system.stiffness_pattern);
   K.copy_from(system.stiffness);
   decouple_fixed_dofs(K, fixed);
-  solve_linear(system, contacts, held, K, F, linear_solver, U, contact_forces);
+  solve_linear(s, K, F, U);
 }
 } // namespace hati

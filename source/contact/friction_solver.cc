@@ -199,25 +199,23 @@ bool slide_one_tangent(
 }
 } // namespace
 
-FrictionState solve_local_coulomb(const double *W,
-                                  const unsigned int size,
-                                  const double *q,
-                                  const double mu,
-                                  const bool bilateral,
-                                  double *r,
-                                  bool &exact)
+LocalCoulombSolution solve_local_coulomb(const double *W,
+                                         const unsigned int size,
+                                         const double *q,
+                                         const double mu,
+                                         const bool bilateral,
+                                         double *r)
 {
   Assert(size >= 1 && size <= 3, ExcIndexRange(size, 1, 4));
-  exact = true;
   for (unsigned int i = 0; i < size; ++i)
     r[i] = 0.;
   // open: no impulse is needed to keep the gap from closing
   if (!bilateral && q[0] >= 0.)
-    return FrictionState::open;
+    return {FrictionState::open, true};
   if (size == 1)
   {
     r[0] = bilateral ? -q[0] / W[0] : std::max(0., -q[0] / W[0]);
-    return r[0] != 0. ? FrictionState::slip : FrictionState::open;
+    return {r[0] != 0. ? FrictionState::slip : FrictionState::open, true};
   }
   // sticking: u = 0, inside the cone
   double stick[3] = {0., 0., 0.}, minus_q[3];
@@ -228,7 +226,7 @@ FrictionState solve_local_coulomb(const double *W,
   if (solved && (bilateral || stick[0] >= 0.) && tangential <= mu * std::abs(stick[0]))
   {
     std::copy(stick, stick + size, r);
-    return FrictionState::stick;
+    return {FrictionState::stick, true};
   }
   // sliding: u_n = 0, r_t = -mu |r_n| u_t / |u_t|; r_n = sigma rho
   for (const double sigma : {1., -1.})
@@ -237,10 +235,9 @@ FrictionState solve_local_coulomb(const double *W,
       break;
     if (size == 2 ? slide_one_tangent(W, q, mu, sigma, r)
                   : slide_two_tangents(W, q, mu, sigma, r))
-      return FrictionState::slip;
+      return {FrictionState::slip, true};
   }
   // no solution found: the sticking impulse projected on the cone
-  exact = false;
   if (solved)
   {
     std::copy(stick, stick + size, r);
@@ -251,7 +248,7 @@ FrictionState solve_local_coulomb(const double *W,
       for (unsigned int i = 1; i < size; ++i)
         r[i] *= bound / tangential;
   }
-  return FrictionState::slip;
+  return {FrictionState::slip, false};
 }
 
 namespace
@@ -390,9 +387,8 @@ bool block_solve(const FullMatrix<double> &Wb,
         Wr[a * f + c] = w;
       }
     }
-    bool exact = true;
-    const FrictionState st = solve_local_coulomb(Wr, f, qr, mu, bilateral, rr, exact);
-    if (!exact)
+    const LocalCoulombSolution local = solve_local_coulomb(Wr, f, qr, mu, bilateral, rr);
+    if (!local.exact)
       continue;
     std::fill(rb.begin(), rb.end(), 0.);
     for (unsigned int a = 0; a < f; ++a)
@@ -426,7 +422,7 @@ bool block_solve(const FullMatrix<double> &Wb,
       }
     if (valid)
     {
-      state = st;
+      state = local.state;
       return true;
     }
   }
@@ -434,15 +430,16 @@ bool block_solve(const FullMatrix<double> &Wb,
 }
 } // namespace
 
-FrictionSolverResult solve_frictional_cluster(const FullMatrix<double> &W,
-                                              const Vector<double> &q,
-                                              const std::vector<unsigned int> &first,
-                                              const std::vector<double> &mu,
-                                              const std::vector<bool> &bilateral,
+FrictionSolverResult solve_frictional_cluster(const FrictionalCluster &cluster,
                                               Vector<double> &r,
                                               std::vector<FrictionState> &state,
                                               const FrictionSolverControl &control)
 {
+  const FullMatrix<double> &W = cluster.W;
+  const Vector<double> &q = cluster.q;
+  const std::vector<unsigned int> &first = cluster.first;
+  const std::vector<double> &mu = cluster.mu;
+  const std::vector<bool> &bilateral = cluster.bilateral;
   const unsigned int m = mu.size(), n = q.size();
   AssertDimension(first.size(), m + 1);
   AssertDimension(first[m], n);
@@ -540,9 +537,10 @@ FrictionSolverResult solve_frictional_cluster(const FullMatrix<double> &W,
           for (unsigned int j = 0; j < size; ++j)
             Wk[i * size + j] = W(a + i, a + j);
         }
-        bool exact = true;
-        state[c] = solve_local_coulomb(Wk, size, qk, mu[c], bilateral[c], rk, exact);
-        exact_sweep = exact_sweep && exact;
+        const LocalCoulombSolution local =
+            solve_local_coulomb(Wk, size, qk, mu[c], bilateral[c], rk);
+        state[c] = local.state;
+        exact_sweep = exact_sweep && local.exact;
         double d = 0., l = 0.;
         for (unsigned int i = 0; i < size; ++i)
         {

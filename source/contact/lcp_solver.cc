@@ -191,4 +191,15 @@ void solve_lcp(const FullMatrix<double> &W,
     AssertThrow(false, ExcMessage(s.str()));
   }
 }
+
+void solve_equalities(const FullMatrix<double> &W,
+                      const Vector<double> &q,
+                      Vector<double> &lambda)
+{
+  FullMatrix<double> W_inverse(W);
+  W_inverse.gauss_jordan();
+  lambda.reinit(q.size());
+  W_inverse.vmult(lambda, q);
+  lambda *= -1.;
+}
 } // namespace hati

@@ -25,11 +25,8 @@ double section_area(const std::string &text, const std::string &entry)
   return parse_frame_section(text, where + entry).A;
 }
 
-/**
- * The entries after the geometry, sections and material: masses, wheel
- * contacts, damping, travel and the element lengths.
- */
-void declare_masses_contacts_and_mesh(ParameterHandler &prm)
+/** The entries after the geometry, sections and material: the masses and the rope. */
+void declare_masses(ParameterHandler &prm)
 {
   prm.declare_entry(
       "Rail mass per metre",
@@ -80,6 +77,11 @@ void declare_masses_contacts_and_mesh(ParameterHandler &prm)
       "section 11, k = 4 E_r A_r / L = 9.328e7 N m / L (d = 20 mm, metallic "
       "area 0.583 d^2, rope modulus E_r = 100 GPa): 1.555e7 N/m for L = 6 "
       "m.");
+}
+
+/** The wheel contacts, the damping and how the crane is held along its travel. */
+void declare_contacts_and_damping(ParameterHandler &prm)
+{
   prm.declare_entry(
       "Flange clearance",
       "0.02",
@@ -160,6 +162,11 @@ void declare_masses_contacts_and_mesh(ParameterHandler &prm)
                     "ones with the Flange clearance); pinned: they are held in X, Y and "
                     "Z (no crane wheel contact: the paper's case, where only the trolley "
                     "wheels can lift off).");
+}
+
+/** The element lengths and the explicit zones around the wheels. */
+void declare_mesh(ParameterHandler &prm)
+{
   prm.declare_entry("Explicit element length",
                     "0.5",
                     Patterns::Double(0., 200.),
@@ -256,7 +263,9 @@ void BridgeCrane::Parameters::declare_parameters(ParameterHandler &prm)
                     "-1 < nu < 0.5, 0 < rho <= 1e5 kg/m^3. Default: structural steel. "
                     "The girders and end carriages with their rails (mass_bridge) may "
                     "weigh at most 1e8 kg.");
-  declare_masses_contacts_and_mesh(prm);
+  declare_masses(prm);
+  declare_contacts_and_damping(prm);
+  declare_mesh(prm);
 }
 
 void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)

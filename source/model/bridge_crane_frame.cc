@@ -290,20 +290,17 @@ void add_wheel_contacts(const CraneParameters &p, FrameDescription &f)
                      const bool two_sided,
                      const int rolls = -2)
   {
-    FrameDescription::NodeContact c;
-    if (friction && rolls > -2)
-    {
-      c.friction = p.wheel_friction;
-      c.rolls = rolls;
-    }
-    c.name = name;
-    c.node = node_name;
-    c.other_node = other;
-    c.normal = normal;
-    c.gap = gap;
-    c.restitution = p.wheel_restitution;
-    c.two_sided = two_sided;
-    f.contacts.push_back(c);
+    // friction where the wheel is braked (rolls = -1) or rolls along an axis
+    const bool rubs = friction && rolls > -2;
+    f.contacts.push_back(FrameDescription::NodeContact{name,
+                                                       node_name,
+                                                       other,
+                                                       normal,
+                                                       gap,
+                                                       p.wheel_restitution,
+                                                       two_sided,
+                                                       rubs ? p.wheel_friction : 0.,
+                                                       rubs ? rolls : -1});
   };
   const Tensor<1, 3> ex({1., 0., 0.}), ey({0., 1., 0.}), ez({0., 0., 1.});
   for (unsigned int k = 1; k <= 4 && p.crane_wheels == "contacts"; ++k)

@@ -17,6 +17,24 @@ void require(const bool ok, const std::string &entry, const std::string &what)
   AssertThrow(ok, ExcMessage("Model/Frame/" + entry + ": " + what));
 }
 
+/**
+ * The name @p name, given by @p who in @p entry, is a key of @p known:
+ * "<who> names <kind> '<name>', which is not in Model/Frame/<list>" otherwise.
+ */
+template <class Map>
+void require_known(const Map &known,
+                   const std::string &name,
+                   const std::string &entry,
+                   const std::string &who,
+                   const std::string &kind,
+                   const std::string &list)
+{
+  require(known.count(name),
+          entry,
+          who + " names " + kind + " '" + name + "', which is not in Model/Frame/" +
+              list);
+}
+
 /** No name twice in @p names: "<kind> '<name>' is <twice>" otherwise. */
 void require_unique(const std::vector<std::string> &names,
                     const std::string &entry,
@@ -113,19 +131,11 @@ std::set<std::string> validate_members(const FrameDescription &d)
     for (const auto &n :
          m.path.empty() ? std::vector<std::string>{m.start, m.end} : m.path)
     {
-      require(d.nodes.count(n),
-              "Members",
-              member + " names node '" + n + "', which is not in Model/Frame/Nodes");
+      require_known(d.nodes, n, "Members", member, "node", "Nodes");
       used_nodes.insert(n);
     }
-    require(d.sections.count(m.section),
-            "Members",
-            member + " names section '" + m.section +
-                "', which is not in Model/Frame/Sections");
-    require(d.materials.count(m.material),
-            "Members",
-            member + " names material '" + m.material +
-                "', which is not in Model/Frame/Materials");
+    require_known(d.sections, m.section, "Members", member, "section", "Sections");
+    require_known(d.materials, m.material, "Members", member, "material", "Materials");
     require(m.n_elements >= 1 && (m.path.empty() || m.path.size() == m.n_elements + 1),
             "Members",
             member + ": the number of elements does not match its nodes");
@@ -217,10 +227,7 @@ void validate_ropes(const FrameDescription &d, const std::set<std::string> &used
             "Ropes",
             rope + ": its hook point '" + r.node +
                 "' is not an end of any member in Model/Frame/Members");
-    require(d.nodes.count(r.other_node),
-            "Ropes",
-            rope + " names node '" + r.other_node +
-                "', which is not in Model/Frame/Nodes");
+    require_known(d.nodes, r.other_node, "Ropes", rope, "node", "Nodes");
     require(
         r.other_node != r.node, "Ropes", rope + " names the node '" + r.node + "' twice");
     require(r.stiffness > 0. && r.stiffness <= FrameDescription::max_rope_stiffness,

@@ -8,6 +8,32 @@
 
 namespace hati
 {
+namespace
+{
+/**
+ * Put @p value in slot @p slot of the ring @p ring of @p n entries and
+ * update the ring's running @p sum, summed afresh once per turn of the
+ * ring so that round-off does not accumulate (the windowed mean forces).
+ */
+void push_ring(double *ring,
+               const unsigned long n,
+               const unsigned long slot,
+               const double value,
+               double &sum)
+{
+  double &old = ring[slot];
+  sum += value - old;
+  old = value;
+  if (slot == n - 1)
+  {
+    double s = 0.;
+    for (unsigned long i = 0; i < n; ++i)
+      s += ring[i];
+    sum = s;
+  }
+}
+} // namespace
+
 ContactStatistics::ContactStatistics(const std::vector<ContactRow> &contacts,
                                      const std::vector<double> &initial_gaps,
                                      const double force_window)
@@ -64,16 +90,11 @@ void ContactStatistics::add_step(const double time,
     const unsigned long slot = (n_steps - 1) % n_window;
     for (unsigned int g = 0; g < groups.size(); ++g)
     {
-      double &old = window_impulses[g * n_window + slot];
-      window_sum[g] += group_impulse[g] - old;
-      old = group_impulse[g];
-      if (slot == n_window - 1)
-      {
-        double s = 0.;
-        for (unsigned long i = 0; i < n_window; ++i)
-          s += window_impulses[g * n_window + i];
-        window_sum[g] = s;
-      }
+      push_ring(&window_impulses[g * n_window],
+                n_window,
+                slot,
+                group_impulse[g],
+                window_sum[g]);
       const double mean_force = window_sum[g] / (n_window * dt);
       if ((n_steps > n_window || !initially_closed[g]) &&
           mean_force > groups[g].peak_mean_force)
@@ -161,16 +182,7 @@ void ContactStatistics::add_friction_step(const double time,
     const double impulse =
         std::hypot(group_tangential[2 * g], group_tangential[2 * g + 1]);
     // the same window as the mean contact force (summed afresh once per turn)
-    double &old = friction_window[g * n + slot];
-    friction_sum[g] += impulse - old;
-    old = impulse;
-    if (slot == n - 1)
-    {
-      double sum = 0.;
-      for (unsigned long i = 0; i < n; ++i)
-        sum += friction_window[g * n + i];
-      friction_sum[g] = sum;
-    }
+    push_ring(&friction_window[g * n], n, slot, impulse, friction_sum[g]);
     const double force = friction_sum[g] / (n * dt);
     if ((n_steps > n || !initially_closed[g]) && force > e.peak_friction_force)
     {

@@ -27,11 +27,8 @@ void run_cd_lagrange(Problem &problem, RunDirectory &directory)
     std::cout << ", frequency-range damping (" << integrator.memory().n_branches()
               << " branches, sum alpha = " << integrator.memory().alpha_sum() << ")";
   std::cout << std::endl;
-  run_time_loop(
-      integrator,
-      problem,
-      directory,
-      timer,
-      {{"method", "CD-Lagrange"}, {"dt_crit", integrator.critical_time_step()}});
+  const SummaryEntries method = {{"method", "CD-Lagrange"},
+                                 {"dt_crit", integrator.critical_time_step()}};
+  run_time_loop(integrator, problem, directory, timer, method);
 }
 } // namespace hati

@@ -31,8 +31,7 @@ std::unique_ptr<HATICoupling> make_coupling(const Problem &problem)
                                           problem.time_parameters.safety_factor,
                                           problem.hati_parameters,
                                           problem.newmark_parameters,
-                                          problem.damping.rayleigh,
-                                          problem.damping.branches);
+                                          problem.damping);
   }
   catch (const ExceptionBase &e)
   {

@@ -42,11 +42,8 @@ void run_newmark(Problem &problem, RunDirectory &directory)
     std::cout << ", Rayleigh a0 = " << integrator.mass_damping_coefficient()
               << " 1/s, a1 = " << integrator.stiffness_damping_coefficient() << " s";
   std::cout << std::endl;
-  run_time_loop(
-      integrator,
-      problem,
-      directory,
-      timer,
-      {{"method", "Newmark"}, {"factorization_time", integrator.factorization_time()}});
+  const SummaryEntries method = {{"method", "Newmark"},
+                                 {"factorization_time", integrator.factorization_time()}};
+  run_time_loop(integrator, problem, directory, timer, method);
 }
 } // namespace hati

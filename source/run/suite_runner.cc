@@ -4,9 +4,9 @@
 #include <hati/output/output_file.h>
 #include <hati/output/run_directory.h>
 #include <hati/output/suite_statistics.h>
+#include <hati/run/simulation.h>
 #include <hati/run/suite_runner.h>
 #include <hati/run/work_counter.h>
-#include <hati/simulation.h>
 
 #include <spawn.h>
 #include <sys/wait.h>

@@ -585,14 +585,7 @@ void CDLagrange::apply_contacts()
     delassus(cluster_rows, minv, W);
     Vector<double> &l = lcp_lambda[m];
     if (prescribed)
-    {
-      // bilateral: W lambda = -q on the prescribed active set
-      FullMatrix<double> W_inverse(W);
-      W_inverse.gauss_jordan();
-      l.reinit(m);
-      W_inverse.vmult(l, q);
-      l *= -1.;
-    }
+      solve_equalities(W, q, l); // W lambda = -q on the prescribed active set
     else
       solve_lcp(W, q, bilateral, l);
 
@@ -644,11 +637,7 @@ Energies CDLagrange::energies() const
   e.contact_work = contact_work;
   e.dissipated = dissipated;
   e.friction_dissipated = -frictional_contacts.work();
-  if (branches.active())
-  {
-    e.damping_stored = branches.stored_energy(system.stiffness);
-    e.dissipated += branches.work() - e.damping_stored;
-  }
+  branches.add_energies(e, system.stiffness);
   e.kinetic_explicit = e.kinetic;
   e.internal_explicit = e.internal;
   return e;

@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <hati/contact/lcp_solver.h>
 #include <hati/contact/sparse_rows.h>
 #include <hati/time/frictional_contacts.h>
 
@@ -30,12 +31,9 @@ bool FrictionalContacts::frictional(const std::vector<unsigned int> &cluster) co
 void FrictionalContacts::begin_step(const Vector<double> &v_after)
 {
   // the first half of the work of the last step's impulses (doc/theory.md E1, A9)
+  add_half_work(v_after);
   for (unsigned int k = 0; k < contacts.size(); ++k)
   {
-    for (unsigned int t = 0; t < contacts[k].tangents.size(); ++t)
-      if (tangential[2 * k + t] != 0.)
-        friction_work +=
-            0.5 * contacts[k].tangents[t].apply(v_after) * tangential[2 * k + t];
     tangential[2 * k] = tangential[2 * k + 1] = 0.;
     states[k] = FrictionState::open;
     in_friction_cluster[k] = 0;
@@ -44,11 +42,15 @@ void FrictionalContacts::begin_step(const Vector<double> &v_after)
 
 void FrictionalContacts::end_step(const Vector<double> &v_before)
 {
+  add_half_work(v_before);
+}
+
+void FrictionalContacts::add_half_work(const Vector<double> &v)
+{
   for (unsigned int k = 0; k < contacts.size(); ++k)
     for (unsigned int t = 0; t < contacts[k].tangents.size(); ++t)
       if (tangential[2 * k + t] != 0.)
-        friction_work +=
-            0.5 * contacts[k].tangents[t].apply(v_before) * tangential[2 * k + t];
+        friction_work += 0.5 * contacts[k].tangents[t].apply(v) * tangential[2 * k + t];
 }
 
 void FrictionalContacts::solve(const std::vector<unsigned int> &cluster,
@@ -90,17 +92,13 @@ void FrictionalContacts::solve(const std::vector<unsigned int> &cluster,
   if (prescribed)
   {
     // every row an equality: W r = -q (the sticking response of the active set)
-    FullMatrix<double> W_inverse(W);
-    W_inverse.gauss_jordan();
-    r.reinit(n);
-    W_inverse.vmult(r, q);
-    r *= -1.;
+    solve_equalities(W, q, r);
     cluster_states.assign(cluster.size(), FrictionState::stick);
   }
   else
   {
-    const FrictionSolverResult result =
-        solve_frictional_cluster(W, q, first, mu, bilateral, r, cluster_states, control);
+    const FrictionSolverResult result = solve_frictional_cluster(
+        {W, q, first, mu, bilateral}, r, cluster_states, control);
     sweeps_max = std::max(sweeps_max, result.sweeps);
     if (!result.converged)
       ++n_unconverged;

@@ -57,14 +57,19 @@ HATICoupling::HATICoupling(const Decomposition &decomposition,
                            const double safety_factor,
                            const HATIParameters &parameters,
                            const NewmarkParameters &newmark_parameters,
-                           const RayleighDamping &damping,
-                           const MaxwellBranches &branches)
+                           const DampingModel &damping)
     : decomposition(decomposition), m(parameters.time_step_ratio),
-      explicit_integrator(
-          decomposition.parts[0].system, dt, safety_factor, damping, branches),
+      explicit_integrator(decomposition.parts[0].system,
+                          dt,
+                          safety_factor,
+                          damping.rayleigh,
+                          damping.branches),
       explicit_view(explicit_integrator.coupling_view()),
-      implicit(
-          decomposition.parts[1].system, m * dt, newmark_parameters, damping, branches)
+      implicit(decomposition.parts[1].system,
+               m * dt,
+               newmark_parameters,
+               damping.rayleigh,
+               damping.branches)
 {
   const auto start = Clock::now();
   AssertThrow(
@@ -74,8 +79,12 @@ HATICoupling::HATICoupling(const Decomposition &decomposition,
   // ramps and its interface matrices
   interface = std::make_unique<InterfaceProblem>(
       decomposition, implicit, newmark_parameters.gamma);
-  superposition = std::make_unique<RampSuperposition>(
-      decomposition.parts[0].system, dt, m, damping, branches, *interface);
+  superposition = std::make_unique<RampSuperposition>(decomposition.parts[0].system,
+                                                      dt,
+                                                      m,
+                                                      damping.rayleigh,
+                                                      damping.branches,
+                                                      *interface);
   const unsigned int n_gamma = interface->size();
   for (auto *v : {&lambda_n,
                   &lambda_m,

@@ -183,7 +183,7 @@ void InterfaceProblem::link(Newmark &implicit,
   const unsigned int n_gamma = size();
   for (unsigned int k = 0; k < n_gamma; ++k)
     u_old[k] = rows_I[k].apply(implicit.displacement());
-  if (!link_columns.empty())
+  if (!link_columns.has_no_entries())
   {
     link_columns.vmult(link_acceleration, lambda_end);
     implicit.add_link_acceleration(link_acceleration);

@@ -90,6 +90,14 @@ void MaxwellMemory::history(Vector<double> &h) const
     h.add(alpha[l] * decay[l], q[l]);
 }
 
+void MaxwellMemory::add_energies(Energies &e, const SparseMatrix<double> &K) const
+{
+  if (!active())
+    return;
+  e.damping_stored = stored_energy(K);
+  e.dissipated += branch_work - e.damping_stored;
+}
+
 double MaxwellMemory::stored_energy(const SparseMatrix<double> &K) const
 {
   double e = 0.;

@@ -566,11 +566,7 @@ Energies Newmark::energies() const
   e.internal = 0.5 * (U * tmp);
   e.external_work = external_work;
   e.dissipated = dissipated;
-  if (branches.active())
-  {
-    e.damping_stored = branches.stored_energy(system.stiffness);
-    e.dissipated += branches.work() - e.damping_stored;
-  }
+  branches.add_energies(e, system.stiffness);
   e.kinetic_implicit = e.kinetic;
   e.internal_implicit = e.internal;
   return e;

@@ -44,6 +44,13 @@ struct FrictionSolverResult
   bool converged = true;
 };
 
+/** What solve_local_coulomb() found: the state, and whether it is exact. */
+struct LocalCoulombSolution
+{
+  FrictionState state = FrictionState::open;
+  bool exact = true;
+};
+
 /**
  * The exact solution of the local problem of one contact (A9, doc/theory.md
  * A9): relative velocity `u = W r + q` with `W` its @p size x @p size
@@ -56,32 +63,40 @@ struct FrictionSolverResult
  * both directions in closed form; two: the sliding direction from Newton's
  * method on its angle, started from the fixed point `s = u_t / ||u_t||`,
  * which is exact at once for an isotropic block, then a scan of the angle
- * with bisection if Newton fails). @p exact is set false when no
- * solution was found (the sticking impulse projected on the cone is
- * returned).
+ * with bisection if Newton fails). Returns the state and whether the
+ * solution is exact: when none was found, the sticking impulse projected on
+ * the cone is returned in @p r, `exact` false.
  */
-FrictionState solve_local_coulomb(const double *W,
-                                  const unsigned int size,
-                                  const double *q,
-                                  const double mu,
-                                  const bool bilateral,
-                                  double *r,
-                                  bool &exact);
+LocalCoulombSolution solve_local_coulomb(const double *W,
+                                         const unsigned int size,
+                                         const double *q,
+                                         const double mu,
+                                         const bool bilateral,
+                                         double *r);
 
 /**
- * Nonsmooth Gauss-Seidel over the contacts of a cluster (A9): the rows of
- * contact k are `first[k] .. first[k+1] - 1` of the Delassus matrix @p W and
- * of @p q (normal first, then its tangents), @p mu and @p bilateral per
- * contact. Each sweep solves every contact's local problem exactly
+ * The data of one cluster of contacts with friction (A9): the rows of
+ * contact k are `first[k] .. first[k+1] - 1` of the Delassus matrix @p W
+ * and of the free relative velocity @p q (normal first, then its tangents);
+ * @p mu and @p bilateral per contact. References: the cluster owns nothing.
+ */
+struct FrictionalCluster
+{
+  const FullMatrix<double> &W;
+  const Vector<double> &q;
+  const std::vector<unsigned int> &first;
+  const std::vector<double> &mu;
+  const std::vector<bool> &bilateral;
+};
+
+/**
+ * Nonsmooth Gauss-Seidel over the contacts of a @p cluster (A9). Each
+ * sweep solves every contact's local problem exactly
  * (solve_local_coulomb()) with the impulses of the others as they are. The
  * impulses start from zero. @p r receives the impulses (N s, per row) and
  * @p state the state of each contact.
  */
-FrictionSolverResult solve_frictional_cluster(const FullMatrix<double> &W,
-                                              const Vector<double> &q,
-                                              const std::vector<unsigned int> &first,
-                                              const std::vector<double> &mu,
-                                              const std::vector<bool> &bilateral,
+FrictionSolverResult solve_frictional_cluster(const FrictionalCluster &cluster,
                                               Vector<double> &r,
                                               std::vector<FrictionState> &state,
                                               const FrictionSolverControl &control = {});

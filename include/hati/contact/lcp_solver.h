@@ -44,6 +44,16 @@ void solve_lcp(const FullMatrix<double> &W,
                const Vector<double> &q,
                const std::vector<bool> &bilateral,
                Vector<double> &lambda);
+
+/**
+ * The impulses of a prescribed active set, every row an equality:
+ * `W lambda = -q` (W inverted by Gauss-Jordan), into @p lambda (resized to
+ * the size of @p q). Used where a step must repeat a known active set (the
+ * coupling's prescribed passes, A5, A9).
+ */
+void solve_equalities(const FullMatrix<double> &W,
+                      const Vector<double> &q,
+                      Vector<double> &lambda);
 } // namespace hati
 
 #endif

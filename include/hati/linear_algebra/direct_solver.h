@@ -21,10 +21,9 @@ using namespace dealii;
 class DirectSolver
 {
 public:
+  /** Not copyable: it owns its factorisation (a unique pointer). */
   DirectSolver();
   ~DirectSolver();
-  DirectSolver(const DirectSolver &) = delete;
-  DirectSolver &operator=(const DirectSolver &) = delete;
 
   /**
    * Copy @p matrix to Trilinos and factorise it. Throws ExcMessage with

@@ -55,6 +55,29 @@ double with_kernel_width(const unsigned int width,
 }
 
 /**
+ * Row @p i of a row-padded operator S of width @p w applied to two vectors:
+ * `sx += (S x)_i`, `sy += (S y)_i`, the entries summed in row order (the
+ * damped and the frequency-range kernels; inlined, so that a compile-time
+ * width unrolls the loop).
+ */
+inline void two_row_products(const unsigned int w,
+                             const unsigned int i,
+                             const unsigned int *__restrict col,
+                             const double *__restrict val,
+                             const double *__restrict x,
+                             const double *__restrict y,
+                             double &sx,
+                             double &sy)
+{
+  for (unsigned int k = 0; k < w; ++k)
+  {
+    const std::size_t ik = std::size_t(i) * w + k;
+    sx += val[ik] * x[col[ik]];
+    sy += val[ik] * y[col[ik]];
+  }
+}
+
+/**
  * v_new = v + a - S u for a row-padded operator S of width W (A2-A3 with
  * S = dt M^-1 K, a = dt M^-1 F_ext); W = 0: the runtime @p width. W is a
  * compile-time constant so that the row loop is unrolled.
@@ -108,12 +131,7 @@ double damped_free_velocity_rows(const unsigned int width,
   for (unsigned int i = 0; i < n; ++i)
   {
     double ku = 0., kv = 0.;
-    for (unsigned int k = 0; k < w; ++k)
-    {
-      const std::size_t ik = std::size_t(i) * w + k;
-      ku += val[ik] * u[col[ik]];
-      kv += val[ik] * v[col[ik]];
-    }
+    two_row_products(w, i, col, val, u, v, ku, kv);
     const double g = a[i] - ku;
     const double vn = c1 * v[i] + c2 * (g - a1 * kv);
     const double dn = g - (vn - v[i]);
@@ -152,12 +170,7 @@ double branch_free_velocity_rows(const unsigned int width,
   for (unsigned int i = 0; i < n; ++i)
   {
     double ku = 0., ks = 0.;
-    for (unsigned int k = 0; k < w; ++k)
-    {
-      const std::size_t ik = std::size_t(i) * w + k;
-      ku += val[ik] * u[col[ik]];
-      ks += val[ik] * s[col[ik]];
-    }
+    two_row_products(w, i, col, val, u, s, ku, ks);
     v_new[i] = v[i] + a[i] - ku - ks;
     work += m[i] * v[i] * (d[i] + ks);
     d[i] = ks;

@@ -58,7 +58,8 @@ public:
     n_columns = n;
     value.assign(std::size_t(m) * n, 0.);
   }
-  bool empty() const { return value.empty(); }
+  /** Whether the matrix has no entries (never set up, or 0 rows or columns). */
+  bool has_no_entries() const { return value.empty(); }
   double &operator()(const unsigned int i, const unsigned int j)
   {
     return value[std::size_t(j) * n_rows + i];

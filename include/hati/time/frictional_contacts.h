@@ -111,6 +111,9 @@ public:
   void restore(const Record &record);
 
 private:
+  /** Half the work of the step's tangential impulses at velocity @p v (E1, A9). */
+  void add_half_work(const Vector<double> &v);
+
   const std::vector<ContactRow> &contacts;
   bool with_friction = false;
   FrictionSolverControl control;

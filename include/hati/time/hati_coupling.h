@@ -6,6 +6,7 @@
 
 #include <hati/model/decomposition.h>
 #include <hati/time/cd_lagrange.h>
+#include <hati/time/damping.h>
 #include <hati/time/energies.h>
 #include <hati/time/interface_problem.h>
 #include <hati/time/newmark.h>
@@ -95,10 +96,11 @@ public:
    *        outlive the coupling.
    * @param n_global_dofs number of DoFs of the whole model (outputs).
    * @param dt micro step (s), checked against the explicit dt_crit.
-   * @param branches Maxwell branches of frequency-range damping (A8 in the
-   *        explicit part, N4 in the implicit one; none by default, not
-   *        combined with Rayleigh damping): the memory variables are part
-   *        of both states and of the unit-ramp response (G3').
+   * @param damping Rayleigh damping (A7), or the Maxwell branches of
+   *        frequency-range damping (A8 in the explicit part, N4 in the
+   *        implicit one, not combined with Rayleigh damping): the memory
+   *        variables are part of both states and of the unit-ramp response
+   *        (G3'); none by default.
    */
   HATICoupling(const Decomposition &decomposition,
                const unsigned int n_global_dofs,
@@ -106,8 +108,7 @@ public:
                const double safety_factor,
                const HATIParameters &parameters,
                const NewmarkParameters &newmark_parameters,
-               const RayleighDamping &damping,
-               const MaxwellBranches &branches = MaxwellBranches());
+               const DampingModel &damping = DampingModel());
 
   /** One macro step t_n -> t_{n+m}: (G1), (G2), (G3'), (G4). */
   void step();

@@ -4,6 +4,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <hati/time/energies.h>
 #include <hati/time/frequency_range_damping.h>
 
 #include <vector>
@@ -79,6 +80,12 @@ public:
 
   /** Stored energy of the branches, `1/2 sum_l alpha_l q_l.K q_l` (J), with @p K. */
   double stored_energy(const SparseMatrix<double> &K) const;
+
+  /**
+   * With branches, book them in @p e (A8): `damping_stored` the stored
+   * energy with @p K, and the branch work less it added to `dissipated`.
+   */
+  void add_energies(Energies &e, const SparseMatrix<double> &K) const;
 
   /** Add @p work (J), the work of the branch force on a step's increment. */
   void add_work(const double work) { branch_work += work; }

@@ -1,7 +1,7 @@
 #include <hati/output/run_directory.h>
 #include <hati/run/analysis_registry.h>
 #include <hati/run/problem.h>
-#include <hati/simulation.h>
+#include <hati/run/simulation.h>
 
 #include <filesystem>
 #include <iostream>

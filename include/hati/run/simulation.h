@@ -1,5 +1,5 @@
-#ifndef hati_simulation_h
-#define hati_simulation_h
+#ifndef hati_run_simulation_h
+#define hati_run_simulation_h
 
 #include <deal.II/base/parameter_handler.h>
 
