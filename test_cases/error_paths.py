@@ -121,6 +121,14 @@ rc, lines, summary, _ = run("diverge_hati", ctx.prm("portal_frame_split.prm"),
                             "Time integration/End time=0.01")
 expect_divergence("HATI, huge nodal load", rc, lines, summary, 2e-4, "ux", "node 'A1'",
                   portal_size)
+# between rows (a row every 0.01 s = 50 macro steps), HATI checks every 256
+# micro steps: every 25 macro steps at m = 10, caught at 25 x 2e-4 = 5e-3 s
+rc, lines, summary, _ = run("diverge_hati_between_rows", ctx.prm("portal_frame_split.prm"),
+                            "Model/Frame/Nodal loads=A1: 1e250, 0, 0",
+                            "Output/History interval=0.01",
+                            "Time integration/End time=0.02")
+expect_divergence("HATI between rows", rc, lines, summary, 5e-3, "ux", "node 'A1'",
+                  portal_size)
 # an AT2 record with one sample of 1e300 g at t = 0.06 s (DT = 0.02 s): the
 # ground acceleration rises from t = 0.04 s, caught at the next row
 at2 = os.path.join(ctx.work, "huge.AT2")

@@ -171,6 +171,13 @@ private:
   Progress progress;
   /** The state finite and within its bound (at rows and between them). */
   const Watchdog watchdog;
+  /**
+   * Steps between two checks of the state besides the output rows: every
+   * Newmark step; CD-Lagrange every Watchdog::check_interval steps and HATI
+   * every check_interval micro steps (at least every macro step: its global
+   * state is assembled for the check).
+   */
+  const unsigned long every_check;
   /** n_steps unless SIGINT/SIGTERM stopped the loop. */
   unsigned long steps_done = 0;
   unsigned long micro_step = 0;
@@ -216,6 +223,11 @@ TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
                  problem.output_parameters.contact_force_window),
       progress(problem.output_parameters.progress_interval, end_time),
       watchdog(*problem.model, problem.system),
+      every_check(
+          explicit_scheme ? Watchdog::check_interval
+          : std::is_same_v<Integrator, HATICoupling>
+              ? std::max(1ul, Watchdog::check_interval / time_step_ratio(integrator))
+              : 1ul),
       friction(friction_of(integrator) && friction_of(integrator)->any()
                    ? friction_of(integrator)
                    : nullptr)
@@ -328,7 +340,7 @@ template <class Integrator> void TimeLoop<Integrator>::run(TimerOutput &timer)
     if (step % every_history == 0 || (every_vtu > 0 && step % every_vtu == 0) ||
         step == n_steps)
       write(step); // checks the state
-    else if (!explicit_scheme || step % Watchdog::check_interval == 0)
+    else if (step % every_check == 0)
       check_state(watchdog,
                   writer,
                   integrator.displacement(),

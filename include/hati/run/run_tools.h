@@ -28,9 +28,10 @@ inline unsigned long steps_between(const double interval, const double dt)
  * displacement_factor times the model size L, every velocity finite. L (m)
  * is the largest of Model::size(), the initial gaps of the contacts, the
  * initial displacements and 1 m. The transient loops check the state at
- * every output row and besides every step of Newmark and HATI (a macro
- * step) and every check_interval steps of CD-Lagrange: one pass over U and
- * V, negligible beside the steps between two checks. Past the bound the
+ * every output row and besides every step of Newmark, every check_interval
+ * steps of CD-Lagrange and every check_interval micro steps of HATI (at
+ * least every macro step; its global state is assembled for a check): one
+ * pass over U and V, negligible beside the steps between two checks. Past the bound the
  * run stops with one line naming the quantity, its value, the DoF's place
  * and the time (summary.json: "failed").
  */
@@ -39,7 +40,7 @@ class Watchdog
 public:
   /** The bound of |u| in model sizes (m per m, or rad per m). */
   static constexpr double displacement_factor = 1e3;
-  /** CD-Lagrange steps between two checks besides those at output rows. */
+  /** CD-Lagrange (micro) steps between two checks besides those at output rows. */
   static constexpr unsigned long check_interval = 256;
 
   /** The bound of @p model, whose system @p system is (call after build()). */
