@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
@@ -178,7 +179,20 @@ int run_command_line(int argc, char **argv)
     if (suite.active()) // one Simulation per member (run/suite_runner.h)
       return SuiteRunner(prm, file, overrides, suite, MPI_COMM_WORLD).run();
 
+    // one run needs one rank: under mpirun the others would only find its
+    // output directory locked (a Suite spreads its members over the ranks)
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      return 0;
     simulation = std::make_unique<Simulation>(prm, file);
+    if (n_ranks > 1)
+      simulation->warn(
+          std::to_string(n_ranks) +
+          " MPI ranks for a single run: it runs on rank 0 and " +
+          (n_ranks == 2 ? std::string("the other rank stays")
+                        : "the other " + std::to_string(n_ranks - 1) + " ranks stay") +
+          " idle (a subsection Suite spreads the records of a suite over "
+          "the ranks)");
     simulation->run();
     if (stop_requested())
     {

@@ -6,7 +6,8 @@ Rinaldi 228 alone, with its response spectra) run serially and with
 members' CSV files are bitwise identical; suite_summary.json's envelope and
 mean, with the governing member, equal a hand calculation on suite.csv (the
 mean by rerunning with Statistic = mean, which reuses every member), and
-suite_spectra.csv the envelope of the members' spectra.csv."""
+suite_spectra.csv the envelope of the members' spectra.csv. A single run
+(no Suite) under `mpirun -np 2` runs once, on rank 0, with one warning."""
 import csv
 import filecmp
 import json
@@ -117,6 +118,28 @@ for i, row in enumerate(spectra):
         worst = max(worst, abs(float(row[column]) - max(values)))
 ctx.check("suite_spectra.csv = envelope of the members' spectra (m/s^2)", worst, 0.0, abs_tol=0.0)
 ctx.check_true("suite_spectra.csv: 2 damping ratios x 100 periods", len(spectra) == 200)
+
+# a single run (no Suite) under mpirun -np 2: rank 0 runs it and warns once,
+# the other rank stays idle (before, both ranks ran it and one found the
+# output directory locked, exit code 1); its files equal the serial run's
+single = ["Time integration/End time=0.2", "Output/Output interval=0", "Loading/Accelerogram X=" + elc]
+for tag in ("single_serial", "single_mpi"):
+    shutil.rmtree(os.path.join(ctx.work, tag), ignore_errors=True)
+single_serial, p = run_suite("single_serial", single)
+single_mpi, p = run_suite("single_mpi", single, mpi=2)
+warning = ("2 MPI ranks for a single run: it runs on rank 0 and the other rank stays idle "
+           "(a subsection Suite spreads the records of a suite over the ranks)")
+ctx.check_true("mpirun -np 2, single run: exit code 0, one warning line on stderr",
+               p.returncode == 0 and p.stderr.strip().splitlines() == ["hati: warning: " + warning],
+               "(exit %d) %s" % (p.returncode, p.stderr[-500:]))
+with open(os.path.join(single_mpi, "summary.json")) as f:
+    summary = json.load(f)
+ctx.check_true("mpirun -np 2, single run: summary.json completed, with the warning",
+               summary.get("status") == "completed" and summary.get("warnings") == [warning],
+               str(summary.get("warnings")))
+ctx.check_true("mpirun -np 2, single run: history.csv and energy.csv equal the serial run's",
+               all(filecmp.cmp(os.path.join(single_serial, f), os.path.join(single_mpi, f),
+                               shallow=False) for f in ("history.csv", "energy.csv")))
 
 _, p = run_suite("serial", suite + ["Suite/Statistic=mean"])
 ctx.check_true("Statistic = mean: every member reused",

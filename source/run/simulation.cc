@@ -47,4 +47,5 @@ void Simulation::run()
       .get(problem->analysis_parameters.type)
       .create(*problem, *run_directory);
 }
+void Simulation::warn(const std::string &message) { problem->warn(message); }
 } // namespace hati

@@ -42,6 +42,9 @@ public:
    */
   void record_failure(const std::string &message) noexcept;
 
+  /** A warning of the run (Problem::warn()): stderr and summary.json `warnings`. */
+  void warn(const std::string &message);
+
 private:
   std::unique_ptr<Problem> problem;
   std::string output_directory;
