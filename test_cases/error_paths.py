@@ -157,6 +157,24 @@ if m:
     ctx.check("CD-Lagrange, huge gravity: model size (m): the floor of 1 m", float(m.group(6)),
               1.0, rel=1e-12)
 
+# a static solution beyond 1e3 model sizes is refused, not reported: the
+# cantilever (2 m, E I = 2.1e11 x 0.05 x 0.1^3 / 12) under 1e14 N at its
+# tip, whose Timoshenko deflection P L^3 / (3 E I) + P L / (kappa G A)
+# (kappa = 5/6 for the rectangle) is 3.05e8 m
+rc, lines, summary, out = run("static_out_of_scale", ctx.prm("cantilever_static.prm"),
+                              "Model/Frame/Nodal loads=tip: 0, 0, -1e14")
+static = re.compile(r"^hati: error: the static solution is out of scale: the displacement uz = "
+                    r"([0-9.e+-]+) m at node 'tip' \(DoF \d+\) exceeds 1e3 times the model "
+                    r"size, 1e3 x 2 m = 2000 m \(look for a load out of scale")
+m = static.match(lines[0]) if len(lines) == 1 else None
+ctx.check_true("static, huge load: exit 1, one line naming the displacement and its place",
+               rc == 1 and m is not None, "(exit %d) %s" % (rc, lines))
+if m:
+    EI, kGA = 2.1e11 * 0.05 * 0.1 ** 3 / 12, 5 / 6 * 2.1e11 / 2.6 * 0.05 * 0.1
+    ctx.check("static, huge load: the Timoshenko deflection (m)", float(m.group(1)),
+              -1e14 * (2 ** 3 / (3 * EI) + 2 / kGA), rel=1e-5)
+ctx.check_true("static, huge load: no result written", not os.path.exists(out))
+
 # warnings: one line on stderr each and the list "warnings" of summary.json
 before = os.path.join(ctx.work, "before_zero.txt")
 with open(before, "w") as f:

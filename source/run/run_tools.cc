@@ -20,21 +20,33 @@ void Watchdog::check(const dealii::Vector<double> &u,
                      const dealii::Vector<double> *v,
                      const double t) const
 {
+  bool ok = within_bound(u);
+  if (v)
+    for (const double x : *v)
+      ok &= std::abs(x) <= std::numeric_limits<double>::max();
+  if (!ok)
+    fail(u, v, &t);
+}
+
+void Watchdog::check_static(const dealii::Vector<double> &u) const
+{
+  if (!within_bound(u))
+    fail(u, nullptr, nullptr);
+}
+
+bool Watchdog::within_bound(const dealii::Vector<double> &u) const
+{
   // one comparison per entry, false for a NaN too
   const double bound = displacement_factor * size;
   bool ok = true;
   for (const double x : u)
     ok &= std::abs(x) <= bound;
-  if (v)
-    for (const double x : *v)
-      ok &= std::abs(x) <= std::numeric_limits<double>::max();
-  if (!ok)
-    fail(u, v, t);
+  return ok;
 }
 
 void Watchdog::fail(const dealii::Vector<double> &u,
                     const dealii::Vector<double> *v,
-                    const double t) const
+                    const double *t) const
 {
   // the first entry that is not finite (displacement, then velocity), or
   // else the largest displacement
@@ -66,8 +78,11 @@ void Watchdog::fail(const dealii::Vector<double> &u,
   static_assert(displacement_factor == 1e3, "the message says 1e3");
   const char *const unit = d.rotation ? " rad" : " m";
   std::ostringstream s;
-  s << "the run diverged at t = " << t << " s: the "
-    << (velocity ? (d.rotation ? "angular velocity" : "velocity")
+  if (t != nullptr)
+    s << "the run diverged at t = " << *t << " s: the ";
+  else
+    s << "the static solution is out of scale: the ";
+  s << (velocity ? (d.rotation ? "angular velocity" : "velocity")
                  : (d.rotation ? "rotation" : "displacement"));
   if (!component.empty())
     s << ' ' << component;
@@ -81,8 +96,12 @@ void Watchdog::fail(const dealii::Vector<double> &u,
   else
     s << " exceeds 1e3 times the model size, 1e3 x " << size
       << " m = " << displacement_factor * size << unit;
-  s << " (look for a load, an accelerogram or a time step out of scale, or an "
-       "unstable scheme)";
+  if (t != nullptr)
+    s << " (look for a load, an accelerogram or a time step out of scale, or an "
+         "unstable scheme)";
+  else
+    s << " (look for a load out of scale, or a structure held too weakly: a "
+         "mechanism or a material or section out of scale)";
   AssertThrow(false, dealii::ExcMessage(s.str()));
   std::abort(); // not reached
 }

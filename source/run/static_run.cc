@@ -9,6 +9,7 @@
 #include <hati/output/summary.h>
 #include <hati/run/analysis_registry.h>
 #include <hati/run/problem.h>
+#include <hati/run/run_tools.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -33,6 +34,8 @@ void run_static_analysis(Problem &problem, RunDirectory &directory)
     TimerOutput::Scope scope(timer, "static solve");
     solve_static(system, 0., U, problem.newmark_parameters.linear_solver, false, &forces);
   }
+  // a displacement beyond 1e3 model sizes is not a result (summary.json "failed")
+  Watchdog(*problem.model, system).check_static(U);
   const SummaryValue contact_entry = problem.report_static_contact_forces(forces);
   OutputWriter writer(directory, system, *problem.model);
   OutputState s;

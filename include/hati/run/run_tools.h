@@ -49,20 +49,29 @@ public:
   /**
    * Throw a one-line message if a displacement of @p u exceeds the bound
    * or is not finite, or a velocity of @p v (may be null) is not finite, at
-   * time @p t (s; the static analysis: t = 0).
+   * time @p t (s).
    */
   void check(const dealii::Vector<double> &u,
              const dealii::Vector<double> *v,
              const double t) const;
 
+  /**
+   * The same for the solution @p u of a static analysis: a displacement
+   * beyond the bound is a load out of scale or a structure held too
+   * weakly, not a result (the message says so, without a time).
+   */
+  void check_static(const dealii::Vector<double> &u) const;
+
   /** The model size L (m). */
   double model_size() const { return size; }
 
 private:
-  /** The message of a state check() refused. */
+  /** The message of a state check() refused; @p t null: a static solution. */
   [[noreturn]] void fail(const dealii::Vector<double> &u,
                          const dealii::Vector<double> *v,
-                         const double t) const;
+                         const double *t) const;
+  /** Whether every displacement of @p u is within the bound (false for a NaN). */
+  bool within_bound(const dealii::Vector<double> &u) const;
 
   const Model &model;
   double size;
