@@ -174,6 +174,26 @@ if m:
     ctx.check("static, huge load: the Timoshenko deflection (m)", float(m.group(1)),
               -1e14 * (2 ** 3 / (3 * EI) + 2 / kGA), rel=1e-5)
 ctx.check_true("static, huge load: no result written", not os.path.exists(out))
+# within the bound but beyond a tenth of the model size: completed with one
+# warning (a linear analysis of a 200 m crane girder sagging 60 m)
+rc, lines, summary, _ = run("static_large", ctx.prm("bridge_crane_static.prm"),
+                            "Model/Bridge crane/Span=200")
+large = re.compile(r"^hati: warning: the largest translation, ([0-9.e+-]+) m, is ([0-9.]+) % "
+                   r"of the model size \(([0-9.e+-]+) m\): the static analysis is linear")
+m = large.match(lines[0]) if len(lines) == 1 else None
+ctx.check_true("static, 200 m span: completed with one warning line naming the translation",
+               rc == 0 and m is not None and summary is not None
+               and summary.get("status") == "completed" and len(summary.get("warnings")) == 1,
+               "(exit %d) %s" % (rc, lines))
+if m:
+    ctx.check("static, 200 m span: the warning's translation is max_translation (m)",
+              float(m.group(1)), summary["max_translation"], rel=1e-5)
+    ctx.check("static, 200 m span: its share of the model size (%)", float(m.group(2)),
+              100 * float(m.group(1)) / float(m.group(3)), rel=2e-3)
+# the default crane: no warning
+rc, lines, summary, _ = run("static_crane", ctx.prm("bridge_crane_static.prm"))
+ctx.check_true("static, default crane: no warning", rc == 0 and lines == []
+               and summary.get("warnings") == [], str(lines))
 
 # warnings: one line on stderr each and the list "warnings" of summary.json
 before = os.path.join(ctx.work, "before_zero.txt")

@@ -23,6 +23,15 @@
 
 namespace hati
 {
+namespace
+{
+/**
+ * A static translation above this fraction of the model size gets a
+ * warning: a linear analysis assumes small displacements.
+ */
+constexpr double large_translation = 0.1;
+} // namespace
+
 void run_static_analysis(Problem &problem, RunDirectory &directory)
 {
   const DiscreteSystem &system = problem.system;
@@ -35,7 +44,8 @@ void run_static_analysis(Problem &problem, RunDirectory &directory)
     solve_static(system, 0., U, problem.newmark_parameters.linear_solver, false, &forces);
   }
   // a displacement beyond 1e3 model sizes is not a result (summary.json "failed")
-  Watchdog(*problem.model, system).check_static(U);
+  const Watchdog watchdog(*problem.model, system);
+  watchdog.check_static(U);
   const SummaryValue contact_entry = problem.report_static_contact_forces(forces);
   OutputWriter writer(directory, system, *problem.model);
   OutputState s;
@@ -67,6 +77,18 @@ void run_static_analysis(Problem &problem, RunDirectory &directory)
     for (unsigned int i = 0; i < system.influence[d].size(); ++i)
       if (system.influence[d][i] != 0.)
         umax = std::max(umax, std::abs(U[i]));
+  // beyond a tenth of the model size a linear (small-displacement) solution
+  // is no longer the structure's: said, not refused
+  if (umax > large_translation * watchdog.model_size())
+  {
+    std::ostringstream s;
+    s << "the largest translation, " << umax << " m, is " << std::setprecision(3)
+      << 100. * umax / watchdog.model_size() << " % of the model size ("
+      << watchdog.model_size()
+      << " m): the static analysis is linear (small displacements), so this is "
+         "outside its validity; check the loads, sections and supports";
+    problem.warn(s.str());
+  }
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   SummaryEntries summary = {{"analysis", "static"},
