@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Scaling of a suite of records over MPI ranks (issue #18):
-# parameter_files/bridge_crane_suite.prm (the default crane, HATI, under the
+# parameter_files/bridge_crane_suite.prm (the default crane, fully explicit, under the
 # 2 records of data/accelerograms at scale factors 0.5, 1, 1.5: 6 members),
 # each member shortened to END_TIME seconds (default 0.5), run with 1 and
 # with 2 ranks (mpirun -np 2; every rank runs members, assigned
