@@ -174,6 +174,33 @@ if m:
     ctx.check("static, huge load: the Timoshenko deflection (m)", float(m.group(1)),
               -1e14 * (2 ** 3 / (3 * EI) + 2 / kGA), rel=1e-5)
 ctx.check_true("static, huge load: no result written", not os.path.exists(out))
+# issue #24, item 15: within 1e3 model sizes but beyond what a linear static
+# solution means: a rotation above 1 rad (the cantilever under 5e5 N at its
+# tip: P L^2 / (2 E I) = 1.143 rad, Euler-Bernoulli; the deflection 1.52 m
+# is below the 2 m model size) or a translation above the model size (an
+# axial tip load of 1.575e9 N stretches it by P L / (E A) = 3 m, no
+# rotation) is refused in one line naming the DoF, its place and the bound
+rc, lines, summary, out = run("static_rotation", ctx.prm("cantilever_static.prm"),
+                              "Model/Frame/Nodal loads=tip: 0, 0, -5e5")
+m = re.match(r"^hati: error: static analysis: the rotation ry = ([0-9.e+-]+) rad at node 'tip' "
+             r"\(DoF \d+\) exceeds 1 rad: a linear \(small-displacement\) solution is not "
+             r"valid there", lines[0]) if len(lines) == 1 else None
+ctx.check_true("static, rotation beyond 1 rad: exit 1, one line naming it", rc == 1 and m is not None,
+               "(exit %d) %s" % (rc, lines))
+if m:
+    ctx.check("static, rotation beyond 1 rad: tip rotation P L^2 / (2 E I) (rad)",
+              abs(float(m.group(1))), 5e5 * 4 / (2 * 2.1e11 * 0.05 * 0.1 ** 3 / 12), rel=1e-5)
+ctx.check_true("static, rotation beyond 1 rad: summary.json failed, no result",
+               rc == 1 and (summary is None or summary.get("status") == "failed"))
+rc, lines, summary, out = run("static_stretch", ctx.prm("cantilever_static.prm"),
+                              "Model/Frame/Nodal loads=tip: 1.575e9, 0, 0")
+m = re.match(r"^hati: error: static analysis: the translation ux = ([0-9.e+-]+) m at node 'tip' "
+             r"\(DoF \d+\) exceeds the model size, 2 m: a linear", lines[0]) if len(lines) == 1 else None
+ctx.check_true("static, translation beyond the model size: exit 1, one line naming it",
+               rc == 1 and m is not None, "(exit %d) %s" % (rc, lines))
+if m:
+    ctx.check("static, translation beyond the model size: P L / (E A) (m)", float(m.group(1)),
+              1.575e9 * 2 / (2.1e11 * 0.05 * 0.1), rel=1e-9)
 # within the bound but beyond a tenth of the model size: completed with one
 # warning (a linear analysis of a 200 m crane girder sagging 60 m)
 rc, lines, summary, _ = run("static_large", ctx.prm("bridge_crane_static.prm"),
@@ -319,34 +346,39 @@ ctx.check_true("singular K with CG + AMG: no amesos-failure.dat in the working d
                str(os.listdir(singular)))
 ctx.check_true("singular K with CG + AMG: no Trilinos ERROR line on the standard output",
                "ERROR" not in p.stdout, p.stdout[-500:])
-# --- issue #16: a HATI macro step too large for the crane's contacts -----
+# --- issue #16 / #24 item 3: a HATI macro step too large for the crane ----
 # The default crane (frequency-range damping) under Rinaldi with HATI: at
-# DT = 4e-4 s (8e-5 s x 5) the interface puts energy into the model (a
-# stable G3' coupling only dissipates: doc/theory.md G5) and, left alone,
-# the run ends "complete" with wheel forces 10 to 400 times those of a
-# fine fully explicit run; it is refused once the interface work passes
-# 5 % of the run's largest energy. At DT = 2e-4 s (4e-5 s x 5) the
-# interface work stays below 0.4 % and the run completes.
+# DT = 4e-4 s (8e-5 s x 5) the coupling is unstable with the wheels' hammer
+# blows: the interface work passes 5 % of the run's largest physical energy
+# at 0.9 s (one warning), and the model's largest energy at 1.65 s, where
+# the run is refused (left alone, it ends "complete" with wheel forces 10 to
+# 400 times those of a fine fully explicit run). At DT = 2e-4 s (4e-5 s x 5)
+# the interface work stays below 0.4 % and the run completes.
 crane_hati = ctx.prm("bridge_crane_hati.prm")
 records = ["Loading/Accelerogram X=" + os.path.join(ctx.source, "data", "accelerograms",
                                                     "Rinaldi228.AT2"),
            "Loading/Accelerogram Z=" + os.path.join(ctx.source, "data", "accelerograms",
                                                     "RinaldiUP.AT2")]
-rc, lines, summary, out = run("hati_energy", crane_hati, *records, "Time integration/End time=1.2",
+rc, lines, summary, out = run("hati_energy", crane_hati, *records, "Time integration/End time=2",
                               "Time integration/Time step=8e-5",
                               "Time integration/HATI/Time step ratio=5",
                               "Output/Output interval=0")
+errors = [l for l in lines if l.startswith("hati: error:")]
+warnings = [l for l in lines if l.startswith("hati: warning:")]
 m = re.match(r"^hati: error: HATI: the interface has put ([0-9.e+-]+) J into the model by "
-             r"t = ([0-9.e+-]+) s \(([0-9.e+-]+) % of its largest energy, ([0-9.e+-]+) J; a "
-             r"stable coupling only dissipates\): the macro step DT = 0.0004 s \(Time step "
-             r"8e-05 s x Time step ratio 5\) is too large for this model's contacts; reduce "
-             r"the Time step ratio or the Time step$", lines[0]) if len(lines) == 1 else None
-ctx.check_true("HATI, DT too large for the contacts: exit 1, one line naming the interface "
-               "work, DT and what to reduce", rc == 1 and m is not None,
+             r"t = ([0-9.e+-]+) s \(([0-9.e+-]+) % of the largest physical energy so far, "
+             r"([0-9.e+-]+) J\), more than the model ever held: the coupling is unstable at the "
+             r"macro step DT = 0.0004 s \(Time step 8e-05 s x Time step ratio 5\), too large "
+             r"for this model's contacts; reduce the Time step ratio or the Time step$",
+             errors[0]) if len(errors) == 1 else None
+ctx.check_true("HATI, DT too large for the contacts: exit 1, one error line naming the "
+               "interface work, DT and what to reduce", rc == 1 and m is not None,
                "(exit %d) %s" % (rc, lines))
+ctx.check_true("HATI, DT too large: one warning first, at 5 % of the largest energy",
+               len(warnings) == 1 and "G3' is stable but exchanges" in warnings[0], str(warnings))
 ctx.check_true("HATI, DT too large: summary.json failed with the message",
                summary is not None and summary.get("status") == "failed"
-               and lines and summary.get("message") == lines[0][len("hati: error: "):],
+               and errors and summary.get("message") == errors[0][len("hati: error: "):],
                str(summary))
 if m:
     # the energy.csv row of the refusal: interface work and share as printed
@@ -355,9 +387,27 @@ if m:
               e["time"][-1], float(m.group(2)), rel=2e-3)
     ctx.check("HATI, DT too large: interface work = last energy.csv row (J)",
               e["interface_work"][-1], float(m.group(1)), rel=5e-3)
-    ctx.check_true("HATI, DT too large: share above 5 %, refused at the first such row",
-                   float(m.group(3)) > 5. and np.all(e["interface_work"][:-1] <= 0.05 *
+    ctx.check_true("HATI, DT too large: share above 100 %, refused at the first such row",
+                   float(m.group(3)) > 100. and np.all(e["interface_work"][:-1] <=
                    float(m.group(4))), m.group(3))
+# the reference bar split with a step end load (no contacts) at m = 8, DT
+# four times the implicit half's critical step: stable (G3'), its interface
+# work positive for a while (at most 4.2 % of the largest energy here) and
+# within 6 % of the fine explicit solution: it completes (issue #24, item 3)
+rc, lines, summary, _ = run("hati_bar_m8", ctx.prm("bar_split_wave.prm"),
+                            "Time integration/HATI/Time step ratio=8",
+                            "Output/Output interval=0")
+ctx.check_true("HATI, bar at m = 8: completes", rc == 0 and summary is not None
+               and summary.get("status") == "completed", "(exit %d) %s" % (rc, lines))
+rc, lines, summary, _ = run("hati_bar_m8_coarse", ctx.prm("bar_split_wave.prm"),
+                            "Time integration/HATI/Time step ratio=8",
+                            "Model/Bar/Number of elements=25", "Time integration/Time step=0.02",
+                            "Time integration/End time=30", "Output/Output interval=0")
+ctx.check_true("HATI, coarse bar at m = 8 (interface work up to 18 % of the largest "
+               "energy): completes with one warning that does not blame contacts",
+               rc == 0 and summary is not None and summary.get("status") == "completed"
+               and len(summary.get("warnings", [])) == 1
+               and "contacts" not in summary["warnings"][0], "(exit %d) %s" % (rc, lines))
 rc, lines, summary, ok_out = run("hati_energy_ok", crane_hati, *records, "Time integration/End time=1.2",
                             "Time integration/Time step=4e-5",
                             "Time integration/HATI/Time step ratio=5",
@@ -371,9 +421,13 @@ ctx.check_true("HATI, DT = 2e-4 s on the crane: completes without warnings",
 if summary is not None and summary.get("status") == "completed":
     ctx.check_true("HATI crane, frequency-range damping: macro steps were redone",
                    summary["redone_macro_steps"] > 0, str(summary["redone_macro_steps"]))
+    # round-off: the static state's closed gaps carry some 7e-14 m of the
+    # solver's round-off under the 1e5 N wheel loads (2.4e-12 of the largest
+    # energy, booked at the first step since the contacts carry their static
+    # forces from t = 0)
     ctx.check("HATI crane, frequency-range damping, redone macro steps: energy balance "
               "relative to the largest energy", summary["energy_balance_relative"], 0.,
-              abs_tol=1e-12)
+              abs_tol=1e-11)
     ctx.check_true("HATI crane: interface work negative (dissipated) at the end",
                    np.genfromtxt(os.path.join(ok_out, "energy.csv"), delimiter=",",
                                  names=True)["interface_work"][-1] < 0., "")

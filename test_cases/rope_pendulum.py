@@ -23,7 +23,10 @@ k = 1e7 N/m hanging from the tip of a clamped arm.
    discrete momentum balance of CD-Lagrange is exact) and against the exact
    2 m v_catch + m g dt_taut (2e-3).
 5. Refusals: Method = Newmark, and HATI with the rope in the implicit part,
-   one line naming the rope."""
+   one line naming the rope.
+6. The load on its rope from a clamped hook node (issue #24,
+   item 14): static tension m g and the pendulum sqrt(g/L')/2pi (L' the
+   stretched length) with and without a pre-stretched rest length."""
 import math
 import os
 
@@ -113,6 +116,34 @@ ctx.check("energy balance relative error (toss)", s["energy_balance_relative"], 
 ctx.check_true("summary slack_time >= the first episode",
                s["rope_tension"]["rope"]["slack_time"] >= t_taut - ts - 2 * dt,
                "(%g s)" % s["rope_tension"]["rope"]["slack_time"])
+
+# 6. the simplest rope model (issue #24, item 14): a load hanging on its rope
+# from a clamped hook node (the arm clamped at both ends, one element: no
+# free DoF but the load's, which only the rope holds); the static Newton must find
+# the rope carrying the weight (statics: T0 = m g) and the modal analysis the
+# pendulum (reference: sqrt(g / L') / 2 pi with L' = L + m g / k the
+# stretched length; the rope's own bounce sqrt(k / m) / 2 pi). Also with a
+# pre-stretched rest length (a rope shorter than the chord).
+fixed_hook = ["Model/Frame/Members=arm: base, hook, arm, steel, 1",
+              "Model/Frame/Supports=base: clamped; hook: clamped"]
+for tag, rope, rest in [("fixed_hook", "rope: hook, load, 5e6", L),
+                        ("fixed_hook_prestretched", "rope: hook, load, 5e6, 5.9", 5.9)]:
+    kf = 5e6
+    stretched = rest + m * g / kf
+    for analysis in ("static", "modal"):
+        out, _ = ctx.run(prm, tag + "_" + analysis,
+                         fixed_hook + ["Model/Frame/Ropes=" + rope, "Analysis/Type=" + analysis,
+                                       "Analysis/Number of modes=3"])
+        s = read_summary(out)
+        ctx.check("%s %s: static tension T0 (N) = m g" % (tag, analysis),
+                  s["static_rope_tension"]["rope"], m * g, rel=1e-9)
+        if analysis == "modal":
+            f = s["frequencies"]
+            f_p = math.sqrt(g / stretched) / (2 * math.pi)
+            ctx.check("%s: pendulum mode 1 (Hz) vs sqrt(g/L')/2pi" % tag, f[0], f_p, rel=1e-6)
+            ctx.check("%s: pendulum mode 2 (Hz) vs sqrt(g/L')/2pi" % tag, f[1], f_p, rel=1e-6)
+            ctx.check("%s: bounce mode (Hz) vs sqrt(k/m)/2pi" % tag, f[2],
+                      math.sqrt(kf / m) / (2 * math.pi), rel=1e-6)
 
 # 5. refusals
 for tag, sets, expected in [

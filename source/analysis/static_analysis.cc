@@ -98,6 +98,14 @@ void check_rigid_translations(const DiscreteSystem &system,
           lr += c.coefficients[j] * r[c.dofs[j]];
       held = held || std::abs(lr) > 1e-12;
     }
+    // a rope whose ends the translation moves differently (e.g. a load hanging
+    // from a fixed hook point) holds it once taut: axially, or laterally by
+    // its tension's geometric stiffness (R1); a slack one is found by the
+    // Newton iteration of solve_with_ropes()
+    const auto moved = [&](const types::global_dof_index i)
+    { return i != numbers::invalid_dof_index && !system.fixed[i] ? r[i] : 0.; };
+    for (const Rope &rope : system.ropes)
+      held = held || moved(rope.hook_dofs[d]) != moved(rope.load_dofs[d]);
     AssertThrow(held,
                 ExcMessage(singular_message + ": a rigid translation along " +
                            direction[d] + " costs no strain energy" +

@@ -157,6 +157,14 @@ void Problem::prepare_transient()
             system.initial_displacement[part.global_dofs[i]];
         part.system.initial_velocity[i] = system.initial_velocity[part.global_dofs[i]];
       }
+  if (decomposition && system.initial_contact_reaction.size() == system.n_dofs())
+    for (auto &part : decomposition->parts)
+    {
+      part.system.initial_contact_reaction.reinit(part.global_dofs.size());
+      for (unsigned int i = 0; i < part.global_dofs.size(); ++i)
+        part.system.initial_contact_reaction[i] =
+            system.initial_contact_reaction[part.global_dofs[i]];
+    }
   const DefaultDamping defaults = model->default_damping();
   if (!damping.frequency_range() && defaults.type == "Rayleigh")
     for (const auto &entry : apply_default_damping(
@@ -257,6 +265,7 @@ void Problem::set_static_initial_state()
                newmark_parameters.linear_solver,
                true,
                &forces);
+  set_static_contact_reaction(forces);
   system.constant_force -= correction;
   system.initial_velocity = 0.;
   const SummaryValue entry = report_static_contact_forces(forces);
@@ -265,6 +274,40 @@ void Problem::set_static_initial_state()
   if (!system.ropes.empty())
     initial_state_summary.emplace_back("static_rope_tension",
                                        report_rope_tensions(system.initial_displacement));
+}
+
+void Problem::set_static_contact_reaction(const std::vector<double> &forces)
+{
+  // the DoFs of the closed contacts' rows (normal and, with friction, tangent)
+  const unsigned int n = system.n_dofs();
+  std::vector<bool> touched(n, false);
+  bool any = false;
+  for (unsigned int k = 0; k < system.contacts.size(); ++k)
+  {
+    const ContactRow &c = system.contacts[k];
+    if (k >= forces.size() || forces[k] == 0.)
+      continue;
+    any = true;
+    for (const auto i : c.dofs)
+      touched[i] = true;
+    for (const SparseRow &t : c.tangents)
+      for (const auto i : t.dofs)
+        touched[i] = true;
+  }
+  if (!any)
+    return;
+  // R_c = K U_0 - F_ext(0) - F_r(U_0) on those DoFs: what the contacts carry
+  // at equilibrium, under the loads the explicit integrator applies (the
+  // lumped gravity correction is in constant_force while this runs)
+  Vector<double> f(system.constant_force), reaction(n);
+  for (const Rope &rope : system.ropes)
+    rope.add_force(system.initial_displacement, f);
+  system.stiffness.vmult(reaction, system.initial_displacement);
+  reaction -= f;
+  for (unsigned int i = 0; i < n; ++i)
+    if (!touched[i] || system.fixed[i])
+      reaction[i] = 0.;
+  system.initial_contact_reaction = reaction;
 }
 
 SummaryValue Problem::report_rope_tensions(const Vector<double> &U)

@@ -30,6 +30,58 @@ namespace
  * warning: a linear analysis assumes small displacements.
  */
 constexpr double large_translation = 0.1;
+/**
+ * Beyond these a linear static solution is not the structure's at all: a
+ * translation larger than the model itself, or a rotation above 1 rad
+ * (57 degrees; small-rotation theory takes sin(theta) = theta, 16 % off
+ * there). Refused (summary.json "failed"), as a transient run that diverges.
+ */
+constexpr double invalid_translation = 1.;
+constexpr double invalid_rotation = 1.; // rad
+
+/**
+ * Refuse the static solution @p U of @p problem if its largest rotation
+ * passes invalid_rotation or its largest translation invalid_translation
+ * times @p size (m); one line naming the DoF and its place.
+ */
+void check_validity(const Problem &problem, const Vector<double> &U, const double size)
+{
+  const DiscreteSystem &system = problem.system;
+  types::global_dof_index t_max = U.size(), r_max = U.size();
+  for (types::global_dof_index i = 0; i < U.size(); ++i)
+  {
+    if (system.fixed[i])
+      continue;
+    bool translation = false;
+    for (unsigned int d = 0; d < 3; ++d)
+      translation = translation || (system.influence[d].size() == U.size() &&
+                                    system.influence[d][i] != 0.);
+    types::global_dof_index &k = translation ? t_max : r_max;
+    if (k == U.size() || std::abs(U[i]) > std::abs(U[k]))
+      k = i;
+  }
+  const auto refuse = [&](const types::global_dof_index i, const std::string &bound)
+  {
+    const DofDescription d = problem.model->describe_dof(i);
+    std::ostringstream s;
+    s << "static analysis: the " << (d.rotation ? "rotation" : "translation")
+      << (d.component.empty() ? "" : " " + d.component) << " = " << U[i]
+      << (d.rotation ? " rad" : " m") << (d.location.empty() ? "" : " at " + d.location)
+      << " (DoF " << i << ") exceeds " << bound
+      << ": a linear (small-displacement) solution is not valid there (look for a "
+         "load out of scale or a structure held too weakly)";
+    AssertThrow(false, ExcMessage(s.str()));
+  };
+  if (r_max < U.size() && problem.model->describe_dof(r_max).rotation &&
+      std::abs(U[r_max]) > invalid_rotation)
+    refuse(r_max, "1 rad");
+  if (t_max < U.size() && std::abs(U[t_max]) > invalid_translation * size)
+  {
+    std::ostringstream bound;
+    bound << "the model size, " << size << " m";
+    refuse(t_max, bound.str());
+  }
+}
 } // namespace
 
 void run_static_analysis(Problem &problem, RunDirectory &directory)
@@ -46,6 +98,7 @@ void run_static_analysis(Problem &problem, RunDirectory &directory)
   // a displacement beyond 1e3 model sizes is not a result (summary.json "failed")
   const Watchdog watchdog(*problem.model, system);
   watchdog.check_static(U);
+  check_validity(problem, U, watchdog.model_size());
   const SummaryValue contact_entry = problem.report_static_contact_forces(forces);
   OutputWriter writer(directory, system, *problem.model);
   OutputState s;

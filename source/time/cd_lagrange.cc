@@ -181,6 +181,10 @@ void CDLagrange::initial_state()
     f.add(system.time_dependent_loads[l].amplitude(0.), load_shapes[l]);
   if (rope_forces.active()) // (R1) the rope forces at U_0
     rope_forces.start(U, f);
+  // a static start: the closed contacts carry their static forces from t = 0
+  // (doc/theory.md 1.1)
+  if (system.initial_contact_reaction.size() == n)
+    f += system.initial_contact_reaction;
   for (unsigned int i = 0; i < n; ++i)
     v0[i] = system.fixed[i] ? 0. : system.initial_velocity[i];
   if (system.has_stiffness())
@@ -503,13 +507,15 @@ void CDLagrange::apply_contacts()
   if (frictional_contacts.any())
     frictional_contacts.begin_step(*V_prev);
 
-  // (A4) active set from the position-level gap (or the prescribed one)
+  // (A4) active set from the position-level gap (or the prescribed one),
+  // round-off gaps closed (closed_gap_tolerance)
   active_list.clear();
   for (unsigned int k = 0; k < nc; ++k)
   {
     const auto &c = system.contacts[k];
     gap[k] = c.initial_gap + c.apply(U);
-    is_active[k] = c.bilateral || (prescribed ? bool((*prescribed)[k]) : (gap[k] <= 0.));
+    is_active[k] = c.bilateral || (prescribed ? bool((*prescribed)[k])
+                                              : (gap[k] <= closed_gap_tolerance));
     lambda[k] = 0.;
     if (is_active[k])
       active_list.push_back(k);

@@ -430,7 +430,7 @@ bool RampSuperposition::superpose_contacts(const Response &r,
             total_impulse[i] < -impulse_tolerance)
           return false;
       }
-      else if (total_gap[i] <= 0.)
+      else if (total_gap[i] <= closed_gap_tolerance)
       {
         const double e = system.contacts[reach_contacts[c]].restitution,
                      w = total_normal[i + nrc] + e * total_normal[i];

@@ -54,6 +54,17 @@ struct ContactRow : SparseRow
   bool frictional() const { return friction > 0. && !tangents.empty(); }
 };
 
+/**
+ * Gaps up to this (m) count as closed in the active set of CD-Lagrange (A4,
+ * doc/theory.md 1.2). A contact at rest keeps a normal velocity of round-off
+ * size after its impulse (1e-18 m/s on the crane's wheels), and its gap,
+ * integrated from it, drifts by some 1e-22 m: with `g <= 0` such a contact
+ * opened for one step and its body fell into the support (a 0.04 m/s
+ * chatter of a crane wheel resting on its rail). 1e-12 m is far below any
+ * gap a structure resolves and far above that drift.
+ */
+constexpr double closed_gap_tolerance = 1e-12;
+
 /** Whether a contact of @p contacts has friction (ContactRow::frictional()). */
 bool has_friction(const std::vector<ContactRow> &contacts);
 
@@ -214,6 +225,15 @@ public:
 
   Vector<double> initial_displacement;
   Vector<double> initial_velocity;
+  /**
+   * The forces (N, on the DoFs) that the closed contacts carry in a static
+   * initial state, `sum_k L_k^T lambda_k` with the tangent rows of sticking
+   * friction: CD-Lagrange adds them to `G_0` (A7, doc/theory.md 1.1) so that
+   * a structure that starts at rest on its contacts has `V_{1/2} = V_0`
+   * (no contact DoF moving into its support at the first half step). Empty:
+   * none (a start that is not static, or no contact closed).
+   */
+  Vector<double> initial_contact_reaction;
 
   /** Element-by-element bound of omega_max (rad/s), negative if unset. */
   double omega_max_bound = -1.;

@@ -146,6 +146,14 @@ private:
   void check_spectrum_request() const;
   /** The static equilibrium under the constant loads as the initial state. */
   void set_static_initial_state();
+  /**
+   * The contact forces of the static initial state on the DoFs
+   * (DiscreteSystem::initial_contact_reaction): `K U_0 - F - F_r(U_0)` on
+   * the DoFs of the contacts with a nonzero static force @p forces (their
+   * normal and tangent rows), zero elsewhere; not set when no contact is
+   * closed.
+   */
+  void set_static_contact_reaction(const std::vector<double> &forces);
 
   ConditionalOStream out;
 };
