@@ -605,13 +605,41 @@ void solve_with_ropes(const StaticSolve &s, const Vector<double> &F, Vector<doub
           << max_rope_iterations << " Newton iterations (last correction " << du
           << " m of " << un << " m)";
   for (const Rope &rope : system.ropes)
-    if (rope.tension(U) == 0.)
+    if (rope.chord(U).norm() < (1. - 1e-9) * rope.rest_length)
     {
       message << "; the rope '" << rope.name
               << "' is slack: a load held only by a slack rope has no static state";
       break;
     }
   AssertThrow(false, ExcMessage(message.str()));
+}
+/**
+ * Rethrow the singular-matrix error @p e of the static state with ropes,
+ * naming the first rope that is slack at the last iterate @p U (one whose
+ * rest length exceeds any length it can reach holds nothing, e.g. a part
+ * hung only by it floats); other errors are left to the caller.
+ */
+void name_slack_ropes(const DiscreteSystem &system,
+                      const Vector<double> &U,
+                      const ExceptionBase &e)
+{
+  std::ostringstream info;
+  e.print_info(info);
+  std::string message = info.str();
+  message.erase(0, message.find_first_not_of(" \n"));
+  message.erase(message.find_last_not_of(" \n") + 1);
+  if (message.rfind(singular_message, 0) != 0)
+    return;
+  for (const Rope &rope : system.ropes)
+    if (rope.chord(U).norm() < (1. - 1e-9) * rope.rest_length)
+    {
+      std::ostringstream m;
+      m << message << " The rope '" << rope.name << "' is slack (length "
+        << rope.chord(U).norm() << " m, rest length " << rope.rest_length
+        << " m): it holds nothing in the static state; check its rest length and what "
+           "it should hold.";
+      AssertThrow(false, ExcMessage(m.str()));
+    }
 }
 } // namespace
 
@@ -663,7 +691,15 @@ void solve_static(const DiscreteSystem &system,
   const StaticSolve s{system, contacts, held, linear_solver, contact_forces};
   if (!system.ropes.empty())
   {
-    solve_with_ropes(s, F, U);
+    try
+    {
+      solve_with_ropes(s, F, U);
+    }
+    catch (const ExceptionBase &e)
+    {
+      name_slack_ropes(system, U, e);
+      throw;
+    }
     return;
   }
   // K with the fixed DoFs decoupled (positive diagonal, no couplings)
