@@ -11,6 +11,7 @@
 #include <hati/analysis/static_analysis.h>
 #include <hati/linear_algebra/amg_preconditioner.h>
 #include <hati/linear_algebra/direct_solver.h>
+#include <hati/model/rope_diagnostics.h>
 
 #include <algorithm>
 #include <array>
@@ -613,34 +614,6 @@ void solve_with_ropes(const StaticSolve &s, const Vector<double> &F, Vector<doub
     }
   AssertThrow(false, ExcMessage(message.str()));
 }
-/**
- * Rethrow the singular-matrix error @p e of the static state with ropes,
- * naming the first rope that is slack at the last iterate @p U (one whose
- * rest length exceeds any length it can reach holds nothing, e.g. a part
- * hung only by it floats); other errors are left to the caller.
- */
-void name_slack_ropes(const DiscreteSystem &system,
-                      const Vector<double> &U,
-                      const ExceptionBase &e)
-{
-  std::ostringstream info;
-  e.print_info(info);
-  std::string message = info.str();
-  message.erase(0, message.find_first_not_of(" \n"));
-  message.erase(message.find_last_not_of(" \n") + 1);
-  if (message.rfind(singular_message, 0) != 0)
-    return;
-  for (const Rope &rope : system.ropes)
-    if (rope.chord(U).norm() < (1. - 1e-9) * rope.rest_length)
-    {
-      std::ostringstream m;
-      m << message << " The rope '" << rope.name << "' is slack (length "
-        << rope.chord(U).norm() << " m, rest length " << rope.rest_length
-        << " m): it holds nothing in the static state; check its rest length and what "
-           "it should hold.";
-      AssertThrow(false, ExcMessage(m.str()));
-    }
-}
 } // namespace
 
 void solve_static(const DiscreteSystem &system,
@@ -697,7 +670,7 @@ void solve_static(const DiscreteSystem &system,
     }
     catch (const ExceptionBase &e)
     {
-      name_slack_ropes(system, U, e);
+      rethrow_naming_slack_rope(e, singular_message, system.ropes, U);
       throw;
     }
     return;
