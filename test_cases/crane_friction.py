@@ -5,7 +5,9 @@
   contacts) equal those with Travel = tied (supports and ties, the results
   before friction) to 1e-9: the lever rule does not depend on how the crane
   is held along its travel (reference: the tied crane, whose loads
-  test_cases/bridge_crane.py checks against hand statics);
+  test_cases/bridge_crane.py checks against hand statics); contacts.csv of
+  both static runs has the header's number of fields on every row, the
+  static contact forces and the sticking state of the braked wheels;
 - modal: the braked crane has no 0 Hz mode (the sticking wheels hold it
   along X and across the rails) and its first mode is the sway along X
   (effective mass ratio > 0.8), while the tied crane starts with two 0 Hz
@@ -27,11 +29,42 @@ ctx = Context()
 static = ctx.prm("bridge_crane_static.prm")
 hati = ctx.prm("bridge_crane_hati.prm")
 
-loads = {}
+loads, static_out = {}, {}
 for travel in ("tied", "braked"):
     out, _ = ctx.run(static, "static_" + travel,
                      ["Model/Bridge crane/Travel=" + travel, "Analysis/Type=static"])
     loads[travel] = read_summary(out)["static_contact_forces"]
+    static_out[travel] = out
+
+# contacts.csv of the static runs (issue #24, 9: with friction the rows had
+# 7 fields under a 10-column header): every row has the header's fields,
+# force = the static contact force of summary.json, state stick where a
+# loaded frictional contact holds (braked) and no friction columns (tied)
+for travel in ("tied", "braked"):
+    with open(os.path.join(static_out[travel], "contacts.csv")) as f:
+        lines = f.read().splitlines()
+    header = lines[0].split(",")
+    table = [dict(zip(header, l.split(","))) for l in lines[1:]]
+    ctx.check_true("static %s: contacts.csv has %d rows, each with the header's %d fields"
+                   % (travel, len(table), len(header)),
+                   len(table) > 0 and all(len(l.split(",")) == len(header) for l in lines[1:])
+                   and len(header) == (10 if travel == "braked" else 7), str(lines[:3]))
+    wrong = [(r["contact"], r["force"], loads[travel][r["contact"]]) for r in table
+             if r["contact"] in loads[travel]
+             and abs(float(r["force"]) - loads[travel][r["contact"]])
+             > 1e-12 * abs(loads[travel][r["contact"]])]
+    ctx.check_true("static %s: contacts.csv force = static_contact_forces (%d names)"
+                   % (travel, sum(r["contact"] in loads[travel] for r in table)),
+                   not wrong and any(r["contact"] in loads[travel] for r in table), str(wrong))
+    loaded = [r for r in table if float(r["force"]) > 0]
+    ctx.check_true("static %s: the loaded contacts are active" % travel,
+                   loaded and all(int(r["active"]) > 0 for r in loaded)
+                   and all(int(r["active"]) == 0 for r in table if float(r["force"]) == 0))
+braked = {r.split(",")[1]: r.split(",")[-1] for r in
+          open(os.path.join(static_out["braked"], "contacts.csv")).read().splitlines()[1:]}
+ctx.check_true("static braked: the braked crane wheels stick, every state open or stick",
+               braked.get("crane_wheel_1") == "stick" and braked.get("crane_wheel_3") == "stick"
+               and set(braked.values()) <= {"open", "stick"}, str(braked))
 for name in sorted(k for k in loads["tied"] if k.endswith(tuple("1234"))
                    and "lateral" not in k and "travel" not in k):
     ctx.check("static: %s load (N), braked = tied" % name, loads["braked"][name],

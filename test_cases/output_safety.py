@@ -10,14 +10,19 @@ directory.
   time_reached and n_steps (the steps done) in summary.json;
 - SIGKILL at four instants: every CSV ends on a complete line with the
   header's number of fields, solution.pvd parses and names complete VTU
-  files; SIGKILL at 20 random instants of a run writing a row every step
-  (1 MiB appends): every CSV ends on a complete line every time (the
-  writer child finishes an append and holds .hati.lock until then);
+  files; SIGKILL of the whole process group (os.killpg, the run in its own
+  session, as a job scheduler kills) at 40 random instants of a run
+  writing a row every step (1 MiB appends): every CSV ends on a complete
+  line every time (the writer child, outside the group, finishes an append
+  and holds .hati.lock until then);
 - a symbolic link where an output file, a temporary file, the lock or the
   manifest would go (pointing at a victim file outside the folder, or at a
   missing one) is refused in one line naming the link; the victim stays
   byte for byte (the missing one is not created);
 - a second concurrent run into the same directory is refused in one line;
+- Output/Section force interval = 1e20 s gives the section force rows at
+  the start and the end only; a link at a suite's plot_suite.log is named
+  in the warning and its target untouched;
 - a run failing mid-run writes "status": "failed" with the message;
 - a closed standard output (SIGPIPE) does not stop the run;
 - a folder deleted during the run and a full disk (a 1 MiB tmpfs, if this
@@ -72,9 +77,10 @@ def run(out, sets=(), prm=bar):
                           timeout=600, env=environment())
 
 
-def start(out, sets=(), prm=bar):
+def start(out, sets=(), prm=bar, new_session=False):
     return subprocess.Popen(command(out, sets, prm), stdout=subprocess.DEVNULL,
-                            stderr=subprocess.PIPE, text=True, env=environment())
+                            stderr=subprocess.PIPE, text=True, env=environment(),
+                            start_new_session=new_session)
 
 
 def summary(out):
@@ -235,10 +241,14 @@ for attempt, delay in enumerate((0.0, 0.37, 0.81, 1.53)):
     ctx.check_true("SIGKILL %d (after %.2f s): CSVs on complete lines, valid PVD (%s)"
                    % (attempt + 1, delay, pvd), not bad, str(bad))
 
-# --- SIGKILL at 20 random instants of a run appending 1 MiB blocks of rows ---
+# --- SIGKILL of the process group at 40 random instants of a run appending
+# 1 MiB blocks of rows ---
 # (Linux cuts a large write() at a page boundary when the writer is killed:
 # before the rows were appended by a child process, 1 kill in 5 to 10 left a
-# cut line here). Four runs at a time (a start is mostly Open MPI waiting).
+# cut line here; with a child in the run's process group, 2 group kills in
+# 40, the child dying with the group). Each run in its own session, killed
+# with os.killpg as a job scheduler does; four runs at a time (a start is
+# mostly Open MPI waiting).
 
 
 def tail_complete(path):
@@ -254,10 +264,10 @@ def kill_at_random(attempt):
     out = os.path.join(ctx.work, "sigkill_random%02d" % attempt)
     shutil.rmtree(out, ignore_errors=True)
     proc = start(out, ["Time integration/End time=20", "Output/History interval=0",
-                       "Output/Output interval=0"])
+                       "Output/Output interval=0"], new_session=True)
     started = wait_running(out, rows=1)
     time.sleep(delays[attempt])
-    proc.kill()
+    os.killpg(proc.pid, signal.SIGKILL)
     proc.wait()
     if not started or not wait_unlocked(out):
         return ["%d: %s" % (attempt + 1, "no start" if not started else "lock held")]
@@ -270,11 +280,12 @@ def kill_at_random(attempt):
 
 
 random.seed(19)
-delays = [random.uniform(0.0, 0.5) for _ in range(20)]
+delays = [random.uniform(0.0, 0.5) for _ in range(40)]
+t0 = time.time()
 with concurrent.futures.ThreadPoolExecutor(4) as pool:
-    cut = sum(pool.map(kill_at_random, range(20)), [])
-ctx.check_true("SIGKILL at 20 random instants, a row every step: every CSV on whole lines",
-               not cut, str(cut))
+    cut = sum(pool.map(kill_at_random, range(40)), [])
+ctx.check_true("SIGKILL of the process group at 40 random instants, a row every step: "
+               "every CSV on whole lines (%.0f s)" % (time.time() - t0), not cut, str(cut))
 
 # --- a symbolic link in the output folder is refused, its target untouched ---
 # (all runs at once, each into its own folder, with its own victim file)
@@ -311,6 +322,41 @@ for name, work, out, target, proc in runs:
                    % (name, os.path.basename(target), os.path.basename(target)),
                    ok and kept and os.path.islink(os.path.join(out, name)),
                    "(exit %s) %s" % (proc.returncode, err))
+
+# --- Output/Section force interval far beyond the run (issue #24, 11) ---
+# (std::lround overflowed: 1e20 s wrote a row at every history row)
+frame = ctx.prm("portal_frame_elcentro.prm")
+record = os.path.join(ctx.source, "data", "accelerograms", "RSN6_IMPVALL.I_I-ELC180.AT2")
+quick = ["Time integration/End time=0.02", "Output/History interval=0.002",
+         "Output/Output interval=0", "Loading/Accelerogram X=" + record]
+for interval, expected in (("1e20", [0.0, 0.02]), ("0.01", [0.0, 0.01, 0.02])):
+    out = os.path.join(ctx.work, "section_interval_" + interval)
+    shutil.rmtree(out, ignore_errors=True)
+    p = run(out, quick + ["Output/Section force interval=" + interval], prm=frame)
+    times = []
+    if p.returncode == 0:
+        with open(os.path.join(out, "section_forces.csv")) as f:
+            times = sorted({round(float(l.split(",")[0]), 9) for l in f.read().splitlines()[1:]})
+    ctx.check_true("Section force interval = %s s: section_forces.csv rows at t = %s"
+                   % (interval, expected), times == expected,
+                   "(exit %d) times %s %s" % (p.returncode, times, p.stderr.strip()))
+
+# --- a link at plot_suite.log is named as such (issue #24, 12) ---
+# (posix_spawn fails to open it with O_NOFOLLOW: it said "python3 was not found")
+work = os.path.join(ctx.work, "plot_log_link")
+shutil.rmtree(work, ignore_errors=True)
+out = os.path.join(work, "suite")
+os.makedirs(out)
+with open(os.path.join(work, "victim.txt"), "wb") as f:
+    f.write(VICTIM)
+os.symlink(os.path.join(work, "victim.txt"), os.path.join(out, "plot_suite.log"))
+p = run(out, quick + ["Suite/Records=elc: " + record], prm=frame)
+with open(os.path.join(work, "victim.txt"), "rb") as f:
+    kept = f.read() == VICTIM
+ctx.check_true("a link at plot_suite.log: the warning names the link, its target untouched",
+               kept and os.path.join(out, "plot_suite.log") + " is a symbolic link" in p.stderr
+               and "python3 was not found" not in p.stderr,
+               "(exit %d) %s" % (p.returncode, p.stderr.strip()))
 
 # --- a second concurrent run is refused ---
 out = os.path.join(ctx.work, "concurrent")

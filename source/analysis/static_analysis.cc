@@ -11,6 +11,7 @@
 #include <hati/analysis/static_analysis.h>
 #include <hati/linear_algebra/amg_preconditioner.h>
 #include <hati/linear_algebra/direct_solver.h>
+#include <hati/model/rope_diagnostics.h>
 
 #include <algorithm>
 #include <array>
@@ -613,7 +614,7 @@ void solve_with_ropes(const StaticSolve &s, const Vector<double> &F, Vector<doub
           << max_rope_iterations << " Newton iterations (last correction " << du
           << " m of " << un << " m)";
   for (const Rope &rope : system.ropes)
-    if (rope.tension(U) == 0.)
+    if (rope.chord(U).norm() < (1. - 1e-9) * rope.rest_length)
     {
       message << "; the rope '" << rope.name
               << "' is slack: a load held only by a slack rope has no static state";
@@ -671,7 +672,15 @@ void solve_static(const DiscreteSystem &system,
   const StaticSolve s{system, contacts, held, linear_solver, contact_forces};
   if (!system.ropes.empty())
   {
-    solve_with_ropes(s, F, U);
+    try
+    {
+      solve_with_ropes(s, F, U);
+    }
+    catch (const ExceptionBase &e)
+    {
+      rethrow_naming_slack_rope(e, singular_message, system.ropes, U);
+      throw;
+    }
     return;
   }
   // K with the fixed DoFs decoupled (positive diagonal, no couplings)

@@ -4,6 +4,7 @@
 #include <hati/model/frame_parser.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -23,6 +24,93 @@ constexpr double max_structure_mass = 1e8;
 double section_area(const std::string &text, const std::string &entry)
 {
   return parse_frame_section(text, where + entry).A;
+}
+
+/**
+ * Ranges of a crane's section: its dimensions (m: b, h and the plate
+ * thicknesses), its areas (m^2), its second moments and torsion constant
+ * (m^4), and its radii of gyration sqrt(I / A) and sqrt(J / 2 A) (m):
+ * beyond them a member is so soft (a girder of 20 m under its load deflects
+ * by kilometres), so stiff or so unlike a beam beside the rest of the
+ * crane that its stiffness matrix is singular to round-off (measured on the
+ * default crane: a 1 cm square girder, A = 40 m^2 with I = 1e3 m^4, A =
+ * 1 m^2 with I = 1e-8 m^4 were reported "singular"; the corners of these
+ * ranges solve).
+ */
+constexpr std::array<double, 2> section_dimension_range = {{1e-3, 5.}},
+                                section_area_range = {{1e-4, 1.}},
+                                section_inertia_range = {{1e-8, 10.}},
+                                radius_of_gyration_range = {{1e-3, 5.}};
+
+/**
+ * Check the section @p text of the entry @p entry (the Model/Frame/Sections
+ * syntax, parse_frame_section()) and that its dimensions and properties lie
+ * in the ranges above; a one-line error naming the entry, the value and the
+ * range.
+ */
+void check_section(const std::string &text, const std::string &entry)
+{
+  const FrameSection s = parse_frame_section(text, where + entry); // the syntax first
+  const std::vector<std::string> values = Utilities::split_string_list(text, ',');
+  const bool general = Utilities::trim(values[0]) == "general";
+  const auto refuse = [&](const std::string &name,
+                          const double x,
+                          const std::string &unit,
+                          const std::string &what,
+                          const std::array<double, 2> &range)
+  {
+    std::ostringstream m;
+    m << where << entry << ": " << name << " = " << x << " " << unit
+      << (general ? "" : " (of " + text + ")")
+      << " is outside the range of a crane section's " << what << ", " << range[0]
+      << " to " << range[1] << " " << unit;
+    AssertThrow(false, ExcMessage(m.str()));
+  };
+  const auto in = [](const double x, const std::array<double, 2> &range)
+  { return x >= range[0] && x <= range[1]; };
+  if (!general)
+  {
+    const std::vector<std::string> names = {"b", "h", "t_web", "t_flange"};
+    for (unsigned int i = 1; i < values.size() && i <= names.size(); ++i)
+    {
+      const double x = Utilities::string_to_double(Utilities::trim(values[i]));
+      if (!in(x, section_dimension_range))
+      {
+        std::ostringstream m;
+        m << where << entry << ": " << names[i - 1] << " = " << Utilities::trim(values[i])
+          << " m is outside the range of a crane section's dimensions, "
+          << section_dimension_range[0] << " to " << section_dimension_range[1] << " m";
+        AssertThrow(false, ExcMessage(m.str()));
+      }
+    }
+  }
+  if (!in(s.A, section_area_range))
+    refuse("A", s.A, "m^2", "areas", section_area_range);
+  using Property = std::pair<const char *, double>;
+  const Property shear[] = {{"Asy", s.shear_area_y}, {"Asz", s.shear_area_z}};
+  for (const auto &[name, x] : shear)
+    if (general && x != 0. && !in(x, section_area_range))
+      refuse(name, x, "m^2", "areas (or 0: no shear deformation)", section_area_range);
+  const Property inertia[] = {{"Iy", s.Iy}, {"Iz", s.Iz}, {"J", s.J}};
+  for (const auto &[name, x] : inertia)
+  {
+    if (!in(x, section_inertia_range))
+      refuse(
+          name, x, "m^4", "second moments and torsion constant", section_inertia_range);
+    // radius of gyration sqrt(I / A), polar sqrt(J / 2 A)
+    const bool polar = name[0] == 'J';
+    const double r = std::sqrt((polar ? 0.5 : 1.) * x / s.A);
+    if (!in(r, radius_of_gyration_range))
+    {
+      std::ostringstream m;
+      m << where << entry << ": " << name << " = " << x << " m^4 with A = " << s.A
+        << " m^2" << (general ? "" : " (of " + text + ")") << " gives a "
+        << (polar ? "polar radius of gyration sqrt(J / 2 A)" : "radius of gyration")
+        << " of " << r << " m, outside the range of a crane section's, "
+        << radius_of_gyration_range[0] << " to " << radius_of_gyration_range[1] << " m";
+      AssertThrow(false, ExcMessage(m.str()));
+    }
+  }
 }
 
 /** The entries after the geometry, sections and material: the masses and the rope. */
@@ -304,7 +392,22 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   rope_length = positive("Rope length");
   rope_stiffness = positive("Rope stiffness", true);
   if (rope_stiffness == 0.)
+  {
     rope_stiffness = default_rope_stiffness(rope_length);
+    // the default stiffness is c / L: a too short rope is the length's fault,
+    // the shortest length is c / k_max
+    const double shortest = default_rope_stiffness(FrameDescription::max_rope_stiffness);
+    if (hoist == "rope" && !(rope_stiffness <= FrameDescription::max_rope_stiffness))
+    {
+      std::ostringstream r;
+      r << where << "Rope length: " << prm.get("Rope length")
+        << " m is too short for the default Rope stiffness 9.328e7 N m / L ("
+        << rope_stiffness << " N/m, more than " << FrameDescription::max_rope_stiffness
+        << " N/m): expected a length of at least " << shortest
+        << " m, or give the Rope stiffness";
+      AssertThrow(false, ExcMessage(r.str()));
+    }
+  }
   AssertThrow(hoist == "rigid" || hoist_mass > 0.,
               ExcMessage(where +
                          "Hoist mass: expected > 0 with Hoist = rope (the load "
@@ -377,9 +480,9 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
     AssertThrow(false, ExcMessage(e.str()));
   }
   // check the sections now (one-line errors naming the entry)
-  section_area(girder_section, "Girder section");
-  section_area(end_carriage_section, "End carriage section");
-  section_area(trolley_section, "Trolley section");
+  check_section(girder_section, "Girder section");
+  check_section(end_carriage_section, "End carriage section");
+  check_section(trolley_section, "Trolley section");
   if (!(mass_bridge() <= max_structure_mass))
   {
     std::ostringstream b;

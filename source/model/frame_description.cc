@@ -242,6 +242,15 @@ void validate_ropes(const FrameDescription &d, const std::set<std::string> &used
                                : (r.rest_length > 0. && std::isfinite(r.rest_length)),
             "Ropes",
             rope + ": the rest length must be > 0 (m)");
+    // a load that only ropes hold has no mass of a member: it needs its own
+    bool has_mass = used.count(r.other_node) > 0;
+    for (const auto &p : d.point_masses)
+      has_mass = has_mass || (p.node == r.other_node && p.mass > 0.);
+    require(has_mass,
+            "Ropes",
+            rope + ": its load '" + r.other_node +
+                "' is held only by ropes and has no mass: give it a point mass > 0 "
+                "in Model/Frame/Point masses");
   }
 }
 

@@ -508,6 +508,7 @@ void parse_contact_options(const Item &it,
                            FrameDescription::NodeContact &c)
 {
   const std::string contact = "Model/Frame/Contacts: contact '" + it.name + "': ";
+  std::string mu_given, rolls_given; // the option as given, once taken
   while (!v.empty())
   {
     const std::string &last = v.back();
@@ -516,6 +517,17 @@ void parse_contact_options(const Item &it,
                       value = eq == std::string::npos
                                   ? ""
                                   : Utilities::trim(last.substr(eq + 1));
+    // options are taken from the end: a repeat would silently keep the first
+    const std::pair<const char *, std::string *> once[] = {{"mu", &mu_given},
+                                                           {"rolls", &rolls_given}};
+    for (const auto &[name, given] : once)
+      if (eq != std::string::npos && key == name)
+      {
+        AssertThrow(given->empty(),
+                    ExcMessage(contact + key + "= is given twice ('" + last +
+                               "', then '" + *given + "'): give it once"));
+        *given = last;
+      }
     if (last == "two-sided")
       c.two_sided = true;
     else if (eq != std::string::npos && key == "mu")

@@ -1,7 +1,9 @@
 #include <hati/model/rope.h>
+#include <hati/model/rope_diagnostics.h>
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace hati
 {
@@ -128,5 +130,29 @@ double rope_omega_squared_bound(const std::vector<Rope> &ropes,
     bound +=
         rope.stiffness * (inverse_mass(rope.hook_dofs) + inverse_mass(rope.load_dofs));
   return bound;
+}
+
+void rethrow_naming_slack_rope(const ExceptionBase &e,
+                               const std::string &prefix,
+                               const std::vector<Rope> &ropes,
+                               const Vector<double> &U)
+{
+  std::ostringstream info;
+  e.print_info(info);
+  std::string message = info.str();
+  message.erase(0, message.find_first_not_of(" \n"));
+  message.erase(message.find_last_not_of(" \n") + 1);
+  if (message.rfind(prefix, 0) != 0)
+    return;
+  for (const Rope &rope : ropes)
+    if (rope.chord(U).norm() < (1. - 1e-9) * rope.rest_length)
+    {
+      std::ostringstream m;
+      m << message << " The rope '" << rope.name << "' is slack (length "
+        << rope.chord(U).norm() << " m, rest length " << rope.rest_length
+        << " m): it holds nothing in the static state; check its rest length and what "
+           "it should hold.";
+      AssertThrow(false, ExcMessage(m.str()));
+    }
 }
 } // namespace hati

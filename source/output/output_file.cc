@@ -111,6 +111,11 @@ void write_rows(RowsWrite &w)
 
 extern "C" int rows_child(void *argument)
 {
+  // out of the run's process group and session first: a kill of the group
+  // (a job scheduler's or a terminal's, `kill -9 -<pgid>`) then no longer
+  // reaches the child, which finishes the append; a kill that comes before
+  // this finds nothing written yet
+  ::setsid();
   write_rows(*static_cast<RowsWrite *>(argument));
   return 0;
 }

@@ -104,10 +104,13 @@ void OutputWriter::write_contacts(const OutputState &s)
     return; // no contact state (implicit or static analyses)
   const unsigned int ng = contact_names.size();
   auto &gap = group_gap, &vn = group_velocity, &imp = group_impulse;
+  auto &force = group_force;
   auto &n_rows = group_rows, &n_active = group_active;
+  const bool static_forces = s.forces.size() == s.gaps.size();
   gap.assign(ng, std::numeric_limits<double>::max());
   vn.assign(ng, 0.);
   imp.assign(ng, 0.);
+  force.assign(ng, 0.);
   n_rows.assign(ng, 0);
   n_active.assign(ng, 0);
   for (unsigned int k = 0; k < s.gaps.size(); ++k)
@@ -116,6 +119,8 @@ void OutputWriter::write_contacts(const OutputState &s)
     gap[g] = std::min(gap[g], s.gaps[k]);
     vn[g] += s.normal_velocities[k];
     imp[g] += s.impulses[k];
+    if (static_forces)
+      force[g] += s.forces[k];
     ++n_rows[g];
     n_active[g] += s.active[k] ? 1 : 0;
   }
@@ -126,8 +131,10 @@ void OutputWriter::write_contacts(const OutputState &s)
   {
     contacts << s.time << ',' << contact_names[g] << ',' << gap[g] << ','
              << vn[g] / n_rows[g] << ',' << imp[g] << ','
-             << (s.impulse_duration > 0. ? imp[g] / s.impulse_duration : 0.) << ','
-             << n_active[g];
+             << (static_forces             ? force[g]
+                 : s.impulse_duration > 0. ? imp[g] / s.impulse_duration
+                                           : 0.)
+             << ',' << n_active[g];
     if (with_friction)
     {
       static const char *const state_names[] = {"open", "stick", "slip"};
@@ -135,6 +142,8 @@ void OutputWriter::write_contacts(const OutputState &s)
                << ',' << group_slip[g] << ','
                << state_names[static_cast<int>(group_state[g])];
     }
+    else if (friction)
+      contacts << ",,,"; // the header's friction columns, empty: no friction state
     contacts << '\n';
   }
   flush_if_due();

@@ -187,9 +187,11 @@ void OutputParameters::parse_parameters(ParameterHandler &prm)
   section_force_interval = prm.get_double("Section force interval");
   contact_force_window = prm.get_double("Contact force window");
   progress_interval = prm.get_double("Progress interval");
-  spectra = Utilities::split_string_list(prm.get("Spectra"));
-  spectrum_damping_ratios = Utilities::string_to_double(
-      Utilities::split_string_list(prm.get("Spectrum damping ratios")));
+  const std::string spectra_text = prm.get("Spectra"),
+                    ratios_text = prm.get("Spectrum damping ratios");
+  spectra = Utilities::split_string_list(spectra_text);
+  spectrum_damping_ratios =
+      Utilities::string_to_double(Utilities::split_string_list(ratios_text));
   const std::string periods = prm.get("Spectrum periods");
   spectrum_periods = Utilities::string_to_double(Utilities::split_string_list(periods));
   prm.leave_subsection();
@@ -202,6 +204,21 @@ void OutputParameters::parse_parameters(ParameterHandler &prm)
                 ExcMessage("Output/Spectrum periods: the periods must be > 0 and "
                            "increasing (s), got " +
                            periods));
+  // a name or a ratio given twice would give two identical columns
+  for (unsigned int i = 0; i < spectra.size(); ++i)
+    AssertThrow(std::find(spectra.begin(), spectra.begin() + i, spectra[i]) ==
+                    spectra.begin() + i,
+                ExcMessage("Output/Spectra: the monitor '" + spectra[i] +
+                           "' is named twice (name each monitor once), got " +
+                           spectra_text));
+  for (unsigned int i = 0; !spectra.empty() && i < spectrum_damping_ratios.size(); ++i)
+    AssertThrow(std::find(spectrum_damping_ratios.begin(),
+                          spectrum_damping_ratios.begin() + i,
+                          spectrum_damping_ratios[i]) ==
+                    spectrum_damping_ratios.begin() + i,
+                ExcMessage("Output/Spectrum damping ratios: a ratio is given twice "
+                           "(give each ratio once), got " +
+                           ratios_text));
   AssertThrow(spectra.empty() || !spectrum_damping_ratios.empty(),
               ExcMessage("Output/Spectrum damping ratios: at least one damping ratio "
                          "is needed for Output/Spectra"));

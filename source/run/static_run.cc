@@ -105,12 +105,25 @@ void run_static_analysis(Problem &problem, RunDirectory &directory)
   s.time = 0.;
   s.displacement = &U;
   s.velocity = &V;
-  for (const auto &c : system.contacts)
+  // contacts.csv: the static contact forces (no impulses, no motion); with
+  // friction the sticking state of the loaded frictional contacts (A9)
+  const bool friction = has_friction(system.contacts);
+  for (unsigned int k = 0; k < system.contacts.size(); ++k)
   {
+    const ContactRow &c = system.contacts[k];
+    const double force = k < forces.size() ? forces[k] : 0.;
     s.gaps.push_back(c.initial_gap + c.apply(U));
     s.normal_velocities.push_back(0.);
     s.impulses.push_back(0.);
-    s.active.push_back(false);
+    s.forces.push_back(force);
+    s.active.push_back(force > 0.);
+    if (friction)
+    {
+      s.tangential_impulses.insert(s.tangential_impulses.end(), 2, 0.);
+      s.slip_velocities.push_back(0.);
+      s.friction_states.push_back(c.frictional() && force > 0. ? FrictionState::stick
+                                                               : FrictionState::open);
+    }
   }
   writer.write_history(s);
   writer.write_vtu(s);

@@ -96,8 +96,15 @@ std::string draw_plots(const std::string &folder)
   const int spawned =
       posix_spawnp(&pid, python.c_str(), &actions, nullptr, argv, environ);
   posix_spawn_file_actions_destroy(&actions);
+  // posix_spawn reports the failed open of the log (O_NOFOLLOW) as its error
+  if (spawned == ELOOP)
+    return log + " is a symbolic link: refused (an output file is never written through "
+                 "a link; remove the link)";
   if (spawned != 0)
-    return "python3 was not found (" + system_error_text(spawned) + ")";
+    return (spawned == ENOENT
+                ? "python3 was not found ("
+                : "cannot start " + python + " with its log " + log + " (") +
+           system_error_text(spawned) + ")";
   int status = 0;
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
     ;

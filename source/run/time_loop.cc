@@ -249,11 +249,12 @@ TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
       every_vtu(problem.output_parameters.vtu_interval > 0.
                     ? steps_between(problem.output_parameters.vtu_interval, dt)
                     : 0),
-      every_section_row(
-          every_history *
-          std::max(1l,
-                   std::lround(problem.output_parameters.section_force_interval /
-                               (every_history * dt)))),
+      // at most one row past the last step (an interval of 1e20 s gives the
+      // rows at t = 0 and at the end, not an overflowed rounding)
+      every_section_row(every_history *
+                        steps_between(problem.output_parameters.section_force_interval,
+                                      every_history * dt,
+                                      n_steps / every_history + 1)),
       statistics(problem.system.contacts,
                  initial_gaps(problem.system),
                  problem.output_parameters.contact_force_window),

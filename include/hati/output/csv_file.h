@@ -36,9 +36,10 @@ void use_shortest_numbers(std::ostream &out);
  * A CSV file written in whole rows: the rows are formatted into a buffer
  * (`std::to_chars`, shortest round-trip) and written to the file only by
  * flush(), as one append of complete lines (append_whole_rows(): by a child
- * process that finishes it even when the run is killed, and cut back to
- * the last whole row if it fails), so the file ends on a complete line at
- * every instant, even after a SIGKILL or on a full disk. flush() and
+ * process outside the run's process group that finishes it even when the
+ * run or its group is killed, and cut back to the last whole row if it
+ * fails), so the file ends on a complete line at every instant, even after
+ * a SIGKILL of the run or its process group or on a full disk. flush() and
  * close() check every write and throw a one-line message naming the file
  * and the system error (e.g. `No space left on device`); after a failed
  * write nothing more is written.

@@ -147,17 +147,27 @@ bool write_all(const int fd, const char *data, std::size_t size);
  * Append @p size bytes of whole rows (@p data ends with a newline) to the
  * file @p fd, so that the file ends on a whole row whatever happens:
  *
- * - The write is done by a short-lived child process sharing the memory
- *   (`clone` with `CLONE_VM | CLONE_VFORK`, all signals blocked), not by
- *   the run itself: Linux cuts a large `write()` at a page boundary when the
- *   writer receives SIGKILL (measured: 7 % of `kill -9` during a run
- *   writing 50 MB/s left a cut line), but the child, another process,
- *   finishes the write when only the run is killed. The child holds the
- *   run's descriptors, the lock of RunDirectory too, until it is done. If
- *   no child can be started, the run writes itself; it also writes an
- *   append that lies within one 4 KiB page of the file itself (Linux
- *   checks for a kill before each page it copies, so such a write is
- *   never cut; a child costs 20 to 100 us, more on a busy machine).
+ * - Linux copies a buffered `write()` to a regular file one page (folio)
+ *   at a time and checks for a fatal signal before each: a process killed
+ *   during a `write()` of several pages leaves the pages copied so far, a
+ *   line cut at a 4 KiB boundary (measured: 7 % of `kill -9` during a run
+ *   writing 50 MB/s), while a `write()` within one page of the file is
+ *   done whole or not at all. So an append that lies within one 4 KiB page
+ *   of the file is written by the run itself (most appends of a run with
+ *   frequent snapshots).
+ * - A longer append is written by a short-lived child process sharing the
+ *   memory (`clone` with `CLONE_VM | CLONE_VFORK`, all signals blocked),
+ *   which first leaves the run's process group and session (`setsid`):
+ *   a SIGKILL of the run or of its whole process group (a job scheduler's
+ *   hard kill, `kill -9 -<pgid>`) then does not reach it, and it finishes
+ *   the append (a group kill before its `setsid` finds nothing written).
+ *   The child holds the run's descriptors, the lock of RunDirectory too,
+ *   until it is done. If no child can be started, the run writes itself.
+ *   A kill that also reaches the child (a kill of every process of a
+ *   control group or of the machine, the OOM killer, which kills every
+ *   process sharing the memory) can still cut the last line of such an
+ *   append at a 4 KiB boundary: no append of several pages can be made
+ *   atomic with `write()`.
  * - A write that fails (e.g. a full disk) after a part was written is cut
  *   back to the last whole row (`ftruncate`).
  *

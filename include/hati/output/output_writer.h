@@ -38,6 +38,12 @@ struct OutputState
   /** Duration over which the impulses act (s): dt for CD-Lagrange. */
   double impulse_duration = 0.;
   /**
+   * The contact forces (N, per row) of a state without impulses (the static
+   * analysis): the `force` column is their sum per contact name; empty: the
+   * impulses divided by impulse_duration.
+   */
+  std::vector<double> forces;
+  /**
    * With friction (A9; empty otherwise): the tangential impulses (N s, two
    * per row, along its tangent rows), the slip velocity `||T_k V||` of each
    * touching row (m/s, 0 when open or frictionless) and its state.
@@ -61,7 +67,9 @@ struct OutputState
  * Writes every output file of a run into its RunDirectory (doc/user_guide.md):
  * `history.csv` (monitor points), `contacts.csv` (one row per contact name
  * and output time: smallest gap, mean normal velocity, summed impulse, mean
- * force = impulse / duration, number of active rows), `energy.csv`,
+ * force = impulse / duration (the summed static force in a static
+ * analysis), number of active rows; with friction the tangential impulse,
+ * slip velocity and state, on every row), `energy.csv`,
  * `solution.pvd` + `solution-NNNNN.vtu`, `section_forces.csv` when the model
  * writes section forces, and `summary.json` at the end.
  * It also counts impacts (a contact name going from no impulse to a
@@ -135,7 +143,7 @@ private:
   /** Rows of Model::write_section_forces() before they go to section_forces. */
   std::ostringstream section_rows;
   /** Scratch of write_contacts() per contact name. */
-  std::vector<double> group_gap, group_velocity, group_impulse;
+  std::vector<double> group_gap, group_velocity, group_impulse, group_force;
   std::vector<unsigned int> group_rows, group_active;
   /** Whether a contact has friction: the friction columns are written (A9). */
   const bool friction;

@@ -14,12 +14,22 @@
 
 namespace hati
 {
-/** Steps between two outputs of interval @p interval (s); 0 means every step. */
-inline unsigned long steps_between(const double interval, const double dt)
+/**
+ * Steps between two outputs of interval @p interval (s); 0 means every step.
+ * At most @p limit (an interval far beyond the run, e.g. 1e20 s, gives no
+ * output between the first and the last step instead of an overflowed
+ * rounding).
+ */
+inline unsigned long steps_between(const double interval,
+                                   const double dt,
+                                   const unsigned long limit = 1ul << 62)
 {
   if (interval <= 0.)
     return 1;
-  return std::max<unsigned long>(1, std::llround(interval / dt));
+  const double steps = interval / dt;
+  if (!(steps < static_cast<double>(limit)))
+    return limit;
+  return std::max<unsigned long>(1, std::llround(steps));
 }
 
 /**
