@@ -228,6 +228,25 @@ private:
   std::vector<FrictionState> step_states;
 };
 
+/**
+ * The window of the mean contact forces (s): Output/Contact force window,
+ * at most the End time (a longer window would only hold the whole run, and
+ * 1e20 s overflowed its count of steps): with contacts, a warning when it is
+ * shortened.
+ */
+double contact_force_window(Problem &problem, const double end_time)
+{
+  const double window = problem.output_parameters.contact_force_window;
+  if (!(window > end_time) || problem.system.contacts.empty())
+    return window;
+  std::ostringstream s;
+  s << "Output/Contact force window = " << window
+    << " s is longer than the run (Time integration/End time = " << end_time
+    << " s): peak_mean_force is taken over the End time";
+  problem.warn(s.str());
+  return end_time;
+}
+
 std::vector<double> initial_gaps(const DiscreteSystem &system)
 {
   std::vector<double> gaps;
@@ -257,7 +276,7 @@ TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
                                       n_steps / every_history + 1)),
       statistics(problem.system.contacts,
                  initial_gaps(problem.system),
-                 problem.output_parameters.contact_force_window),
+                 contact_force_window(problem, end_time)),
       progress(problem.output_parameters.progress_interval, end_time),
       watchdog(*problem.model, problem.system),
       every_check(
