@@ -159,7 +159,7 @@ def mpirun_within(sets, seconds):
     for s in sets:
         cmd += ["--set", s]
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                            env=ENV, start_new_session=True)
+                            env=ENV, start_new_session=True, cwd=ctx.source)
     try:
         out, err = proc.communicate(timeout=seconds)
     except subprocess.TimeoutExpired:

@@ -119,7 +119,8 @@ shutil.rmtree(out, ignore_errors=True)
 os.makedirs(out)
 record = os.path.join(ctx.work, "stale_record.AT2")
 shutil.copy(elc, record)
-sets = ["Time integration/End time=0.2", "Suite/Records=a: %s; b: %s" % (record, elc)]
+sets = ["Time integration/End time=0.2", "Output/Spectra=A1",
+        "Suite/Records=a: %s; b: %s" % (record, elc)]
 p = subprocess.run(command(out, sets), capture_output=True, text=True, timeout=120)
 ctx.check_true("stale: first run completes", p.returncode == 0 and
                statuses(out) == {"a_s1_0": "completed", "b_s1_0": "completed"}, p.stderr)
