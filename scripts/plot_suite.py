@@ -5,6 +5,9 @@ with the statistic of each group of scale factor and variation
 (suite_summary.json), and spectra.png, the pseudo-acceleration spectra of
 every member (its spectra.csv) with their statistic (suite_spectra.csv).
 hati's rank 0 runs it at the end of a suite; exit code 3 without matplotlib.
+A plot is drawn into a temporary file created exclusively in the folder and
+renamed over its name: never written through a link there (a link at
+suite.png or spectra.png is refused, exit code 1, its target untouched).
 
 Usage: scripts/plot_suite.py SUITE_FOLDER"""
 import csv
@@ -12,6 +15,7 @@ import json
 import math
 import os
 import sys
+import tempfile
 
 try:
     import matplotlib
@@ -90,8 +94,27 @@ def plot_results(folder, rows, summary):
                     summary["statistic"],
                     "; not usable: " + ", ".join(failed) if failed else ""), fontsize=10)
     fig.tight_layout()
-    fig.savefig(os.path.join(folder, "suite.png"), dpi=110)
-    plt.close(fig)
+    save(fig, folder, "suite.png")
+
+
+def save(fig, folder, name):
+    """fig into folder/name through a temporary file created exclusively
+    (O_EXCL) in the folder and renamed over name: a link is never followed."""
+    path = os.path.join(folder, name)
+    if os.path.islink(path):
+        raise SystemExit("plot_suite.py: %s is a symbolic link: refused (a plot is never "
+                         "written through a link; remove the link)" % path)
+    fd, temporary = tempfile.mkstemp(prefix="." + name + ".", suffix=".tmp", dir=folder)
+    try:
+        with os.fdopen(fd, "wb") as f:
+            os.fchmod(f.fileno(), 0o644)  # mkstemp's 0600: as the other outputs
+            fig.savefig(f, dpi=110, format="png")
+        os.replace(temporary, path)
+    except BaseException:
+        os.unlink(temporary)
+        raise
+    finally:
+        plt.close(fig)
 
 
 def read_table(path):
@@ -136,8 +159,7 @@ def plot_spectra(folder, rows):
     axes[0, 0].legend(fontsize=7)
     fig.suptitle("pseudo-acceleration spectra: members (grey) and the statistic", fontsize=10)
     fig.tight_layout()
-    fig.savefig(os.path.join(folder, "spectra.png"), dpi=110)
-    plt.close(fig)
+    save(fig, folder, "spectra.png")
 
 
 def main():

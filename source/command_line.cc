@@ -7,6 +7,7 @@
 
 #include <hati/base/input_file.h>
 #include <hati/output/run_directory.h>
+#include <hati/run/mpi_consensus.h>
 #include <hati/run/simulation.h>
 #include <hati/run/suite_plan.h>
 #include <hati/run/suite_runner.h>
@@ -167,17 +168,26 @@ int run_command_line(int argc, char **argv)
       return 2;
     }
     const std::string file = vm["parameter-file"].as<std::string>();
-    read_parameter_file(prm, file);
     std::vector<std::string> overrides;
     if (vm.count("set"))
       overrides = vm["set"].as<std::vector<std::string>>();
-    for (const auto &s : overrides)
-      apply_override(prm, s);
-
     SuiteParameters suite;
-    suite.parse_parameters(prm);
-    if (suite.active()) // one Simulation per member (run/suite_runner.h)
-      return SuiteRunner(prm, file, overrides, suite, MPI_COMM_WORLD).run();
+    std::unique_ptr<SuiteRunner> runner;
+    // every rank reads the same parameters; under mpirun a refusal is
+    // agreed, so that rank 0 alone prints it and no rank waits for another
+    agree(MPI_COMM_WORLD,
+          [&]
+          {
+            read_parameter_file(prm, file);
+            for (const auto &s : overrides)
+              apply_override(prm, s);
+            suite.parse_parameters(prm);
+            if (suite.active()) // one Simulation per member (run/suite_runner.h)
+              runner = std::make_unique<SuiteRunner>(
+                  prm, file, overrides, suite, MPI_COMM_WORLD);
+          });
+    if (runner)
+      return runner->run();
 
     // one run needs one rank: under mpirun the others would only find its
     // output directory locked (a Suite spreads its members over the ranks)
@@ -204,6 +214,13 @@ int run_command_line(int argc, char **argv)
       return 128 + stop_signal();
     }
     return 0;
+  }
+  catch (const AgreedError &e)
+  {
+    // every rank has it: printed once
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cerr << "hati: error: " << e.what() << std::endl;
+    return 1;
   }
   catch (const std::exception &e)
   {

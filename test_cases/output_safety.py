@@ -437,6 +437,17 @@ else:
         ctx.check_true("a full disk: summary.json says failed with the message",
                        s.get("status") == "failed" and
                        err == "hati: error: " + s.get("message", ""), str(s))
+        # a suite on the full disk (issue #24, item 13): its failure is reported
+        p = subprocess.run([ctx.hati, ctx.prm("portal_frame_elcentro.prm"),
+                            "--set", "Output/Output directory=" + os.path.join(disk, "suite"),
+                            "--set", "Time integration/End time=0.05",
+                            "--set", "Output/Output interval=0",
+                            "--set", "Suite/Scale factors=1, 2"],
+                           capture_output=True, text=True, timeout=120, cwd=ctx.source)
+        errors = [l for l in p.stderr.splitlines() if l.startswith("hati: error:")]
+        ctx.check_true("a full disk, a suite: exit 1, one line with the system error",
+                       p.returncode == 1 and len(errors) == 1 and
+                       "No space left on device" in errors[0], "(exit %d) %s" % (p.returncode, errors))
     finally:
         subprocess.run(["umount", disk], capture_output=True)
 ctx.finish()

@@ -7,13 +7,21 @@ members' CSV files are bitwise identical; suite_summary.json's envelope and
 mean, with the governing member, equal a hand calculation on suite.csv (the
 mean by rerunning with Statistic = mean, which reuses every member), and
 suite_spectra.csv the envelope of the members' spectra.csv. A single run
-(no Suite) under `mpirun -np 2` runs once, on rank 0, with one warning."""
+(no Suite) under `mpirun -np 2` runs once, on rank 0, with one warning.
+
+Issue #24: under `mpirun -np 2` a suite whose folder cannot be created
+(rank 0's step before the ranks meet) ends within 10 s with exit code 1
+and one error line (rank 0's), a refused suite prints its line once, and
+SIGTERM to mpirun stops the suite cleanly (suite.csv written; mpirun 4.1
+itself exits with 1 when signalled)."""
 import csv
 import filecmp
 import json
 import os
 import shutil
+import signal
 import subprocess
+import time
 
 from hati_test import Context
 
@@ -140,6 +148,71 @@ ctx.check_true("mpirun -np 2, single run: summary.json completed, with the warni
 ctx.check_true("mpirun -np 2, single run: history.csv and energy.csv equal the serial run's",
                all(filecmp.cmp(os.path.join(single_serial, f), os.path.join(single_mpi, f),
                                shallow=False) for f in ("history.csv", "energy.csv")))
+
+# --- issue #24: no deadlock, one line, SIGTERM ---
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+
+
+def mpirun_within(sets, seconds):
+    """mpirun -np 2 hati with sets: (exit code or None if it hung, stderr)."""
+    cmd = ["mpirun", "-np", "2", "--oversubscribe", ctx.hati, prm]
+    for s in sets:
+        cmd += ["--set", s]
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            env=ENV, start_new_session=True, cwd=ctx.source)
+    try:
+        out, err = proc.communicate(timeout=seconds)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        out, err = proc.communicate()
+        return None, err
+    print(out[-500:] + err[-800:])
+    return proc.returncode, err
+
+
+afile = os.path.join(ctx.work, "afile")
+with open(afile, "w") as f:
+    f.write("a regular file\n")
+short = ["Time integration/End time=0.2", "Output/Output interval=0",
+         "Output/History interval=0.002"]
+started = time.time()
+code, err = mpirun_within(short + ["Output/Output directory=" + afile + "/sub",
+                                   "Suite/Scale factors=1, 2"], 10)
+errors = [l for l in err.splitlines() if l.startswith("hati: error:")]
+ctx.check_true("mpirun -np 2, suite folder under a regular file: exit 1 within 10 s, "
+               "one error line", code == 1 and len(errors) == 1 and "afile/sub" in errors[0],
+               "(exit %s, %.1f s) %s" % (code, time.time() - started, errors))
+code, err = mpirun_within(short + ["Output/Output directory=" + os.path.join(ctx.work, "dup"),
+                                   "Suite/Scale factors=1, 1.0"], 20)
+errors = [l for l in err.splitlines() if l.startswith("hati: error:")]
+ctx.check_true("mpirun -np 2, a refused suite: exit 1, its line printed once (rank 0)",
+               code == 1 and len(errors) == 1 and "given twice" in errors[0],
+               "(exit %s) %s" % (code, errors))
+
+term = os.path.join(ctx.work, "term")
+shutil.rmtree(term, ignore_errors=True)
+cmd = ["mpirun", "-np", "2", "--oversubscribe", ctx.hati, prm,
+       "--set", "Output/Output directory=" + term, "--set", "Output/Output interval=0",
+       "--set", "Time integration/End time=20",
+       "--set", "Suite/Records=a: %s; b: %s; c: %s" % (elc, r228, elc)]
+proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=ENV)
+deadline = time.time() + 60
+while time.time() < deadline and not all(
+        os.path.exists(os.path.join(term, m, "member.log")) for m in ("a_s1_0", "b_s1_0")):
+    time.sleep(0.1)
+proc.send_signal(signal.SIGTERM)
+try:
+    out, err = proc.communicate(timeout=60)
+except subprocess.TimeoutExpired:
+    proc.kill()
+    out, err = proc.communicate()
+print(out[-600:] + err[-600:])
+# every rank stops as a serial suite does (exit code 143); Open MPI 4.1's
+# mpirun itself exits with 1 when it is signalled, whatever its ranks return
+ctx.check_true("mpirun -np 2, SIGTERM to mpirun: the suite stops cleanly, suite.csv written",
+               proc.returncode in (1, 143) and "hati: suite interrupted by SIGTERM" in err and
+               os.path.exists(os.path.join(term, "suite.csv")),
+               "(exit %s)" % proc.returncode)
 
 _, p = run_suite("serial", suite + ["Suite/Statistic=mean"])
 ctx.check_true("Statistic = mean: every member reused",

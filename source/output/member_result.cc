@@ -2,7 +2,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <sys/stat.h>
+
 #include <fstream>
+#include <sstream>
 
 namespace hati
 {
@@ -58,5 +61,41 @@ std::string read_member_summary(const std::string &folder, MemberResult &result)
   if (summary.contains("wall_time") && summary["wall_time"].is_number())
     result.wall_time = summary["wall_time"].get<double>();
   return status;
+}
+
+bool member_outputs_whole(const std::string &folder)
+{
+  std::ifstream in(folder + "/summary.json");
+  if (!in)
+    return false;
+  const Json summary = Json::parse(in, nullptr, false);
+  if (summary.is_discarded() || !summary.is_object() ||
+      summary.value("status", "") != "completed")
+    return false;
+  for (const char *key : {"model", "n_dofs", "end_time", "n_steps", "wall_time"})
+    if (!summary.contains(key))
+      return false;
+  if (!summary["end_time"].is_number() || !summary["wall_time"].is_number())
+    return false;
+  std::ifstream manifest(folder + "/.hati-manifest");
+  bool history = false;
+  for (std::string name; std::getline(manifest, name);)
+  {
+    if (name.empty() || name[0] == '.' || name.find('/') != std::string::npos)
+      continue; // the temporaries .<name>.tmp (replaced, so gone)
+    struct stat status;
+    if (::lstat((folder + "/" + name).c_str(), &status) != 0 || !S_ISREG(status.st_mode))
+      return false;
+    history = history || name == "history.csv";
+    if (name.size() > 4 && name.compare(name.size() - 4, 4, ".csv") == 0 &&
+        status.st_size > 0)
+    {
+      std::ifstream csv(folder + "/" + name, std::ios::binary);
+      char last = 0;
+      if (!csv.seekg(-1, std::ios::end) || !csv.get(last) || last != '\n')
+        return false;
+    }
+  }
+  return history;
 }
 } // namespace hati

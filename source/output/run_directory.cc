@@ -34,7 +34,9 @@ extern "C" void on_stop_signal(int signal)
   stop_signal_number = signal;
 }
 
-void install_stop_handlers()
+} // namespace
+
+void catch_stop_signals()
 {
   struct sigaction action = {};
   action.sa_handler = on_stop_signal;
@@ -43,6 +45,9 @@ void install_stop_handlers()
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
 }
+
+namespace
+{
 
 const char *const lock_name = ".hati.lock";
 const char *const manifest_name = ".hati-manifest";
@@ -132,6 +137,30 @@ void check_output_directory(const std::string &path)
                                  "your own"));
 }
 
+OutputFile
+lock_file(const OutputFolder &folder, const std::string &name, const std::string &in_use)
+{
+  const std::string path = folder.path_of(name);
+  const int fd = ::openat(
+      folder.descriptor(), name.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
+  if (fd < 0 && errno == ELOOP)
+    folder.refuse_link(name);
+  AssertThrow(fd >= 0,
+              ExcMessage("cannot create the lock file " + path + ": " +
+                         system_error_text(errno)));
+  OutputFile held(fd, path);
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno != ENOLCK && errno != EOPNOTSUPP)
+  {
+    // (a file system without locks, ENOLCK/EOPNOTSUPP: run without the lock)
+    const int error = errno;
+    AssertThrow(false,
+                ExcMessage(error == EWOULDBLOCK ? in_use
+                                                : "cannot lock " + path + ": " +
+                                                      system_error_text(error)));
+  }
+  return held;
+}
+
 RunDirectory::RunDirectory(const std::string &path, const std::string &parameters)
     : dir(path), parameters(parameters)
 {
@@ -144,35 +173,20 @@ void RunDirectory::begin()
 {
   if (begun())
     return;
+  if (dry_run)
+    throw DryRunEnd();
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   AssertThrow(
       !ec, ExcMessage("cannot create the output directory " + dir + ": " + ec.message()));
   // every file from here on is opened relative to this descriptor
   folder = OutputFolder(dir);
-  const std::string lock_path = folder.path_of(lock_name);
-  const int fd = ::openat(
-      folder.descriptor(), lock_name, O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
-  if (fd < 0 && errno == ELOOP)
-    folder.refuse_link(lock_name);
-  AssertThrow(fd >= 0,
-              ExcMessage("cannot create the lock file " + lock_path + ": " +
-                         system_error_text(errno)));
-  OutputFile held(fd, lock_path);
-  if (::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno != ENOLCK && errno != EOPNOTSUPP)
-  {
-    // (a file system without locks, ENOLCK/EOPNOTSUPP: run without the lock)
-    const int error = errno;
-    AssertThrow(
-        false,
-        ExcMessage(error == EWOULDBLOCK
-                       ? "the output directory " + dir +
-                             " is in use by another hati run (it holds " + lock_path +
-                             "); wait for it to end or set another "
-                             "Output/Output directory"
-                       : "cannot lock " + lock_path + ": " + system_error_text(error)));
-  }
-  lock = std::move(held);
+  lock = lock_file(folder,
+                   lock_name,
+                   "the output directory " + dir +
+                       " is in use by another hati run (it holds " +
+                       folder.path_of(lock_name) +
+                       "); wait for it to end or set another Output/Output directory");
 
   // delete exactly the files the previous run listed, nothing else
   for (const std::string &name : previous_manifest(folder))
@@ -183,7 +197,9 @@ void RunDirectory::begin()
 
   replace("parameters.prm", parameters, true);
   replace("summary.json", "{\n  \"status\": \"running\"\n}\n", true);
-  install_stop_handlers();
+  catch_stop_signals();
+  if (after_begin)
+    after_begin(*this);
 }
 
 std::string RunDirectory::create(const std::string &name)

@@ -47,5 +47,22 @@ void Simulation::run()
       .get(problem->analysis_parameters.type)
       .create(*problem, *run_directory);
 }
+void Simulation::check()
+{
+  run_directory->dry_run = true;
+  try
+  {
+    run();
+  }
+  catch (const RunDirectory::DryRunEnd &)
+  {
+  }
+}
+
+void Simulation::when_output_begins(std::function<void(RunDirectory &)> hook)
+{
+  run_directory->after_begin = std::move(hook);
+}
+
 void Simulation::warn(const std::string &message) { problem->warn(message); }
 } // namespace hati

@@ -28,7 +28,7 @@ void SuiteParameters::declare_parameters(ParameterHandler &prm)
       "1",
       Patterns::List(Patterns::Double(-100., 100.), 1),
       "Scale factors of the suite (-), each multiplying Loading/Accelerogram scale "
-      "factor: every record is run at every factor.");
+      "factor: every record is run at every factor; each factor once.");
   prm.declare_entry(
       "Variations",
       "",
@@ -36,7 +36,10 @@ void SuiteParameters::declare_parameters(ParameterHandler &prm)
       "Parameters varied over the suite, 'Entry/Path=v1|v2|...; ...' (e.g. "
       "'Model/Bridge crane/Trolley position=0.1|0.5|0.9'): every combination of the "
       "values is run with every record and scale factor; the variation index counts "
-      "the combinations from 0, the first entry varying slowest.");
+      "the combinations from 0, the first entry varying slowest. Each entry once; not "
+      "Suite/*, Output/Output directory, Analysis/Type, Loading/Accelerogram scale "
+      "factor (use Scale factors) nor, with Records, Loading/Accelerogram X|Y|Z. A "
+      "suite has at most 10000 members (records x scale factors x variations).");
   prm.declare_entry(
       "Statistic",
       "",
@@ -98,13 +101,55 @@ std::vector<SuiteVariation> parse_variations(const std::string &text)
                 ExcMessage("Suite/Variations: '" + printable(item) +
                            "' is not 'Entry/Path=v1|v2|...'"));
     SuiteVariation v;
-    v.path = Utilities::trim(item.substr(0, eq));
+    // the path as apply_override() reads it: its parts trimmed
+    std::vector<std::string> parts;
+    const std::string path = item.substr(0, eq);
+    std::string::size_type start = 0, slash;
+    while ((slash = path.find('/', start)) != std::string::npos)
+    {
+      parts.push_back(Utilities::trim(path.substr(start, slash - start)));
+      start = slash + 1;
+    }
+    parts.push_back(Utilities::trim(path.substr(start)));
+    for (const auto &p : parts)
+      v.path += (v.path.empty() ? "" : "/") + p;
     v.values = Utilities::split_string_list(item.substr(eq + 1), '|');
     AssertThrow(!v.values.empty(),
                 ExcMessage("Suite/Variations: '" + v.path + "' has no values"));
+    for (const auto &other : variations)
+      AssertThrow(other.path != v.path,
+                  ExcMessage("Suite/Variations: the entry '" + v.path +
+                             "' is given twice; give all its values in one list '" +
+                             v.path + "=v1|v2|...'"));
     variations.push_back(v);
   }
   return variations;
+}
+
+/** Refuse a variation of an entry the suite sets for each member, or of the analysis. */
+void check_variation_paths(const std::vector<SuiteVariation> &variations,
+                           const bool with_records)
+{
+  for (const auto &v : variations)
+  {
+    const std::string head = "Suite/Variations: '" + v.path + "' ";
+    AssertThrow(v.path.rfind("Suite/", 0) != 0 && v.path != "Suite",
+                ExcMessage(head + "cannot be varied: subsection Suite describes the "
+                                  "suite itself (each member runs without it)"));
+    AssertThrow(v.path != "Output/Output directory",
+                ExcMessage(head + "cannot be varied: each member writes into its own "
+                                  "folder <Output directory>/<member>"));
+    AssertThrow(v.path != "Loading/Accelerogram scale factor",
+                ExcMessage(head + "cannot be varied: give the factors in Suite/Scale "
+                                  "factors (each multiplies the file's Loading/"
+                                  "Accelerogram scale factor)"));
+    AssertThrow(v.path != "Analysis/Type",
+                ExcMessage(head + "cannot be varied: a suite runs transient analyses"));
+    for (const char axis : {'X', 'Y', 'Z'})
+      AssertThrow(!with_records || v.path != std::string("Loading/Accelerogram ") + axis,
+                  ExcMessage(head + "cannot be varied with Suite/Records: each "
+                                    "record sets the accelerograms of its members"));
+  }
 }
 } // namespace
 
@@ -118,7 +163,43 @@ void SuiteParameters::parse_parameters(ParameterHandler &prm)
   prm.leave_subsection();
   records = parse_records(records_text);
   scale_factors = Utilities::string_to_double(Utilities::split_string_list(scales_text));
+  // two equal factors (1, 1.0) would be one member folder run twice
+  for (unsigned int i = 0; i < scale_factors.size(); ++i)
+    for (unsigned int j = 0; j < i; ++j)
+      AssertThrow(scale_factors[i] != scale_factors[j],
+                  ExcMessage("Suite/Scale factors: the factor " +
+                             shortest_number(scale_factors[i]) + " is given twice ('" +
+                             Utilities::trim(scales_text) + "'); give each factor once"));
   variations = parse_variations(variations_text);
+  check_variation_paths(variations, !records.empty());
+  // the count in floating point: it cannot wrap
+  double count = std::max<double>(records.size(), 1) * scale_factors.size();
+  for (const auto &v : variations)
+    count *= v.values.size();
+  AssertThrow(
+      count <= max_suite_members,
+      ExcMessage("Suite: " + std::to_string(std::max<std::size_t>(records.size(), 1)) +
+                 " records x " + std::to_string(scale_factors.size()) +
+                 " scale factors x " +
+                 shortest_number(count / std::max<double>(records.size(), 1) /
+                                 scale_factors.size()) +
+                 " variations = " + shortest_number(count) + " members, at most " +
+                 std::to_string(max_suite_members) +
+                 " (split the suite into several parameter files)"));
+}
+
+unsigned int SuiteParameters::n_variations() const
+{
+  unsigned int n = 1;
+  for (const auto &v : variations)
+    n *= v.values.size();
+  return n;
+}
+
+unsigned int SuiteParameters::n_members() const
+{
+  return std::max<unsigned int>(records.size(), 1) * scale_factors.size() *
+         n_variations();
 }
 
 bool SuiteParameters::active() const
@@ -141,10 +222,9 @@ std::vector<SuiteMember> plan_suite(const SuiteParameters &suite,
   std::vector<SuiteRecord> records = suite.records;
   if (records.empty())
     records.push_back({"base", {}});
-  unsigned int n_variations = 1;
-  for (const auto &v : suite.variations)
-    n_variations *= v.values.size();
+  const unsigned int n_variations = suite.n_variations();
   std::vector<SuiteMember> members;
+  members.reserve(suite.n_members());
   for (const auto &record : records)
     for (const double scale : suite.scale_factors)
       for (unsigned int k = 0; k < n_variations; ++k)
@@ -155,6 +235,15 @@ std::vector<SuiteMember> plan_suite(const SuiteParameters &suite,
         m.scale = scale;
         m.variation = k;
         m.name = record.name + "_s" + shortest_number(scale) + "_" + std::to_string(k);
+        constexpr std::size_t max_name = 255; // NAME_MAX of Linux file systems
+        AssertThrow(m.name.size() <= max_name,
+                    ExcMessage("Suite/Records: the record name '" +
+                               record.name.substr(0, 40) + "...' (" +
+                               std::to_string(record.name.size()) +
+                               " characters) is too long: its member folder '" +
+                               m.name.substr(0, 40) + "...' would have " +
+                               std::to_string(m.name.size()) + " characters, at most " +
+                               std::to_string(max_name)));
         if (!suite.records.empty())
           for (unsigned int d = 0; d < 3; ++d)
             m.overrides.push_back(std::string("Loading/Accelerogram ") + "XYZ"[d] + "=" +

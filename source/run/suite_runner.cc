@@ -4,11 +4,17 @@
 #include <hati/output/output_file.h>
 #include <hati/output/run_directory.h>
 #include <hati/output/suite_statistics.h>
+#include <hati/run/mpi_consensus.h>
 #include <hati/run/simulation.h>
+#include <hati/run/suite_checks.h>
 #include <hati/run/suite_runner.h>
 #include <hati/run/work_counter.h>
 
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+
 #include <spawn.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -19,6 +25,8 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
+#include <memory>
 #include <sstream>
 
 extern char **environ;
@@ -42,31 +50,84 @@ std::string file_text(const std::string &path)
   return s.str();
 }
 
-/** std::cout into a file while it lives (a member's terminal output into its member.log).
+/**
+ * A member's terminal output (std::cout) while it lives: kept in memory
+ * until attach() gets its `member.log`, opened once the member's folder is
+ * locked and cleaned (so that a log is never truncated in a folder another
+ * run holds), then written there.
  */
-class RedirectedOutput
+class MemberLog
 {
 public:
-  explicit RedirectedOutput(const std::string &path)
-      : log(create_output_file(path)), old(std::cout.rdbuf(log.rdbuf()))
-  {
-  }
-  ~RedirectedOutput()
+  MemberLog() : old(std::cout.rdbuf(&memory)) {}
+  ~MemberLog()
   {
     std::cout.rdbuf(old);
     try
     {
-      log.close();
+      if (log)
+        log->close();
     }
     catch (...)
     {
     }
   }
+  MemberLog(const MemberLog &) = delete;
+  MemberLog &operator=(const MemberLog &) = delete;
+
+  /** Write what was kept to @p file and send what follows there. */
+  void attach(OutputFile file)
+  {
+    log = std::make_unique<OutputStream>(std::move(file));
+    *log << memory.str();
+    std::cout.rdbuf(log->rdbuf());
+  }
 
 private:
-  OutputStream log;
+  std::stringbuf memory;
   std::streambuf *old;
+  std::unique_ptr<OutputStream> log;
 };
+
+/** std::cout and std::cerr discarded while it lives (the dry runs of the checks). */
+class Silence
+{
+public:
+  Silence() : out(std::cout.rdbuf(&null)), err(std::cerr.rdbuf(&null)) {}
+  ~Silence()
+  {
+    std::cout.rdbuf(out);
+    std::cerr.rdbuf(err);
+  }
+
+private:
+  class Null : public std::streambuf
+  {
+  protected:
+    int_type overflow(int_type c) override { return traits_type::not_eof(c); }
+  } null;
+  std::streambuf *out, *err;
+};
+
+/** The suite's own files in its folder (links there refused, old ones deleted). */
+const char *const suite_files[] = {"suite.csv",
+                                   "suite_summary.json",
+                                   "suite_spectra.csv",
+                                   "suite.png",
+                                   "spectra.png",
+                                   "plot_suite.log"};
+
+/** The lock of a suite's folder: a second suite there is refused. */
+const char *const suite_lock_name = ".hati-suite.lock";
+
+/** Throw the one-line refusal if @p path is a symbolic link (a member's folder). */
+void refuse_linked_folder(const std::string &path)
+{
+  struct stat status;
+  AssertThrow(::lstat(path.c_str(), &status) != 0 || !S_ISLNK(status.st_mode),
+              ExcMessage(path + " is a symbolic link: refused (a member's folder is "
+                                "never followed; remove the link)"));
+}
 
 /**
  * Run `python3 scripts/plot_suite.py <folder>` (the script next to the
@@ -136,17 +197,27 @@ SuiteRunner::SuiteRunner(ParameterHandler &prm,
   if (folder.empty())
     folder = "output/" + std::filesystem::path(parameter_file).stem().string();
   check_output_directory(folder);
+  // without any record every scale factor gives the same run
+  bool record = !suite.records.empty();
+  for (const char axis : {'X', 'Y', 'Z'})
+  {
+    const std::string entry = std::string("Accelerogram ") + axis;
+    record =
+        record ||
+        !Utilities::trim(prm.get(std::vector<std::string>{"Loading"}, entry)).empty();
+    for (const auto &v : suite.variations)
+      record = record || v.path == "Loading/" + entry;
+  }
+  AssertThrow(record || (suite.scale_factors.size() == 1 && suite.scale_factors[0] == 1.),
+              ExcMessage("Suite/Scale factors: the model has no record to scale "
+                         "(Suite/Records and Loading/Accelerogram X, Y, Z are empty): "
+                         "every factor would give the same run; give Suite/Records"));
+  // every value and record file applies (linear in the values, not the members)
+  check_suite_overrides(prm, suite);
   members = plan_suite(
       suite,
       folder,
       prm.get_double(std::vector<std::string>{"Loading"}, "Accelerogram scale factor"));
-  // every member's parameters apply (a bad variation is refused before any run)
-  for (const auto &m : members)
-  {
-    ParameterHandler member_prm;
-    std::string text;
-    member_parameters(m, member_prm, text);
-  }
 }
 
 void SuiteRunner::member_parameters(const SuiteMember &member,
@@ -190,20 +261,29 @@ MemberResult SuiteRunner::run_member(const SuiteMember &member) const
   const auto start = std::chrono::steady_clock::now();
   try
   {
+    refuse_linked_folder(dir);
     ParameterHandler prm;
     std::string text;
     member_parameters(member, prm, text);
+    // the member is its parameters and the contents of its input files
+    const std::string digests = input_digests(prm);
     MemberResult earlier = r;
     if (file_text(dir + "/parameters.prm") == text &&
+        file_text(dir + "/input_digests.txt") == digests && member_outputs_whole(dir) &&
         read_member_summary(dir, earlier) == "completed")
     {
       earlier.status = "reused";
       earlier.spectra = file_text(dir + "/spectra.csv");
       return earlier;
     }
-    std::filesystem::create_directories(dir);
-    const RedirectedOutput log(dir + "/member.log");
+    MemberLog log;
     Simulation simulation(prm, parameter_file);
+    simulation.when_output_begins(
+        [&](RunDirectory &directory)
+        {
+          directory.replace("input_digests.txt", digests, true);
+          log.attach(directory.open("member.log"));
+        });
     try
     {
       simulation.run();
@@ -232,48 +312,146 @@ MemberResult SuiteRunner::run_member(const SuiteMember &member) const
   return r;
 }
 
+void SuiteRunner::check_members() const
+{
+  // what differs between members is the record and the variation (the
+  // scale factor only scales): each value of each variation (the others at
+  // their first value) with the first record, each other record with the
+  // first variation; linear in the values, not the members
+  const unsigned int per_record = suite.scale_factors.size() * suite.n_variations();
+  std::vector<unsigned int> checked = {0};
+  unsigned int stride = suite.n_variations();
+  for (const auto &v : suite.variations)
+  {
+    stride /= v.values.size();
+    for (unsigned int j = 1; j < v.values.size(); ++j)
+      checked.push_back(j * stride);
+  }
+  for (unsigned int r = 1; r < suite.records.size(); ++r)
+    checked.push_back(r * per_record);
+  const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+  std::pair<unsigned int, std::string> refused(std::numeric_limits<unsigned int>::max(),
+                                               "");
+  {
+    const Silence quiet;
+    for (unsigned int i = rank; i < checked.size(); i += n_ranks)
+      try
+      {
+        ParameterHandler prm;
+        std::string text;
+        member_parameters(members[checked[i]], prm, text);
+        Simulation(prm, parameter_file).check();
+      }
+      catch (const std::exception &e)
+      {
+        std::string message = one_line_message(e);
+        if (message.rfind("Suite: member ", 0) != 0)
+          message = "Suite: member " + members[checked[i]].name + ": " + message;
+        refused = {checked[i], message};
+        break;
+      }
+  }
+  const auto all = Utilities::MPI::all_gather(comm, refused);
+  const auto first = std::min_element(all.begin(), all.end());
+  if (!first->second.empty())
+    throw AgreedError(first->second);
+}
+
+void SuiteRunner::take_folder(const bool create)
+{
+  std::error_code ec;
+  if (!out.is_open())
+  {
+    if (!create && !std::filesystem::is_directory(folder, ec))
+      return;
+    std::filesystem::create_directories(folder, ec);
+    AssertThrow(!ec,
+                ExcMessage("Output/Output directory: cannot create the suite's folder " +
+                           folder + ": " + ec.message()));
+    out = OutputFolder(folder);
+    lock = lock_file(out,
+                     suite_lock_name,
+                     "the suite folder " + folder +
+                         " is in use by another hati suite (it holds " +
+                         out.path_of(suite_lock_name) +
+                         "); wait for it to end or set another Output/Output directory");
+  }
+  for (const char *name : suite_files)
+    out.refuse_link(name);
+  for (const auto &m : members)
+    refuse_linked_folder(folder + "/" + m.name);
+  // the results of an earlier suite here are not this suite's
+  if (create)
+    for (const char *name : suite_files)
+      out.remove_regular_file(name);
+}
+
+void SuiteRunner::print_header() const
+{
+  const unsigned int n = members.size();
+  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+  std::cout << "hati: suite " << parameter_file << ": " << n << " members ("
+            << std::max<std::size_t>(suite.records.size(), 1) << " records x "
+            << suite.scale_factors.size() << " scale factors x " << suite.n_variations()
+            << " variations) on " << n_ranks << (n_ranks == 1 ? " rank" : " ranks")
+            << ", statistic " << suite.effective_statistic() << "\n  output: " << folder
+            << "/" << std::endl;
+}
+
+std::vector<MemberResult>
+SuiteRunner::run_members(const std::chrono::steady_clock::time_point start) const
+{
+  const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+  const unsigned int n = members.size();
+  std::vector<MemberResult> mine;
+  WorkCounter counter(comm);
+  while (!stop_requested())
+  {
+    const unsigned int k = counter.fetch_and_increment(0);
+    if (k >= n)
+      break;
+    mine.push_back(run_member(members[k]));
+    const MemberResult &r = mine.back();
+    const unsigned int done = counter.fetch_and_increment(1) + 1;
+    const double elapsed = seconds_since(start);
+    std::ostringstream line;
+    line << "hati: suite: member " << done << "/" << n << " done (" << r.name << ": "
+         << r.status << ", " << std::setprecision(3) << r.wall_time << " s";
+    if (n_ranks > 1)
+      line << ", rank " << rank;
+    if (!r.error.empty())
+      line << ": " << r.error;
+    line << "), ETA " << std::setprecision(3) << elapsed * (n - done) / done << " s";
+    std::cout << line.str() << std::endl;
+  }
+  return mine; // the window is freed: every rank is done
+}
+
 int SuiteRunner::run()
 {
   const auto start = std::chrono::steady_clock::now();
   const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
-  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
   const unsigned int n = members.size();
-  if (rank == 0)
-  {
-    std::filesystem::create_directories(folder);
-    std::cout << "hati: suite " << parameter_file << ": " << n << " members ("
-              << std::max<std::size_t>(suite.records.size(), 1) << " records x "
-              << suite.scale_factors.size() << " scale factors x "
-              << n / std::max<std::size_t>(suite.records.size(), 1) /
-                     suite.scale_factors.size()
-              << " variations) on " << n_ranks << (n_ranks == 1 ? " rank" : " ranks")
-              << ", statistic " << suite.effective_statistic() << "\n  output: " << folder
-              << "/" << std::endl;
-  }
-  std::vector<MemberResult> mine;
-  {
-    WorkCounter counter(comm);
-    while (!stop_requested())
-    {
-      const unsigned int k = counter.fetch_and_increment(0);
-      if (k >= n)
-        break;
-      mine.push_back(run_member(members[k]));
-      const MemberResult &r = mine.back();
-      const unsigned int done = counter.fetch_and_increment(1) + 1;
-      const double elapsed = seconds_since(start);
-      std::ostringstream line;
-      line << "hati: suite: member " << done << "/" << n << " done (" << r.name << ": "
-           << r.status << ", " << std::setprecision(3) << r.wall_time << " s";
-      if (n_ranks > 1)
-        line << ", rank " << rank;
-      if (!r.error.empty())
-        line << ": " << r.error;
-      line << "), ETA " << std::setprecision(3) << elapsed * (n - done) / done << " s";
-      std::cout << line.str() << std::endl;
-    }
-  } // the window is freed: every rank is done
-  const auto gathered = Utilities::MPI::gather(comm, mine, 0);
+  // a signal before the first member stops the suite as one during a member
+  catch_stop_signals();
+  std::vector<std::vector<MemberResult>> gathered;
+  without_stray_exceptions(comm,
+                           [&]
+                           {
+                             // a second suite in the folder is refused at once, before
+                             // the checks
+                             agree(
+                                 comm, [&] { take_folder(false); }, true);
+                             if (rank == 0)
+                               print_header();
+                             check_members();
+                             agree(
+                                 comm, [&] { take_folder(true); }, true);
+                             const std::vector<MemberResult> mine = run_members(start);
+                             gathered = Utilities::MPI::gather(comm, mine, 0);
+                           });
   if (rank != 0)
     return stop_requested() ? 128 + stop_signal() : 0;
   std::vector<MemberResult> results(n);
@@ -308,7 +486,6 @@ int SuiteRunner::finish(std::vector<MemberResult> &results, const double wall_ti
       failed.push_back(r.name + ": " + r.error);
     not_run += r.status == "not run" || r.status == "interrupted";
   }
-  const OutputFolder out(folder);
   out.replace("suite.csv", statistics.csv(), true);
   out.replace("suite_summary.json",
               statistics.summary_json(

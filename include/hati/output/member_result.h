@@ -57,6 +57,16 @@ struct MemberResult
  * `<rope>.max_tension` (N, when present); and the run's `wall_time`.
  */
 std::string read_member_summary(const std::string &folder, MemberResult &result);
+
+/**
+ * Whether @p folder holds the whole outputs of a completed transient run,
+ * so that a suite may reuse them: `summary.json` says `completed` and has
+ * the entries every completed run writes (`model`, `n_dofs`, `end_time`,
+ * `n_steps`, `wall_time`), and every file listed in its manifest
+ * `.hati-manifest` (`history.csv` among them) but the temporaries is a
+ * regular file, every CSV ending on a whole line.
+ */
+bool member_outputs_whole(const std::string &folder);
 } // namespace hati
 
 #endif

@@ -4,6 +4,7 @@
 #include <hati/output/output_file.h>
 
 #include <exception>
+#include <functional>
 #include <set>
 #include <string>
 #include <utility>
@@ -42,8 +43,22 @@ public:
   RunDirectory(const RunDirectory &) = delete;
   RunDirectory &operator=(const RunDirectory &) = delete;
 
-  /** Take the directory over as described above; does nothing the second time. */
+  /**
+   * Take the directory over as described above, then call after_begin if
+   * set; does nothing the second time. In a dry run (dry_run), throws
+   * DryRunEnd instead, touching nothing.
+   */
   void begin();
+
+  /** What begin() throws in a dry run: every check before the outputs passed. */
+  struct DryRunEnd
+  {
+  };
+  /** A check of the run without it (Simulation::check()): begin() throws DryRunEnd. */
+  bool dry_run = false;
+  /** Called by begin() once the directory is locked and cleaned (a suite's member.log).
+   */
+  std::function<void(RunDirectory &)> after_begin;
   /** Whether begin() succeeded (the lock is held). */
   bool begun() const { return lock.fd >= 0; }
   const std::string &path() const { return dir; }
@@ -83,6 +98,23 @@ private:
   OutputFile lock, manifest;
   std::set<std::string> registered;
 };
+
+/**
+ * Take an exclusive `flock` on the file @p name in @p folder (created if
+ * missing, never through a link) and return it open (the lock lasts while
+ * it is open). Throws the one-line message @p in_use if another process
+ * holds it, naming the file if it cannot be created; on a file system
+ * without locks returns it unlocked.
+ */
+OutputFile
+lock_file(const OutputFolder &folder, const std::string &name, const std::string &in_use);
+
+/**
+ * Install the SIGINT/SIGTERM handlers of stop_requested() (RunDirectory::
+ * begin() does; a suite from its start, so that a signal before its first
+ * member stops it the same way).
+ */
+void catch_stop_signals();
 
 /**
  * Refuse (one-line message naming `Output/Output directory`) an output

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -35,6 +36,20 @@ public:
 
   /** Build the model, run the analysis and write every output. */
   void run();
+
+  /**
+   * What run() does before its first output (the model built, every input
+   * file read, the analysis set up up to RunDirectory::begin()), then stop
+   * with the output directory untouched: throws run()'s one-line message if
+   * the run would be refused. A Simulation runs or checks once.
+   */
+  void check();
+
+  /**
+   * Call @p hook once run() has locked and cleaned the output directory,
+   * before its first output (RunDirectory::after_begin).
+   */
+  void when_output_begins(std::function<void(RunDirectory &)> hook);
 
   /**
    * After run() threw: `summary.json` says `"status": "failed"` with

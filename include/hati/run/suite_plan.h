@@ -18,12 +18,18 @@ struct SuiteRecord
   std::array<std::string, 3> files;
 };
 
-/** One entry of `Suite/Variations`: the parameter path and its values. */
+/**
+ * One entry of `Suite/Variations`: the parameter path (its parts trimmed,
+ * joined by `/`) and its values.
+ */
 struct SuiteVariation
 {
   std::string path;
   std::vector<std::string> values;
 };
+
+/** The most members a suite may have (records x scale factors x variations). */
+constexpr unsigned int max_suite_members = 10000;
 
 /**
  * `subsection Suite` (doc/user_guide.md, "Qualifying a crane on a suite of
@@ -35,8 +41,20 @@ struct SuiteVariation
 struct SuiteParameters
 {
   static void declare_parameters(ParameterHandler &prm);
-  /** Read and check them; one-line errors name the entry. */
+  /**
+   * Read and check them; one-line errors name the entry: a record name
+   * twice, a scale factor twice (numerically equal), an entry twice in
+   * Variations, a variation of an entry the suite sets itself (Suite/...,
+   * Output/Output directory, Loading/Accelerogram scale factor, Loading/
+   * Accelerogram X|Y|Z with Records) or of Analysis/Type (a suite runs
+   * transient analyses), more than max_suite_members members.
+   */
   void parse_parameters(ParameterHandler &prm);
+
+  /** The number of members: records (at least 1) x scale factors x variations. */
+  unsigned int n_members() const;
+  /** The number of combinations of the variations' values (1 without variations). */
+  unsigned int n_variations() const;
 
   /** Whether the parameter file asks for a suite. */
   bool active() const;
@@ -73,7 +91,9 @@ struct SuiteMember
  * member's factor is base_scale times its scale factor). Each member's
  * overrides set its accelerograms (unless Records is empty: the file's
  * own, record name `base`), its scale factor, its variation values, its
- * Output directory `<folder>/<name>` and reset `subsection Suite`.
+ * Output directory `<folder>/<name>` and reset `subsection Suite`. Throws
+ * a one-line message if a member's folder name would be longer than a file
+ * name may be (255 bytes: a record name too long).
  */
 std::vector<SuiteMember> plan_suite(const SuiteParameters &suite,
                                     const std::string &folder,

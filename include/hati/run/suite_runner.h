@@ -5,8 +5,10 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <hati/output/member_result.h>
+#include <hati/output/output_file.h>
 #include <hati/run/suite_plan.h>
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -20,15 +22,28 @@ using namespace dealii;
  * Problem) of the parameter file with the command line's overrides and the
  * member's (plan_suite()), in its own folder, its terminal output in its
  * `member.log`. A member that fails is reported and the others go on; a
- * member whose folder holds a `summary.json` with `"status": "completed"`
- * and a `parameters.prm` equal to the member's is not run again (`reused`).
+ * member whose folder holds the whole outputs of a completed run
+ * (member_outputs_whole()), a `parameters.prm` equal to the member's and an
+ * `input_digests.txt` equal to the digests of its input files now
+ * (input_digests()) is not run again (`reused`).
+ *
+ * Before the first member runs, everything a member needs is checked
+ * (check_suite_overrides(); a dry run, Simulation::check(), of each record
+ * and each variation value: check_members()), the suite's folder is locked
+ * (`.hati-suite.lock`: a second suite there is refused) and its files of an earlier suite
+ * (`suite.csv`, `suite_summary.json`, `suite_spectra.csv`, the plots) are
+ * deleted; a link at any of them or at a member's folder is refused.
  *
  * On several MPI ranks the members are handed out one at a time to the rank
  * that is free (WorkCounter: every rank, rank 0 included, runs members);
  * each member runs on its rank alone (its Trilinos objects on
  * MPI_COMM_SELF) and the results are gathered on rank 0, which writes
  * `suite.csv`, `suite_summary.json`, `suite_spectra.csv` (SuiteStatistics)
- * and draws `suite.png` and `spectra.png` (scripts/plot_suite.py).
+ * and draws `suite.png` and `spectra.png` (scripts/plot_suite.py). Every
+ * check and every step of rank 0 before a collective operation ends in an
+ * agreement (agree()): a refused suite throws the same AgreedError on every
+ * rank; any other exception on one rank aborts them all
+ * (without_stray_exceptions()), so that no rank waits for ever.
  */
 class SuiteRunner
 {
@@ -36,7 +51,8 @@ public:
   /**
    * @p prm: the parameters of @p parameter_file with the command line's
    * @p overrides applied; @p suite: its subsection Suite. Checks the suite
-   * (transient analysis, every override applies) with one-line errors.
+   * (transient analysis, check_suite_overrides(), a record to scale) with
+   * one-line errors; the same on every rank.
    */
   SuiteRunner(ParameterHandler &prm,
               const std::string &parameter_file,
@@ -44,7 +60,10 @@ public:
               const SuiteParameters &suite,
               const MPI_Comm comm);
 
-  /** Run this rank's members and, on rank 0, write the suite's files; the exit code. */
+  /**
+   * Check the members, take the folder, run this rank's members and, on
+   * rank 0, write the suite's files; the exit code. Collective.
+   */
   int run();
 
 private:
@@ -57,6 +76,25 @@ private:
   void member_parameters(const SuiteMember &member,
                          ParameterHandler &prm,
                          std::string &text) const;
+  /**
+   * Dry runs (Simulation::check()) of each value of each variation (the
+   * others at their first value) with the first record and of each other
+   * record with the first variation, spread over the ranks, silent; throws the
+   * one-line message of the first member refused. Agreed (collective).
+   */
+  void check_members() const;
+  /**
+   * Rank 0: open and lock the suite's folder (creating it if @p create),
+   * refuse links at the suite's files and member folders, and, when
+   * @p create, delete the suite's files of an earlier suite. Does nothing
+   * without the folder and @p create false, and once the folder is taken.
+   */
+  void take_folder(const bool create);
+  /** The suite's members, folder and statistic, on standard output. */
+  void print_header() const;
+  /** Run the members handed to this rank; collective (WorkCounter). */
+  std::vector<MemberResult>
+  run_members(const std::chrono::steady_clock::time_point start) const;
   /** Rank 0: the suite's files and plots; the exit code. */
   int finish(std::vector<MemberResult> &results, const double wall_time) const;
 
@@ -66,6 +104,9 @@ private:
   const MPI_Comm comm;
   std::string folder;
   std::vector<SuiteMember> members;
+  /** Rank 0: the suite's folder and its lock, from take_folder() on. */
+  OutputFolder out;
+  OutputFile lock;
 };
 } // namespace hati
 
