@@ -152,7 +152,8 @@ void OutputParameters::declare_parameters(ParameterHandler &prm)
       "of this length divided by the length. Unlike peak_impact_force (the impulse "
       "of one step / dt, which grows as dt falls because a plastic impact is resolved "
       "in one step) it does not depend on the time step once the window spans many "
-      "steps: compare runs with different steps by it. 0: not computed.");
+      "steps: compare runs with different steps by it. A window longer than the run is "
+      "taken as the End time. 0: not computed.");
   prm.declare_entry("Progress interval",
                     "2",
                     Patterns::Double(0.),

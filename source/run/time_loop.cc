@@ -230,21 +230,12 @@ private:
 
 /**
  * The window of the mean contact forces (s): Output/Contact force window,
- * at most the End time (a longer window would only hold the whole run, and
- * 1e20 s overflowed its count of steps): with contacts, a warning when it is
- * shortened.
+ * at most the End time (as its documentation says: a longer window would
+ * only hold the whole run, and 1e20 s overflowed its count of steps).
  */
-double contact_force_window(Problem &problem, const double end_time)
+double contact_force_window(const Problem &problem, const double end_time)
 {
-  const double window = problem.output_parameters.contact_force_window;
-  if (!(window > end_time) || problem.system.contacts.empty())
-    return window;
-  std::ostringstream s;
-  s << "Output/Contact force window = " << window
-    << " s is longer than the run (Time integration/End time = " << end_time
-    << " s): peak_mean_force is taken over the End time";
-  problem.warn(s.str());
-  return end_time;
+  return std::min(problem.output_parameters.contact_force_window, end_time);
 }
 
 std::vector<double> initial_gaps(const DiscreteSystem &system)
