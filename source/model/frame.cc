@@ -6,7 +6,9 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <hati/model/frame.h>
+#include <hati/model/frame_solids.h>
 #include <hati/model/memory_estimate.h>
+#include <hati/model/solid_tie.h>
 
 #include <cmath>
 #include <set>
@@ -51,6 +53,17 @@ Frame::Frame(const FrameDescription &description)
     : frame(validated(description)), fe(FE_Q<1, 3>(1), 6),
       section_force_output(member_names(description), description.section_force_members)
 {
+}
+
+Frame::~Frame() = default;
+
+void Frame::select_part(const std::vector<unsigned char> &parts, const int part)
+{
+  AssertThrow(part < 0 || frame.solids.empty(),
+              ExcMessage("Model/Frame/Solids: a frame with solids cannot be decomposed "
+                         "yet (Method = HATI): run it with Newmark, or with CD-Lagrange "
+                         "when it has no ties or rigid links"));
+  Model::select_part(parts, part);
 }
 
 void Frame::create_mesh()
@@ -188,10 +201,12 @@ void Frame::set_up_constraints(const MeshLayout &layout,
     for (unsigned int c = 0; c < 6; ++c)
       if (s.stiffness[c] == 0. && !constraints.is_constrained(node_dofs[s.node][c]))
         constraints.add_line(node_dofs[s.node][c]);
-  constraints.close();
   // the nodes only a rope holds: six DoFs each after the mesh's, their
-  // data owned with the rope's hook point
+  // data owned with the rope's hook point; the solids' DoFs after them
   n_mesh_dofs = dof_handler.n_dofs();
+  n_beam_dofs = n_mesh_dofs + 6 * frame.rope_only_nodes().size();
+  add_link_constraints();
+  constraints.close();
   types::global_dof_index next = n_mesh_dofs;
   for (const auto &node : frame.rope_only_nodes())
   {
@@ -204,6 +219,27 @@ void Frame::set_up_constraints(const MeshLayout &layout,
         break;
       }
   }
+}
+
+void Frame::add_link_constraints()
+{
+  for (const auto &l : frame.solids.rigid_links)
+  {
+    const auto &slave = node_dofs.at(l.slave);
+    for (unsigned int c = 0; c < 6; ++c)
+      AssertThrow(!constraints.is_constrained(slave[c]),
+                  ExcMessage("Model/Frame/Rigid links: rigid link '" + l.name +
+                             "': node '" + l.slave + "' is already held"));
+    add_constraint_lines(slave,
+                         rigid_link_rows(node_dofs.at(l.master),
+                                         frame.nodes.at(l.master),
+                                         frame.nodes.at(l.slave)),
+                         constraints);
+  }
+  if (frame.solids.empty())
+    return;
+  solids = std::make_unique<FrameSolids>(frame, n_beam_dofs);
+  solids->add_constraints(node_dofs, constraints);
 }
 
 std::vector<bool> Frame::excited_members(const CommonModelParameters &common) const
@@ -236,7 +272,7 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
 
   if (triangulation.n_active_cells() == 0)
     create_mesh();
-  const unsigned int n = n_mesh_dofs + 6 * frame.rope_only_nodes().size();
+  const unsigned int n = n_beam_dofs + (solids ? solids->n_dofs() : 0);
   system.reinit(n);
 
   make_pattern(system);
@@ -257,6 +293,21 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
   double omega2 = 0.;
   double mass = 0.; // of the part built
   assemble_cells(excited, restricted, system, omega2, mass);
+  if (solids)
+  {
+    AssertThrow(!restricted,
+                ExcMessage("Loading/Excited members: not available for a frame with "
+                           "solids (the whole model is excited)"));
+    solids->assemble(constraints, system, omega2, mass);
+    if (frame.solids.degree == 1)
+      system.warnings.push_back(
+          "Model/Frame/Solid element degree = 1: linear hexahedra lock in bending (a "
+          "plate one element thick gives about 1/3 of its deflection); use 2");
+  }
+  if (!frame.solids.ties.empty() || !frame.solids.rigid_links.empty())
+    system.lumped_mass_refusal =
+        "Model/Frame/Ties, Rigid links: the explicit scheme needs them as bilateral "
+        "rows, which are not implemented yet; use Method = Newmark";
   const std::vector<double> spring = add_springs(system);
   add_point_masses(excited, restricted, system);
   for (const auto &p : frame.point_masses)
@@ -391,10 +442,12 @@ void Frame::add_loads(const CommonModelParameters &common, DiscreteSystem &syste
     for (const auto &vd : vertex_dofs)
       if (!system.fixed[vd[d]])
         system.influence[d][vd[d]] = 1.;
-    for (types::global_dof_index i = n_mesh_dofs + d; i < n; i += 6)
+    for (types::global_dof_index i = n_mesh_dofs + d; i < n_beam_dofs; i += 6)
       system.influence[d][i] = 1.; // the translations of rope-only nodes
     system.constant_force.add(common.gravity[d], system.mass_influence[d]);
   }
+  if (solids)
+    solids->add_influence(system.fixed, system.influence);
   system.gravity = common.gravity;
   for (const auto &[node, f] : frame.nodal_loads)
     if (owns_node(node_cells.at(node)))
@@ -474,20 +527,34 @@ void Frame::add_contacts(const CommonModelParameters &common,
 void Frame::make_pattern(DiscreteSystem &system) const
 {
   const unsigned int n = system.n_dofs();
-  DynamicSparsityPattern mesh(n_mesh_dofs, n_mesh_dofs);
-  DoFTools::make_sparsity_pattern(dof_handler, mesh, constraints, false);
-  if (frame.ropes.empty())
+  DynamicSparsityPattern dsp(n, n);
+  if (solids)
   {
-    system.stiffness_pattern.copy_from(mesh);
-    return;
+    // the ties couple the beam nodes to solid DoFs: condense cell by cell
+    std::vector<types::global_dof_index> dofs(12);
+    for (const auto &cell : cells)
+    {
+      std::copy(cell.dofs.begin(), cell.dofs.end(), dofs.begin());
+      constraints.add_entries_local_to_global(dofs, dsp, false);
+    }
+    solids->add_pattern(constraints, dsp);
+  }
+  else
+  {
+    DynamicSparsityPattern mesh(n_mesh_dofs, n_mesh_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler, mesh, constraints, false);
+    if (frame.ropes.empty())
+    {
+      system.stiffness_pattern.copy_from(mesh);
+      return;
+    }
+    for (unsigned int i = 0; i < n_mesh_dofs; ++i)
+      for (auto it = mesh.begin(i); it != mesh.end(i); ++it)
+        dsp.add(i, it->column());
   }
   // with ropes: the DoFs of the rope-only nodes (their diagonal) and the
   // couplings of each rope's translations (its tangent, R1)
-  DynamicSparsityPattern dsp(n, n);
-  for (unsigned int i = 0; i < n_mesh_dofs; ++i)
-    for (auto it = mesh.begin(i); it != mesh.end(i); ++it)
-      dsp.add(i, it->column());
-  for (unsigned int i = n_mesh_dofs; i < n; ++i)
+  for (unsigned int i = n_mesh_dofs; i < n_beam_dofs; ++i)
     dsp.add(i, i);
   for (const auto &r : frame.ropes)
     for (unsigned int a = 0; a < 3; ++a)
@@ -532,11 +599,33 @@ void Frame::add_monitors(DiscreteSystem &system) const
   {
     MonitorPoint m;
     m.name = node;
+    bool eliminated = false;
     for (unsigned int c = 0; c < 6; ++c)
     {
       m.labels.push_back(component_labels[c]);
       m.dofs.push_back(node_dofs.at(node)[c]);
+      const auto *entries = constraints.get_constraint_entries(m.dofs[c]);
+      eliminated = eliminated || (entries != nullptr && !entries->empty());
     }
+    // a tied node or the slave of a rigid link: its values from the free DoFs
+    if (eliminated)
+      for (const auto dof : m.dofs)
+      {
+        SparseRow row;
+        const auto *entries = constraints.get_constraint_entries(dof);
+        if (entries == nullptr)
+        {
+          row.dofs.push_back(dof);
+          row.coefficients.push_back(1.);
+        }
+        else
+          for (const auto &[j, a] : *entries)
+          {
+            row.dofs.push_back(j);
+            row.coefficients.push_back(a);
+          }
+        m.rows.push_back(row);
+      }
     system.monitors.push_back(m);
   }
 }
@@ -602,7 +691,9 @@ std::vector<Point<3>> Frame::cell_centres() const
 double Frame::size() const
 {
   const auto box = GridTools::compute_bounding_box(triangulation);
-  return box.get_boundary_points().first.distance(box.get_boundary_points().second);
+  const double beams =
+      box.get_boundary_points().first.distance(box.get_boundary_points().second);
+  return solids ? std::max(beams, solids->size()) : beams;
 }
 
 std::vector<std::string> Frame::cell_members() const
@@ -659,7 +750,10 @@ std::string Frame::description() const
   for (const auto &m : frame.members)
     ne += m.n_elements;
   s << "3D frame: " << frame.nodes.size() << " nodes, " << frame.members.size()
-    << " members, " << ne << " Timoshenko elements, mass " << total_mass << " kg";
+    << " members, " << ne << " Timoshenko elements, ";
+  if (solids)
+    s << solids->description() << ", ";
+  s << "mass " << total_mass << " kg";
   return s.str();
 }
 } // namespace hati

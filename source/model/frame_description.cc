@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 namespace hati
@@ -331,6 +332,69 @@ std::vector<std::string> FrameDescription::rope_only_nodes() const
   return r;
 }
 
+namespace
+{
+/**
+ * Solids, ties, solid supports and rigid links: names, materials, the
+ * solids and nodes they name; a tied or slave node is a member node that no
+ * support fixes, tied or slaved once.
+ */
+void validate_solids(const FrameDescription &d, const std::set<std::string> &used_nodes)
+{
+  const auto &S = d.solids;
+  std::map<std::string, const SolidDescription::Solid *> solids;
+  for (const auto &s : S.solids)
+  {
+    check_name(s.name, "Model/Frame/Solids", "solid");
+    require(solids.emplace(s.name, &s).second,
+            "Solids",
+            "solid '" + s.name + "' is defined twice");
+    require_known(d.materials,
+                  s.material,
+                  "Solids",
+                  "solid '" + s.name + "'",
+                  "material",
+                  "Materials");
+  }
+  std::set<std::string> fixed, bound;
+  for (const auto &s : d.supports)
+    for (const double k : s.stiffness)
+      if (k == 0.)
+        fixed.insert(s.node);
+  for (const auto &t : S.ties)
+  {
+    check_name(t.name, "Model/Frame/Ties", "tie");
+    require_known(used_nodes, t.node, "Ties", "tie '" + t.name + "'", "node", "Members");
+    require_known(
+        solids, t.face.solid, "Ties", "tie '" + t.name + "'", "solid", "Solids");
+    require(!fixed.count(t.node),
+            "Ties",
+            "tie '" + t.name + "': node '" + t.node +
+                "' is already supported (Model/Frame/Supports): a tied node follows its "
+                "face");
+    require(bound.insert(t.node).second,
+            "Ties",
+            "tie '" + t.name + "': node '" + t.node + "' is tied twice");
+  }
+  for (const auto &f : S.supports)
+    require_known(solids, f.solid, "Solid supports", "a support", "solid", "Solids");
+  for (const auto &l : S.rigid_links)
+  {
+    check_name(l.name, "Model/Frame/Rigid links", "rigid link");
+    const std::string who = "rigid link '" + l.name + "'";
+    require_known(used_nodes, l.master, "Rigid links", who, "node", "Members");
+    require_known(used_nodes, l.slave, "Rigid links", who, "node", "Members");
+    require(l.master != l.slave, "Rigid links", who + ": master and slave are one node");
+    require(!fixed.count(l.slave),
+            "Rigid links",
+            who + ": slave node '" + l.slave + "' is supported (Model/Frame/Supports)");
+    require(bound.insert(l.slave).second,
+            "Rigid links",
+            who + ": node '" + l.slave + "' is already tied or the slave of a link");
+  }
+}
+} // namespace
+
 void FrameDescription::validate() const
 {
   validate_names(*this);
@@ -342,6 +406,7 @@ void FrameDescription::validate() const
     held.insert(n);
   validate_nodal_data(*this, used_nodes, held);
   validate_contacts(*this, held);
+  validate_solids(*this, used_nodes);
   std::set<std::string> member_names;
   for (const auto &m : members)
     member_names.insert(m.name);

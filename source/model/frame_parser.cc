@@ -1,6 +1,8 @@
 #include <deal.II/base/utilities.h>
 
+#include <hati/model/frame_items.h>
 #include <hati/model/frame_parser.h>
+#include <hati/model/frame_solid_parser.h>
 #include <hati/model/gmsh_frame_reader.h>
 
 #include <cmath>
@@ -16,36 +18,7 @@ const char *const component_labels[6] = {"x", "y", "z", "rx", "ry", "rz"};
 /** Largest number of elements of one member (-). */
 constexpr double max_elements_per_member = 1e7;
 
-/** One item "name: v1, v2, ..." of a list entry. */
-struct Item
-{
-  std::string name;
-  std::vector<std::string> values;
-};
-
-/** Split `name: v, v; name: v, v` into items; @p entry names the parameter in errors. */
-std::vector<Item> parse_items(const std::string &text, const std::string &entry)
-{
-  std::vector<Item> items;
-  for (const std::string &raw : Utilities::split_string_list(text, ';'))
-  {
-    const std::string item = Utilities::trim(raw);
-    if (item.empty())
-      continue;
-    const auto colon = item.find(':');
-    AssertThrow(colon != std::string::npos && colon > 0,
-                ExcMessage("Model/Frame/" + entry + ": item '" + item +
-                           "' is not of the form 'name: values'"));
-    Item it;
-    it.name = Utilities::trim(item.substr(0, colon));
-    for (const std::string &v : Utilities::split_string_list(item.substr(colon + 1), ','))
-      it.values.push_back(Utilities::trim(v));
-    if (it.values.size() == 1 && it.values[0].empty())
-      it.values.clear();
-    items.push_back(it);
-  }
-  return items;
-}
+using Item = FrameItem;
 
 /** Whether @p value is a finite number (a node named like a number is read as one). */
 bool is_number(const std::string &value)
@@ -55,39 +28,16 @@ bool is_number(const std::string &value)
   return !value.empty() && end != nullptr && *end == '\0' && std::isfinite(x);
 }
 
-double to_number(const std::string &value, const std::string &entry, const Item &item)
-{
-  char *end = nullptr;
-  const double x = std::strtod(value.c_str(), &end);
-  AssertThrow(!value.empty() && end != nullptr && *end == '\0' && std::isfinite(x),
-              ExcMessage("Model/Frame/" + entry + ": item '" + item.name + "': '" +
-                         value + "' is not a number"));
-  return x;
-}
-
 /** The values @p first, @p first + 1, @p first + 2 of @p item as a vector. */
 Tensor<1, 3>
 to_vector(const Item &item, const unsigned int first, const std::string &entry)
 {
   Tensor<1, 3> v;
   for (unsigned int k = 0; k < 3; ++k)
-    v[k] = to_number(item.values[first + k], entry, item);
+    v[k] = frame_item_number(item.values[first + k], entry, item);
   return v;
 }
 
-void expect_values(const Item &item,
-                   const std::string &entry,
-                   const std::vector<unsigned int> &counts,
-                   const std::string &expected)
-{
-  for (const unsigned int c : counts)
-    if (item.values.size() == c)
-      return;
-  AssertThrow(false,
-              ExcMessage("Model/Frame/" + entry + ": item '" + item.name + "' has " +
-                         std::to_string(item.values.size()) + " values, expected " +
-                         expected));
-}
 } // namespace
 
 void FrameParameters::declare_parameters(ParameterHandler &prm)
@@ -209,6 +159,7 @@ void FrameParameters::declare_parameters(ParameterHandler &prm)
                     Patterns::Anything(),
                     "Members whose section forces are written to section_forces.csv at "
                     "every history row, 'member, member, ...'.");
+  declare_solid_entries(prm);
 }
 
 FrameSection parse_frame_section(const std::string &text, const std::string &where)
@@ -276,25 +227,25 @@ namespace
 {
 void parse_nodes(ParameterHandler &prm, FrameDescription &d)
 {
-  for (const Item &it : parse_items(prm.get("Nodes"), "Nodes"))
+  for (const Item &it : parse_frame_items(prm.get("Nodes"), "Nodes"))
   {
-    expect_values(it, "Nodes", {3}, "3 (x, y, z)");
+    expect_frame_item_values(it, "Nodes", {3}, "3 (x, y, z)");
     d.add_node(it.name,
-               Point<3>(to_number(it.values[0], "Nodes", it),
-                        to_number(it.values[1], "Nodes", it),
-                        to_number(it.values[2], "Nodes", it)));
+               Point<3>(frame_item_number(it.values[0], "Nodes", it),
+                        frame_item_number(it.values[1], "Nodes", it),
+                        frame_item_number(it.values[2], "Nodes", it)));
   }
 }
 
 void parse_materials(ParameterHandler &prm, FrameDescription &d)
 {
-  for (const Item &it : parse_items(prm.get("Materials"), "Materials"))
+  for (const Item &it : parse_frame_items(prm.get("Materials"), "Materials"))
   {
-    expect_values(it, "Materials", {3}, "3 (E, nu, rho)");
+    expect_frame_item_values(it, "Materials", {3}, "3 (E, nu, rho)");
     FrameMaterial m;
-    m.E = to_number(it.values[0], "Materials", it);
-    const double nu = to_number(it.values[1], "Materials", it);
-    m.rho = to_number(it.values[2], "Materials", it);
+    m.E = frame_item_number(it.values[0], "Materials", it);
+    const double nu = frame_item_number(it.values[1], "Materials", it);
+    m.rho = frame_item_number(it.values[2], "Materials", it);
     AssertThrow(m.E > 0. && nu > -1. && nu < 0.5 && m.rho > 0.,
                 ExcMessage("Model/Frame/Materials: item '" + it.name +
                            "' needs E > 0, -1 < nu < 0.5 and rho > 0"));
@@ -308,7 +259,7 @@ void parse_materials(ParameterHandler &prm, FrameDescription &d)
 
 void parse_sections(ParameterHandler &prm, FrameDescription &d)
 {
-  for (const Item &it : parse_items(prm.get("Sections"), "Sections"))
+  for (const Item &it : parse_frame_items(prm.get("Sections"), "Sections"))
   {
     AssertThrow(
         d.sections.count(it.name) == 0,
@@ -323,19 +274,20 @@ void parse_sections(ParameterHandler &prm, FrameDescription &d)
 
 void parse_members(ParameterHandler &prm, FrameDescription &d)
 {
-  for (const Item &it : parse_items(prm.get("Members"), "Members"))
+  for (const Item &it : parse_frame_items(prm.get("Members"), "Members"))
   {
-    expect_values(it,
-                  "Members",
-                  {5, 8},
-                  "5 or 8 (start, end, section, material, elements[, yx, yy, yz])");
+    expect_frame_item_values(
+        it,
+        "Members",
+        {5, 8},
+        "5 or 8 (start, end, section, material, elements[, yx, yy, yz])");
     FrameDescription::Member m;
     m.name = it.name;
     m.start = it.values[0];
     m.end = it.values[1];
     m.section = it.values[2];
     m.material = it.values[3];
-    const double ne = to_number(it.values[4], "Members", it);
+    const double ne = frame_item_number(it.values[4], "Members", it);
     AssertThrow(ne >= 1. && ne == std::floor(ne) && ne <= max_elements_per_member,
                 ExcMessage("Model/Frame/Members: member '" + it.name +
                            "': the number of elements must be an integer from 1 to " +
@@ -375,9 +327,10 @@ void merge_mesh_file(ParameterHandler &prm, FrameDescription &d)
       known->second = x;
   }
   std::map<std::string, Item> properties;
-  for (const Item &it : parse_items(prm.get("Member properties"), "Member properties"))
+  for (const Item &it :
+       parse_frame_items(prm.get("Member properties"), "Member properties"))
   {
-    expect_values(
+    expect_frame_item_values(
         it, "Member properties", {2, 5}, "2 or 5 (section, material[, yx, yy, yz])");
     AssertThrow(mesh.members.count(it.name),
                 ExcMessage("Model/Frame/Member properties: the mesh file '" + mesh_file +
@@ -407,12 +360,12 @@ void merge_mesh_file(ParameterHandler &prm, FrameDescription &d)
 
 void parse_point_masses(ParameterHandler &prm, FrameDescription &d)
 {
-  for (const Item &it : parse_items(prm.get("Point masses"), "Point masses"))
+  for (const Item &it : parse_frame_items(prm.get("Point masses"), "Point masses"))
   {
-    expect_values(it, "Point masses", {1, 4}, "1 or 4 (m[, Ixx, Iyy, Izz])");
+    expect_frame_item_values(it, "Point masses", {1, 4}, "1 or 4 (m[, Ixx, Iyy, Izz])");
     FrameDescription::PointMassData p;
     p.node = it.name;
-    p.mass = to_number(it.values[0], "Point masses", it);
+    p.mass = frame_item_number(it.values[0], "Point masses", it);
     if (it.values.size() == 4)
       p.rotary_inertia = to_vector(it, 1, "Point masses");
     d.point_masses.push_back(p);
@@ -421,7 +374,7 @@ void parse_point_masses(ParameterHandler &prm, FrameDescription &d)
 
 void parse_supports(ParameterHandler &prm, FrameDescription &d)
 {
-  for (const Item &it : parse_items(prm.get("Supports"), "Supports"))
+  for (const Item &it : parse_frame_items(prm.get("Supports"), "Supports"))
   {
     FrameDescription::Support s;
     s.node = it.name;
@@ -431,7 +384,7 @@ void parse_supports(ParameterHandler &prm, FrameDescription &d)
       s.stiffness = {{0., 0., 0., -1., -1., -1.}};
     else
     {
-      expect_values(it, "Supports", {6}, "'clamped', 'pinned' or 6 codes");
+      expect_frame_item_values(it, "Supports", {6}, "'clamped', 'pinned' or 6 codes");
       for (unsigned int c = 0; c < 6; ++c)
       {
         const std::string &code = it.values[c];
@@ -441,7 +394,7 @@ void parse_supports(ParameterHandler &prm, FrameDescription &d)
           s.stiffness[c] = -1.;
         else
         {
-          s.stiffness[c] = to_number(code, "Supports", it);
+          s.stiffness[c] = frame_item_number(code, "Supports", it);
           AssertThrow(s.stiffness[c] > 0.,
                       ExcMessage("Model/Frame/Supports: node '" + it.name +
                                  "': a spring stiffness must be > 0"));
@@ -464,12 +417,13 @@ std::vector<std::string> names(const std::string &text)
 
 void parse_nodal_loads(ParameterHandler &prm, FrameDescription &d)
 {
-  for (const Item &it : parse_items(prm.get("Nodal loads"), "Nodal loads"))
+  for (const Item &it : parse_frame_items(prm.get("Nodal loads"), "Nodal loads"))
   {
-    expect_values(it, "Nodal loads", {3, 6}, "3 or 6 (Fx, Fy, Fz[, Mx, My, Mz])");
+    expect_frame_item_values(
+        it, "Nodal loads", {3, 6}, "3 or 6 (Fx, Fy, Fz[, Mx, My, Mz])");
     std::array<double, 6> f{{0., 0., 0., 0., 0., 0.}};
     for (unsigned int c = 0; c < it.values.size(); ++c)
-      f[c] = to_number(it.values[c], "Nodal loads", it);
+      f[c] = frame_item_number(it.values[c], "Nodal loads", it);
     d.nodal_loads[it.name] = f;
   }
 }
@@ -477,20 +431,20 @@ void parse_nodal_loads(ParameterHandler &prm, FrameDescription &d)
 /** One item of Ropes: 'node, other node, stiffness[, rest length]'. */
 FrameDescription::RopeData parse_rope(const Item &it)
 {
-  expect_values(
+  expect_frame_item_values(
       it, "Ropes", {3, 4}, "3 or 4 (node, other node, stiffness[, rest length])");
   FrameDescription::RopeData r;
   r.name = it.name;
   r.node = it.values[0];
   r.other_node = it.values[1];
-  r.stiffness = to_number(it.values[2], "Ropes", it);
+  r.stiffness = frame_item_number(it.values[2], "Ropes", it);
   AssertThrow(r.stiffness > 0. && r.stiffness <= FrameDescription::max_rope_stiffness,
               ExcMessage("Model/Frame/Ropes: rope '" + it.name +
                          "': the stiffness must be > 0 and at most 1e12 N/m, got " +
                          it.values[2]));
   if (it.values.size() == 4)
   {
-    r.rest_length = to_number(it.values[3], "Ropes", it);
+    r.rest_length = frame_item_number(it.values[3], "Ropes", it);
     AssertThrow(r.rest_length > 0.,
                 ExcMessage("Model/Frame/Ropes: rope '" + it.name +
                            "': the rest length must be > 0 (m), got " + it.values[3]));
@@ -587,19 +541,19 @@ FrameDescription::NodeContact parse_contact(const Item &it, const FrameDescripti
                            "' is neither a node of Model/Frame/Nodes nor a number "
                            "(the normal's nx)"));
   for (unsigned int k = 0; k < 3; ++k)
-    c.normal[k] = to_number(v[first + k], "Contacts", it);
+    c.normal[k] = frame_item_number(v[first + k], "Contacts", it);
   AssertThrow(
       c.normal.norm() > 0.,
       ExcMessage("Model/Frame/Contacts: contact '" + it.name + "' has a zero normal"));
   c.normal /= c.normal.norm();
-  c.gap = to_number(v[first + 3], "Contacts", it);
+  c.gap = frame_item_number(v[first + 3], "Contacts", it);
   AssertThrow(c.gap >= 0.,
               ExcMessage("Model/Frame/Contacts: contact '" + it.name + "': the " +
                          (c.two_sided ? "clearance" : "gap") + " must be >= 0 (m), got " +
                          v[first + 3]));
   if (v.size() == first + 5)
   {
-    c.restitution = to_number(v[first + 4], "Contacts", it);
+    c.restitution = frame_item_number(v[first + 4], "Contacts", it);
     AssertThrow(c.restitution >= 0. && c.restitution <= 1.,
                 ExcMessage("Model/Frame/Contacts: contact '" + it.name +
                            "': the restitution coefficient must be in [0, 1]"));
@@ -622,9 +576,10 @@ void FrameParameters::parse_parameters(ParameterHandler &prm)
   d.monitor_nodes = names(prm.get("Monitor nodes"));
   d.section_force_members = names(prm.get("Section force members"));
   parse_nodal_loads(prm, d);
-  for (const Item &it : parse_items(prm.get("Contacts"), "Contacts"))
+  for (const Item &it : parse_frame_items(prm.get("Contacts"), "Contacts"))
     d.contacts.push_back(parse_contact(it, d));
-  for (const Item &it : parse_items(prm.get("Ropes"), "Ropes"))
+  for (const Item &it : parse_frame_items(prm.get("Ropes"), "Ropes"))
     d.ropes.push_back(parse_rope(it));
+  parse_solid_entries(prm, d.solids);
 }
 } // namespace hati

@@ -40,7 +40,7 @@ void AccelerationPeaks::history_row(const OutputState &s)
       const std::string &label = m.labels[i];
       if (label != "x" && label != "y" && label != "z")
         continue;
-      const double v = (*s.velocity)[m.dofs[i]];
+      const double v = m.value(i, *s.velocity);
       if (have_last && s.time > last_time)
       {
         const unsigned int d = label == "x" ? 0 : label == "y" ? 1 : 2;

@@ -79,10 +79,10 @@ void OutputWriter::write_history(const OutputState &s)
   history << s.time;
   for (const auto &m : system.monitors)
   {
-    for (const auto d : m.dofs)
-      history << ',' << (*s.displacement)[d];
-    for (const auto d : m.dofs)
-      history << ',' << (*s.velocity)[d];
+    for (unsigned int i = 0; i < m.dofs.size(); ++i)
+      history << ',' << m.value(i, *s.displacement);
+    for (unsigned int i = 0; i < m.dofs.size(); ++i)
+      history << ',' << m.value(i, *s.velocity);
   }
   history << '\n';
   if (section_forces.is_open())

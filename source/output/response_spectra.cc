@@ -68,7 +68,8 @@ ResponseSpectra::ResponseSpectra(const PostprocessorInputs &inputs)
             {
               Channel c;
               c.name = m.name + "." + m.labels[i];
-              c.dof = m.dofs[i];
+              c.monitor = &m;
+              c.component = i;
               c.axis = d;
               channels.push_back(c);
             }
@@ -98,7 +99,7 @@ void ResponseSpectra::history_row(const OutputState &s)
         c.values.push_back(a_g);
       continue;
     }
-    const double v = (*s.velocity)[c.dof];
+    const double v = c.monitor->value(c.component, *s.velocity);
     if (interval)
       c.values.push_back((v - c.last_velocity) / (s.time - last_time) + a_g);
     c.last_velocity = v;

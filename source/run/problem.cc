@@ -72,6 +72,14 @@ Problem::Problem(ParameterHandler &prm, const ConditionalOStream &out) : out(out
 void Problem::build_system()
 {
   model->build(common_parameters, system);
+  for (const auto &w : system.warnings)
+    warn(w);
+  AssertThrow(system.lumped_mass_refusal.empty() ||
+                  !(analysis_parameters.type == "transient" &&
+                    time_parameters.method == "Newmark" &&
+                    newmark_parameters.mass == "lumped"),
+              ExcMessage(system.lumped_mass_refusal +
+                         " (Time integration/Newmark/Mass = lumped; use consistent)"));
   check_finite(system);
   system.fill_default_mass_influence();
 }

@@ -135,7 +135,7 @@ void run_static_analysis(Problem &problem, RunDirectory &directory)
   {
     std::cout << "    " << m.name << ":";
     for (unsigned int i = 0; i < m.dofs.size(); ++i)
-      std::cout << "  u" << m.labels[i] << " = " << std::setprecision(8) << U[m.dofs[i]];
+      std::cout << "  u" << m.labels[i] << " = " << std::setprecision(8) << m.value(i, U);
     std::cout << std::endl;
   }
   double umax = 0.;

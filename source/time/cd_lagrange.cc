@@ -28,6 +28,7 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
       rope_forces(system.ropes), frictional_contacts(system.contacts)
 {
   const unsigned int n = system.n_dofs();
+  AssertThrow(system.lumped_mass_refusal.empty(), ExcMessage(system.lumped_mass_refusal));
   AssertThrow(dt > 0. && std::isfinite(dt),
               ExcMessage("Time integration/Time step must be positive and finite."));
   AssertThrow(a0 >= 0. && a1 >= 0. && std::isfinite(a0) && std::isfinite(a1),

@@ -78,6 +78,23 @@ struct MonitorPoint
   std::string name;
   std::vector<std::string> labels;
   std::vector<types::global_dof_index> dofs;
+  /**
+   * For a point whose DoFs are eliminated (a beam node tied to a solid face,
+   * the slave of a rigid link): component i is `rows[i] . U` over free DoFs
+   * (value()). Empty: component i is `U[dofs[i]]`.
+   */
+  std::vector<SparseRow> rows;
+
+  /** Component @p i of the point for the DoF vector @p U. */
+  double value(const unsigned int i, const Vector<double> &U) const
+  {
+    if (rows.empty())
+      return U[dofs[i]];
+    double v = 0.;
+    for (unsigned int k = 0; k < rows[i].dofs.size(); ++k)
+      v += rows[i].coefficients[k] * U[rows[i].dofs[k]];
+    return v;
+  }
 };
 
 /**
@@ -237,6 +254,21 @@ public:
 
   /** Element-by-element bound of omega_max (rad/s), negative if unset. */
   double omega_max_bound = -1.;
+
+  /**
+   * One-line warnings of the model's set-up (e.g. linear hexahedra, which
+   * lock in bending): Problem prints them and summary.json lists them.
+   */
+  std::vector<std::string> warnings;
+
+  /**
+   * Why lumped_mass is not the model's lumped mass, e.g. ties and rigid
+   * links eliminated as constraints (a diagonal mass cannot carry them):
+   * the explicit integrator (CD-Lagrange, HATI's explicit part) and Newmark
+   * with `Mass = lumped` refuse to run with this one-line reason. Empty: the
+   * lumped mass holds.
+   */
+  std::string lumped_mass_refusal;
 };
 
 /**

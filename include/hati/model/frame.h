@@ -12,11 +12,14 @@
 #include <hati/model/model.h>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace hati
 {
+class FrameSolids;
+
 /**
  * A 3D frame of straight linear elastic members (algorithms.md section 5):
  * `Triangulation<1,3>` of line cells, `FESystem(FE_Q<1,3>(1), 6)` for the
@@ -45,6 +48,7 @@ public:
    * (FrameDescription::validate(); throws a one-line error).
    */
   explicit Frame(const FrameDescription &description);
+  ~Frame() override;
   void build(const CommonModelParameters &common, DiscreteSystem &system) override;
   void write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const override;
   std::string description() const override;
@@ -64,6 +68,13 @@ public:
   void write_section_forces(std::ostream *out,
                             const double time,
                             const Vector<double> &U) const override;
+  /**
+   * Model::select_part(); a decomposition of a frame with solids is refused
+   * (not yet: doc/user_guide.md "Solids and ties").
+   */
+  void select_part(const std::vector<unsigned char> &parts, const int part) override;
+  /** The solids of the frame (null if it has none). */
+  const FrameSolids *solid_part() const { return solids.get(); }
 
 private:
   /** The vertices and cells of the members before the triangulation exists. */
@@ -121,8 +132,10 @@ private:
   bool held(const types::global_dof_index i) const
   {
     return constraints.is_constrained(i) ||
-           (i >= n_mesh_dofs && (i - n_mesh_dofs) % 6 >= 3);
+           (i >= n_mesh_dofs && i < n_beam_dofs && (i - n_mesh_dofs) % 6 >= 3);
   }
+  /** The ties, solid supports and rigid links as constraint lines (before close()). */
+  void add_link_constraints();
 
   const FrameDescription frame;
   Triangulation<1, 3> triangulation;
@@ -141,6 +154,10 @@ private:
    * (their rotations held), outside the mesh.
    */
   types::global_dof_index n_mesh_dofs = 0;
+  /** DoFs of the beams and the rope-only nodes; the solids' DoFs follow. */
+  types::global_dof_index n_beam_dofs = 0;
+  /** The 3D solids (frame_solids.h), null without. */
+  std::unique_ptr<FrameSolids> solids;
   double total_mass = 0.;
   /** Gravity (m/s^2): the members' weight is a span load for section forces. */
   Tensor<1, 3> gravity;

@@ -5,6 +5,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <hati/model/frame_element.h>
+#include <hati/model/solid_description.h>
 
 #include <array>
 #include <map>
@@ -168,6 +169,8 @@ struct FrameDescription
   std::vector<std::string> monitor_nodes;
   /** Members whose section forces are written to section_forces.csv. */
   std::vector<std::string> section_force_members;
+  /** 3D solids, ties, solid supports and rigid links (solid_description.h). */
+  SolidDescription solids;
 };
 } // namespace hati
 

@@ -44,11 +44,12 @@ public:
                             const double row_interval);
 
 private:
-  /** One series: a monitor DoF (its index in the velocity) or a ground axis. */
+  /** One series: a monitor component (MonitorPoint::value()) or a ground axis. */
   struct Channel
   {
     std::string name;
-    types::global_dof_index dof = 0;
+    const MonitorPoint *monitor = nullptr;
+    unsigned int component = 0;
     unsigned int axis = 0;
     bool ground = false;
     double last_velocity = 0.;

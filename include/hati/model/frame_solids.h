@@ -1,0 +1,106 @@
+#ifndef hati_model_frame_solids_h
+#define hati_model_frame_solids_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <hati/model/discrete_system.h>
+#include <hati/model/frame_description.h>
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace hati
+{
+using namespace dealii;
+
+/**
+ * The 3D solids of a frame model (doc/user_guide.md "Solids and ties"):
+ * one `Triangulation<3>` of every solid (create_solid_mesh(), the solid's
+ * index as material id), `FE_Q(p)^3` on its own DoFHandler, the DoFs
+ * numbered after the beams' in the model's one global numbering; linear
+ * elasticity with the consistent mass and the row-sum lumped mass
+ * (positive for FE_Q(p)); the supports of solid faces and the ties of beam
+ * nodes to solid faces (B1) as lines of the frame's AffineConstraints.
+ */
+class FrameSolids
+{
+public:
+  /**
+   * The mesh and the DoFs of the solids of @p frame (whose materials they
+   * name); the DoFs numbered from @p offset.
+   */
+  FrameSolids(const FrameDescription &frame, const types::global_dof_index offset);
+
+  /** Number of DoFs of the solids. */
+  types::global_dof_index n_dofs() const { return dof_handler.n_dofs(); }
+  /** The global index of the first solid DoF. */
+  types::global_dof_index offset() const { return first_dof; }
+
+  /**
+   * The supports of solid faces (every translation fixed) and the ties of
+   * beam nodes (B1: the node's six DoFs @p node_dofs as functions of the
+   * face DoFs) into @p constraints, before it is closed. Throws one-line
+   * errors naming the entry for a face with no solid node.
+   */
+  void add_constraints(
+      const std::map<std::string, std::array<types::global_dof_index, 6>> &node_dofs,
+      AffineConstraints<double> &constraints) const;
+
+  /** The couplings of the solid cells, condensed with @p constraints. */
+  void add_pattern(const AffineConstraints<double> &constraints,
+                   DynamicSparsityPattern &pattern) const;
+
+  /**
+   * Stiffness, consistent and lumped masses, and the mass influence
+   * vectors `M r_d` of the solid cells into @p system, condensed with
+   * @p constraints; raises @p omega2 (1/s^2) to the largest element bound
+   * of omega^2 (element eigenproblems with the lumped mass) and adds the
+   * solids' mass (kg) to @p mass.
+   */
+  void assemble(const AffineConstraints<double> &constraints,
+                DiscreteSystem &system,
+                double &omega2,
+                double &mass) const;
+
+  /** 1 on the free solid DoFs of component d in @p influence[d]. */
+  void add_influence(const std::vector<bool> &fixed,
+                     std::array<Vector<double>, 3> &influence) const;
+
+  /**
+   * The stress tensor (Pa) at every quadrature point of every cell for the
+   * displacement @p U (global numbering, constraints distributed), with the
+   * points: for the patch tests and the stress output.
+   */
+  void stresses(const Vector<double> &U,
+                std::vector<SymmetricTensor<2, 3>> &stress,
+                std::vector<Point<3>> &points) const;
+
+  /** The diagonal of the box around the solids' vertices (m). */
+  double size() const;
+  /** Number of cells and of DoFs, e.g. "2 solids: 640 hexahedra of degree 2". */
+  std::string description() const;
+  const DoFHandler<3> &dofs() const { return dof_handler; }
+
+private:
+  /** The Lame constants lambda, mu (Pa) and the density (kg/m^3) of each solid. */
+  struct Material
+  {
+    double lambda = 0., mu = 0., rho = 0.;
+  };
+
+  const FrameDescription &frame;
+  std::vector<Material> materials;
+  Triangulation<3> triangulation;
+  FESystem<3> fe;
+  DoFHandler<3> dof_handler;
+  types::global_dof_index first_dof = 0;
+};
+} // namespace hati
+
+#endif

@@ -1,0 +1,238 @@
+#include <deal.II/base/utilities.h>
+
+#include <hati/model/frame_items.h>
+#include <hati/model/frame_solid_parser.h>
+
+#include <cmath>
+
+namespace hati
+{
+namespace
+{
+using Item = FrameItem;
+using Solid = SolidDescription::Solid;
+
+/** Throw "Model/Frame/<entry>: item '<name>': <what>" unless @p ok. */
+void require(const bool ok,
+             const std::string &entry,
+             const Item &it,
+             const std::string &what)
+{
+  AssertThrow(ok,
+              ExcMessage("Model/Frame/" + entry + ": item '" + it.name + "': " + what));
+}
+
+Point<3> to_point(const Item &it, const unsigned int first, const std::string &entry)
+{
+  return Point<3>(frame_item_number(it.values[first], entry, it),
+                  frame_item_number(it.values[first + 1], entry, it),
+                  frame_item_number(it.values[first + 2], entry, it));
+}
+
+/** A positive integer number of cells. */
+unsigned int to_cells(const Item &it, const unsigned int k)
+{
+  const double x = frame_item_number(it.values[k], "Solids", it);
+  require(x >= 1. && x <= 1e4 && x == std::floor(x),
+          "Solids",
+          it,
+          "the numbers of cells must be whole numbers from 1 to 10000, not '" +
+              it.values[k] + "'");
+  return static_cast<unsigned int>(x);
+}
+
+Solid parse_box(const Item &it)
+{
+  expect_frame_item_values(
+      it, "Solids", {11}, "11 (box, x0, y0, z0, x1, y1, z1, nx, ny, nz, material)");
+  Solid s;
+  s.x0 = to_point(it, 1, "Solids");
+  s.x1 = to_point(it, 4, "Solids");
+  for (unsigned int d = 0; d < 3; ++d)
+  {
+    s.cells[d] = to_cells(it, 7 + d);
+    require(s.x1[d] != s.x0[d], "Solids", it, "the box has zero extent along an axis");
+  }
+  s.material = it.values[10];
+  return s;
+}
+
+Solid parse_box_girder(const Item &it)
+{
+  expect_frame_item_values(it,
+                           "Solids",
+                           {13, 14},
+                           "13 or 14 (box girder, x0, y0, z0, x1, y1, z1, width, height, "
+                           "web thickness, flange thickness, element size, material[, "
+                           "diaphragm spacing])");
+  Solid s;
+  s.x0 = to_point(it, 1, "Solids");
+  s.x1 = to_point(it, 4, "Solids");
+  s.width = frame_item_number(it.values[7], "Solids", it);
+  s.height = frame_item_number(it.values[8], "Solids", it);
+  s.web_thickness = frame_item_number(it.values[9], "Solids", it);
+  s.flange_thickness = frame_item_number(it.values[10], "Solids", it);
+  s.element_size = frame_item_number(it.values[11], "Solids", it);
+  s.material = it.values[12];
+  if (it.values.size() == 14)
+    s.diaphragm_spacing = frame_item_number(it.values[13], "Solids", it);
+  require(s.x0.distance(s.x1) > 0., "Solids", it, "the girder has zero length");
+  require(s.web_thickness > 0. && s.flange_thickness > 0. && s.element_size > 0. &&
+              s.diaphragm_spacing >= 0.,
+          "Solids",
+          it,
+          "thicknesses and the element size must be > 0, the diaphragm spacing >= 0 (m)");
+  require(s.width > 2. * s.web_thickness && s.height > 2. * s.flange_thickness,
+          "Solids",
+          it,
+          "the box is thinner than its walls: a box girder needs width > 2 x web "
+          "thickness and height > 2 x flange thickness (one element each)");
+  require(s.x0.distance(s.x1) > 2. * s.web_thickness || s.diaphragm_spacing == 0.,
+          "Solids",
+          it,
+          "the girder is shorter than its two end diaphragms");
+  return s;
+}
+
+Solid parse_solid(const Item &it)
+{
+  require(
+      !it.values.empty(), "Solids", it, "no values: expected box, box girder or mesh");
+  const std::string kind = it.values[0];
+  Solid s;
+  if (kind == "box")
+    s = parse_box(it);
+  else if (kind == "box girder")
+    s = parse_box_girder(it);
+  else if (kind == "mesh")
+  {
+    expect_frame_item_values(it, "Solids", {3}, "3 (mesh, file.msh, material)");
+    s.file = it.values[1];
+    s.material = it.values[2];
+  }
+  else
+    require(false,
+            "Solids",
+            it,
+            "'" + kind + "' is not a kind of solid: expected box, box girder or mesh");
+  s.name = it.name;
+  s.kind = kind;
+  return s;
+}
+
+/**
+ * `<axis>=<value>` at @p k and the optional `radius r` (or `radius=r`)
+ * after it: the face plane of a tie or a support.
+ */
+SolidDescription::FacePlane
+parse_plane(const Item &it, const unsigned int k, const std::string &entry)
+{
+  SolidDescription::FacePlane f;
+  const std::string &v = it.values[k];
+  const auto eq = v.find('=');
+  const std::string axis =
+      eq == std::string::npos ? "" : Utilities::trim(v.substr(0, eq));
+  require(axis == "x" || axis == "y" || axis == "z",
+          entry,
+          it,
+          "'" + v +
+              "' is not a face plane: expected x=<value>, y=<value> or z=<value> (m)");
+  f.axis = axis[0] - 'x';
+  f.value = frame_item_number(Utilities::trim(v.substr(eq + 1)), entry, it);
+  if (it.values.size() > k + 1)
+  {
+    const std::string &r = it.values[k + 1];
+    require(r.rfind("radius", 0) == 0, entry, it, "'" + r + "' is not 'radius <r>' (m)");
+    std::string number = Utilities::trim(r.substr(6));
+    if (!number.empty() && number[0] == '=')
+      number = Utilities::trim(number.substr(1));
+    f.radius = frame_item_number(number, entry, it);
+    require(f.radius > 0., entry, it, "the radius must be > 0 (m)");
+  }
+  return f;
+}
+} // namespace
+
+void declare_solid_entries(ParameterHandler &prm)
+{
+  prm.declare_entry(
+      "Solids",
+      "",
+      Patterns::Anything(),
+      "3D linear elastic solids of the frame model, 'name: box, x0, y0, z0, x1, y1, "
+      "z1, nx, ny, nz, material' (a block between two corners, m, with nx x ny x nz "
+      "hexahedra); 'name: box girder, x0, y0, z0, x1, y1, z1, width, height, web "
+      "thickness, flange thickness, element size, material[, diaphragm spacing]' (a "
+      "hollow rectangular box between two axis points, m: its width along the local y "
+      "and its height along the local z axis of a frame member between the same "
+      "points, four plates one element thick with conforming corners, plates meshed "
+      "at the element size, optional transverse diaphragms of web thickness at that "
+      "spacing and at both ends); 'name: mesh, file.msh, material' (a Gmsh ASCII 4.1 "
+      "hexahedral mesh, m). Materials from Materials (E, nu, rho).");
+  prm.declare_entry("Solid element degree",
+                    "2",
+                    Patterns::Integer(),
+                    "Degree p of the solid elements FE_Q(p)^3 (1 to 4). 1 (trilinear) "
+                    "locks in bending (a thin plate 0.33 of its deflection): a one-line "
+                    "warning; 2 is within 1 % with one element through the thickness.");
+  prm.declare_entry(
+      "Ties",
+      "",
+      Patterns::Anything(),
+      "Beam nodes tied to solid faces, 'name: node, solid, <axis>=<value>[, radius r]; "
+      "...': the node follows the area-weighted rigid fit of the solid's boundary face "
+      "on the plane axis = value (m, global axes), or of its part within r (m) of the "
+      "node's projection on that plane (faces whose centre lies within). The face may "
+      "warp (no rigid face): a beam force F and moment M reach the face as the "
+      "traction F/S + (I_G^-1 M) x r (doc/theory.md B1).");
+  prm.declare_entry("Solid supports",
+                    "",
+                    Patterns::Anything(),
+                    "Fixed faces of solids, 'solid: <axis>=<value>[, radius r]; ...': "
+                    "every translation of the nodes of the solid's boundary face on "
+                    "that plane (m), or of its faces whose centre lies within r (m) of "
+                    "the face's centroid, is fixed.");
+  prm.declare_entry("Rigid links",
+                    "",
+                    Patterns::Anything(),
+                    "Rigid links, 'name: master node, slave node; ...': the slave node "
+                    "follows the master rigidly, u_s = u_m + theta_m x (x_s - x_m), "
+                    "theta_s = theta_m (eccentric connections, e.g. a wheel below its "
+                    "end carriage's axis).");
+}
+
+void parse_solid_entries(ParameterHandler &prm, SolidDescription &d)
+{
+  for (const Item &it : parse_frame_items(prm.get("Solids"), "Solids"))
+    d.solids.push_back(parse_solid(it));
+  const long degree = prm.get_integer("Solid element degree");
+  AssertThrow(degree >= 1 && degree <= 4,
+              ExcMessage("Model/Frame/Solid element degree = " + std::to_string(degree) +
+                         ": expected 1 to 4 (2: quadratic hexahedra)"));
+  d.degree = static_cast<unsigned int>(degree);
+  for (const Item &it : parse_frame_items(prm.get("Ties"), "Ties"))
+  {
+    expect_frame_item_values(
+        it, "Ties", {3, 4}, "3 or 4 (node, solid, <axis>=<value>[, radius r])");
+    SolidDescription::Tie t;
+    t.name = it.name;
+    t.node = it.values[0];
+    t.face = parse_plane(it, 2, "Ties");
+    t.face.solid = it.values[1];
+    d.ties.push_back(t);
+  }
+  for (const Item &it : parse_frame_items(prm.get("Solid supports"), "Solid supports"))
+  {
+    expect_frame_item_values(
+        it, "Solid supports", {1, 2}, "1 or 2 (<axis>=<value>[, radius r])");
+    SolidDescription::FacePlane f = parse_plane(it, 0, "Solid supports");
+    f.solid = it.name;
+    d.supports.push_back(f);
+  }
+  for (const Item &it : parse_frame_items(prm.get("Rigid links"), "Rigid links"))
+  {
+    expect_frame_item_values(it, "Rigid links", {2}, "2 (master node, slave node)");
+    d.rigid_links.push_back({it.name, it.values[0], it.values[1]});
+  }
+}
+} // namespace hati

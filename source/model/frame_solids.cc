@@ -1,0 +1,256 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <hati/model/frame_solids.h>
+#include <hati/model/solid_mesh.h>
+#include <hati/model/solid_tie.h>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace hati
+{
+namespace
+{
+/** The global DoFs of @p cell: its DoFHandler's plus @p offset. */
+void global_dofs(const DoFHandler<3>::active_cell_iterator &cell,
+                 const types::global_dof_index offset,
+                 std::vector<types::global_dof_index> &dofs)
+{
+  cell->get_dof_indices(dofs);
+  for (auto &d : dofs)
+    d += offset;
+}
+
+/**
+ * A key of a cell's shape (vertex offsets from its first vertex, rounded to
+ * 1e-9 of its size) and material: equal keys have equal element matrices.
+ */
+std::vector<long long> shape_key(const DoFHandler<3>::active_cell_iterator &cell)
+{
+  const double h = cell->diameter();
+  std::vector<long long> key{static_cast<long long>(cell->material_id())};
+  for (unsigned int v = 1; v < cell->n_vertices(); ++v)
+    for (unsigned int k = 0; k < 3; ++k)
+      key.push_back(std::llround((cell->vertex(v)[k] - cell->vertex(0)[k]) / h * 1e9));
+  key.push_back(std::llround(std::log(h) * 1e9));
+  return key;
+}
+} // namespace
+
+FrameSolids::FrameSolids(const FrameDescription &frame,
+                         const types::global_dof_index offset)
+    : frame(frame), fe(FE_Q<3>(frame.solids.degree), 3), first_dof(offset)
+{
+  for (const auto &s : frame.solids.solids)
+  {
+    const FrameMaterial &m = frame.materials.at(s.material);
+    const double nu = m.E / (2. * m.G) - 1.;
+    materials.push_back({m.E * nu / ((1. + nu) * (1. - 2. * nu)), m.G, m.rho});
+  }
+  create_solid_mesh(frame.solids, triangulation);
+  dof_handler.reinit(triangulation);
+  dof_handler.distribute_dofs(fe);
+}
+
+void FrameSolids::add_constraints(
+    const std::map<std::string, std::array<types::global_dof_index, 6>> &node_dofs,
+    AffineConstraints<double> &constraints) const
+{
+  const double tolerance = 1e-9 * std::max(size(), 1.);
+  std::map<std::string, unsigned int> index;
+  for (unsigned int k = 0; k < frame.solids.solids.size(); ++k)
+    index[frame.solids.solids[k].name] = k;
+  // supports: every translation of the face's DoFs
+  for (const auto &plane : frame.solids.supports)
+  {
+    const std::string where = "Model/Frame/Solid supports: solid '" + plane.solid + "'";
+    SolidDescription::FacePlane whole = plane;
+    whole.radius = -1.;
+    const FaceMoments all =
+        face_moments(dof_handler, index.at(plane.solid), whole, Point<3>(), tolerance, 0);
+    const FaceMoments face = face_moments(
+        dof_handler, index.at(plane.solid), plane, all.centroid, tolerance, first_dof);
+    AssertThrow(face.n_faces > 0,
+                ExcMessage(where + ": no face of the solid's boundary lies on that plane "
+                                   "(within the radius)"));
+    for (const auto dof : face.dofs)
+      if (!constraints.is_constrained(dof))
+        constraints.add_line(dof);
+  }
+  // ties (B1): the beam node's six DoFs as functions of the face's DoFs
+  for (const auto &tie : frame.solids.ties)
+  {
+    const std::string where = "Model/Frame/Ties: tie '" + tie.name + "'";
+    const Point<3> &x = frame.nodes.at(tie.node);
+    Point<3> projection = x;
+    projection[tie.face.axis] = tie.face.value;
+    const FaceMoments face = face_moments(dof_handler,
+                                          index.at(tie.face.solid),
+                                          tie.face,
+                                          projection,
+                                          tolerance,
+                                          first_dof);
+    const auto &slave = node_dofs.at(tie.node);
+    for (unsigned int c = 0; c < 6; ++c)
+      AssertThrow(
+          !constraints.is_constrained(slave[c]),
+          ExcMessage(where + ": node '" + tie.node +
+                     "' is already held (a support, a rigid link or another tie)"));
+    add_constraint_lines(slave, tie_rows(face, x, where), constraints);
+  }
+}
+
+void FrameSolids::add_pattern(const AffineConstraints<double> &constraints,
+                              DynamicSparsityPattern &pattern) const
+{
+  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+  for (const auto &cell : dof_handler.active_cell_iterators())
+  {
+    global_dofs(cell, first_dof, dofs);
+    constraints.add_entries_local_to_global(dofs, pattern, false);
+  }
+}
+
+void FrameSolids::assemble(const AffineConstraints<double> &constraints,
+                           DiscreteSystem &system,
+                           double &omega2,
+                           double &mass) const
+{
+  const QGauss<3> quadrature(fe.degree + 1);
+  FEValues<3> values(
+      fe, quadrature, update_values | update_gradients | update_JxW_values);
+  const unsigned int n = fe.n_dofs_per_cell();
+  FullMatrix<double> ke(n, n), me(n, n);
+  Vector<double> lumped(n), influence(n);
+  std::vector<types::global_dof_index> dofs(n);
+  std::vector<unsigned int> component(n);
+  for (unsigned int i = 0; i < n; ++i)
+    component[i] = fe.system_to_component_index(i).first;
+  std::map<std::vector<long long>, double> bounds;
+  for (const auto &cell : dof_handler.active_cell_iterators())
+  {
+    const Material &m = materials[cell->material_id()];
+    values.reinit(cell);
+    ke = 0.;
+    me = 0.;
+    for (unsigned int q = 0; q < quadrature.size(); ++q)
+    {
+      const double w = values.JxW(q);
+      for (unsigned int i = 0; i < n; ++i)
+      {
+        const unsigned int ci = component[i];
+        const Tensor<1, 3> gi = values.shape_grad(i, q);
+        for (unsigned int j = 0; j < n; ++j)
+        {
+          const unsigned int cj = component[j];
+          const Tensor<1, 3> gj = values.shape_grad(j, q);
+          // step-8: lambda div div + mu (grad_i . grad_j delta + transposed)
+          double k = m.lambda * gi[ci] * gj[cj] + m.mu * gi[cj] * gj[ci];
+          if (ci == cj)
+          {
+            k += m.mu * (gi * gj);
+            me(i, j) += m.rho * values.shape_value(i, q) * values.shape_value(j, q) * w;
+          }
+          ke(i, j) += k * w;
+        }
+      }
+    }
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      lumped[i] = 0.;
+      for (unsigned int j = 0; j < n; ++j)
+        lumped[i] += me(i, j);
+      mass += component[i] == 0 ? lumped[i] : 0.;
+    }
+    global_dofs(cell, first_dof, dofs);
+    constraints.distribute_local_to_global(ke, dofs, system.stiffness);
+    constraints.distribute_local_to_global(me, dofs, system.consistent_mass);
+    constraints.distribute_local_to_global(lumped, dofs, system.lumped_mass);
+    // M r_d element by element (the inertia coupled to supported DoFs kept)
+    for (unsigned int d = 0; d < 3; ++d)
+    {
+      for (unsigned int i = 0; i < n; ++i)
+      {
+        influence[i] = 0.;
+        for (unsigned int j = 0; j < n; ++j)
+          if (component[j] == d)
+            influence[i] += me(i, j);
+      }
+      constraints.distribute_local_to_global(influence, dofs, system.mass_influence[d]);
+    }
+    // the element bound of omega^2, once per cell shape
+    const auto key = shape_key(cell);
+    auto known = bounds.find(key);
+    if (known == bounds.end())
+      known = bounds
+                  .emplace(key,
+                           element_omega_squared(
+                               ke, std::vector<double>(lumped.begin(), lumped.end())))
+                  .first;
+    omega2 = std::max(omega2, known->second);
+  }
+}
+
+void FrameSolids::add_influence(const std::vector<bool> &fixed,
+                                std::array<Vector<double>, 3> &influence) const
+{
+  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+  for (const auto &cell : dof_handler.active_cell_iterators())
+  {
+    global_dofs(cell, first_dof, dofs);
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      if (!fixed[dofs[i]])
+        influence[fe.system_to_component_index(i).first][dofs[i]] = 1.;
+  }
+}
+
+void FrameSolids::stresses(const Vector<double> &U,
+                           std::vector<SymmetricTensor<2, 3>> &stress,
+                           std::vector<Point<3>> &points) const
+{
+  const QGauss<3> quadrature(fe.degree + 1);
+  FEValues<3> values(fe, quadrature, update_gradients | update_quadrature_points);
+  const unsigned int n = fe.n_dofs_per_cell();
+  std::vector<types::global_dof_index> dofs(n);
+  stress.clear();
+  points.clear();
+  for (const auto &cell : dof_handler.active_cell_iterators())
+  {
+    const Material &m = materials[cell->material_id()];
+    values.reinit(cell);
+    global_dofs(cell, first_dof, dofs);
+    for (unsigned int q = 0; q < quadrature.size(); ++q)
+    {
+      Tensor<2, 3> grad;
+      for (unsigned int i = 0; i < n; ++i)
+        grad[fe.system_to_component_index(i).first] +=
+            U[dofs[i]] * values.shape_grad(i, q);
+      const SymmetricTensor<2, 3> strain = symmetrize(grad);
+      stress.push_back(m.lambda * trace(strain) * unit_symmetric_tensor<3>() +
+                       2. * m.mu * strain);
+      points.push_back(values.quadrature_point(q));
+    }
+  }
+}
+
+double FrameSolids::size() const
+{
+  const auto box = GridTools::compute_bounding_box(triangulation);
+  return box.get_boundary_points().first.distance(box.get_boundary_points().second);
+}
+
+std::string FrameSolids::description() const
+{
+  std::ostringstream s;
+  s << frame.solids.solids.size()
+    << (frame.solids.solids.size() == 1 ? " solid: " : " solids: ")
+    << triangulation.n_active_cells() << " hexahedra of degree " << fe.degree << ", "
+    << dof_handler.n_dofs() << " DoFs";
+  return s.str();
+}
+} // namespace hati

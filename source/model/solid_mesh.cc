@@ -1,0 +1,196 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <hati/base/input_file.h>
+#include <hati/model/frame_element.h>
+#include <hati/model/memory_estimate.h>
+#include <hati/model/solid_mesh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <set>
+
+namespace hati
+{
+namespace
+{
+using Solid = SolidDescription::Solid;
+
+std::string where(const Solid &s) { return "Model/Frame/Solids: solid '" + s.name + "'"; }
+
+/** @p n equal steps of the interval of length @p length. */
+void add_steps(std::vector<double> &steps, const double length, const double size)
+{
+  const unsigned int n = std::max(1L, std::lround(length / size));
+  for (unsigned int i = 0; i < n; ++i)
+    steps.push_back(length / n);
+}
+
+/** The cell sizes along the girder's axis and which slabs are diaphragms. */
+void axial_steps(const Solid &s,
+                 const double length,
+                 std::vector<double> &steps,
+                 std::vector<bool> &diaphragm)
+{
+  // the diaphragm slabs [a, b], in order
+  std::vector<std::pair<double, double>> slabs;
+  const double t = s.web_thickness;
+  if (s.diaphragm_spacing > 0.)
+  {
+    slabs.emplace_back(0., t);
+    for (double c = s.diaphragm_spacing; c + 0.5 * t < length - t;
+         c += s.diaphragm_spacing)
+      if (c - 0.5 * t > t)
+        slabs.emplace_back(c - 0.5 * t, c + 0.5 * t);
+    slabs.emplace_back(length - t, length);
+  }
+  double x = 0.;
+  for (const auto &[a, b] : slabs)
+  {
+    if (a > x)
+    {
+      add_steps(steps, a - x, s.element_size);
+      diaphragm.resize(steps.size(), false);
+    }
+    steps.push_back(b - a);
+    diaphragm.push_back(true);
+    x = b;
+  }
+  if (x < length)
+  {
+    add_steps(steps, length - x, s.element_size);
+    diaphragm.resize(steps.size(), false);
+  }
+}
+
+void create_box(const Solid &s, Triangulation<3> &t)
+{
+  check_memory_estimate(where(s),
+                        double(s.cells[0]) * s.cells[1] * s.cells[2],
+                        81. * (s.cells[0] + 1.) * (s.cells[1] + 1.) * (s.cells[2] + 1.),
+                        81. * 27. * (s.cells[0] + 1.) * (s.cells[1] + 1.) *
+                            (s.cells[2] + 1.));
+  GridGenerator::subdivided_hyper_rectangle(
+      t, std::vector<unsigned int>(s.cells.begin(), s.cells.end()), s.x0, s.x1);
+}
+
+void create_box_girder(const Solid &s, Triangulation<3> &t)
+{
+  const double length = s.x0.distance(s.x1);
+  std::vector<std::vector<double>> steps(3);
+  std::vector<bool> diaphragm;
+  axial_steps(s, length, steps[0], diaphragm);
+  const double tw = s.web_thickness, tf = s.flange_thickness;
+  steps[1].push_back(tw);
+  add_steps(steps[1], s.width - 2. * tw, s.element_size);
+  steps[1].push_back(tw);
+  steps[2].push_back(tf);
+  add_steps(steps[2], s.height - 2. * tf, s.element_size);
+  steps[2].push_back(tf);
+  const double n_cells = double(steps[0].size()) * steps[1].size() * steps[2].size();
+  check_memory_estimate(where(s), n_cells, 81. * n_cells, 81. * 27. * n_cells);
+
+  Triangulation<3> block;
+  GridGenerator::subdivided_hyper_rectangle(
+      block,
+      steps,
+      Point<3>(0., -0.5 * s.width, -0.5 * s.height),
+      Point<3>(length, 0.5 * s.width, 0.5 * s.height));
+  // remove the hollow: cells inside the walls that are not in a diaphragm
+  // slab (the slab from the cell centre's position along the axis)
+  std::vector<double> slab_end(steps[0].size());
+  double x = 0.;
+  for (unsigned int i = 0; i < steps[0].size(); ++i)
+    slab_end[i] = (x += steps[0][i]);
+  std::set<Triangulation<3>::active_cell_iterator> removed;
+  for (const auto &cell : block.active_cell_iterators())
+  {
+    const Point<3> c = cell->center();
+    const bool inside =
+        std::abs(c[1]) < 0.5 * s.width - tw && std::abs(c[2]) < 0.5 * s.height - tf;
+    const unsigned int slab =
+        std::lower_bound(slab_end.begin(), slab_end.end(), c[0]) - slab_end.begin();
+    if (inside && !(slab < diaphragm.size() && diaphragm[slab]))
+      removed.insert(cell);
+  }
+  GridGenerator::create_triangulation_with_removed_cells(block, removed, t);
+  // to the member's local axes: x = x0 + R^T p
+  // the default section orientation of a frame member (global Y, or X for
+  // a member along Y)
+  const Tensor<1, 3> axis = s.x1 - s.x0;
+  Tensor<1, 3> y_reference({0., 1., 0.});
+  if (std::abs(axis[1]) > (1. - 1e-9) * axis.norm())
+    y_reference = Tensor<1, 3>({1., 0., 0.});
+  const Tensor<2, 3> R = frame_rotation(s.x0, s.x1, y_reference);
+  GridTools::transform(
+      [&](const Point<3> &p)
+      {
+        Point<3> y = s.x0;
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int k = 0; k < 3; ++k)
+            y[i] += R[k][i] * p[k];
+        return y;
+      },
+      t);
+}
+
+void read_mesh(const Solid &s, Triangulation<3> &t)
+{
+  require_regular_file(s.file, where(s), "mesh");
+  std::ifstream in(s.file);
+  AssertThrow(in, ExcMessage(where(s) + ": cannot open '" + s.file + "'"));
+  GridIn<3> reader;
+  reader.attach_triangulation(t);
+  try
+  {
+    reader.read_msh(in);
+  }
+  catch (const std::exception &e)
+  {
+    std::string what = e.what();
+    std::replace(what.begin(), what.end(), '\n', ' ');
+    AssertThrow(false,
+                ExcMessage(where(s) + ": '" + s.file +
+                           "' is not a Gmsh ASCII mesh deal.II reads (" +
+                           what.substr(0, 200) + ")"));
+  }
+  for (const auto &cell : t.active_cell_iterators())
+    AssertThrow(
+        cell->reference_cell() == ReferenceCells::Hexahedron,
+        ExcMessage(where(s) + ": '" + s.file +
+                   "' has cells that are not hexahedra (only hexahedral meshes)"));
+  AssertThrow(t.n_active_cells() > 0,
+              ExcMessage(where(s) + ": '" + s.file + "' has no hexahedra"));
+}
+} // namespace
+
+void create_solid_mesh(const SolidDescription &description,
+                       Triangulation<3> &triangulation)
+{
+  for (unsigned int k = 0; k < description.solids.size(); ++k)
+  {
+    const Solid &s = description.solids[k];
+    Triangulation<3> part;
+    if (s.kind == "box")
+      create_box(s, part);
+    else if (s.kind == "box girder")
+      create_box_girder(s, part);
+    else
+      read_mesh(s, part);
+    for (const auto &cell : part.active_cell_iterators())
+      cell->set_material_id(k);
+    if (triangulation.n_active_cells() == 0)
+      triangulation.copy_triangulation(part);
+    else
+    {
+      Triangulation<3> merged;
+      GridGenerator::merge_triangulations(triangulation, part, merged);
+      triangulation.clear();
+      triangulation.copy_triangulation(merged);
+    }
+  }
+}
+} // namespace hati
