@@ -8,7 +8,8 @@
 //  (c) fixed-free chain of springs and masses: static tip load, modes
 //      (ARPACK and dense LAPACK paths), effective masses;
 //  (d) free-free chain: the static analysis refuses it with a clear message;
-//  (e) step force on the SDOF: mean F/k and peak 2F/k.
+//  (e) step force on the SDOF: mean F/k and peak 2F/k;
+//  (f) the choice of the linear solver (auto: KLU below 20,000 DoFs).
 // Every check prints value, reference and tolerance; returns non-zero on
 // failure.
 #include <deal.II/base/mpi.h>
@@ -20,6 +21,7 @@
 #include <hati/analysis/modal_analysis.h>
 #include <hati/analysis/static_analysis.h>
 #include <hati/base/mpi_environment.h>
+#include <hati/linear_algebra/direct_solver.h>
 #include <hati/model/discrete_system.h>
 #include <hati/time/newmark.h>
 #include <hati/time/rayleigh_damping.h>
@@ -436,18 +438,23 @@ void test_chain()
       c.initial_displacement[i] = 0.01 * i;
     c.initial_velocity[N] = 0.5;
     c.initial_velocity[0] = 3.; // a fixed DoF: must be ignored
-    NewmarkParameters direct, iterative;
+    NewmarkParameters direct, iterative, mumps;
     iterative.linear_solver = "iterative";
+    mumps.linear_solver = "MUMPS";
     iterative.solver_tolerance = 1e-13;
     const double dt = 0.2 * std::sqrt(m / k);
     Newmark a(c, dt, direct, RayleighDamping());
     Newmark b(c, dt, iterative, RayleighDamping());
+    Newmark f(c, dt, mumps, RayleighDamping());
+    expect(a.linear_solver() == "KLU" && f.linear_solver() == "MUMPS",
+           "chain: Newmark's solver resolved (auto: KLU; MUMPS)");
     const double e0 = a.energies().total();
     double drift = 0.;
     for (unsigned int i = 0; i < 500; ++i)
     {
       a.step();
       b.step();
+      f.step();
       drift = std::max(drift, std::abs(a.energies().total() - e0));
     }
     Vector<double> d(a.displacement());
@@ -456,6 +463,12 @@ void test_chain()
           d.linfty_norm(),
           0.,
           1e-8 * a.displacement().linfty_norm());
+    d = a.displacement();
+    d -= f.displacement();
+    check("chain: Newmark KLU vs MUMPS after 500 steps, max |dU| (m)",
+          d.linfty_norm(),
+          0.,
+          1e-12 * a.displacement().linfty_norm());
     check("chain: relative drift of the total energy over 500 steps",
           drift / e0,
           0.,
@@ -474,7 +487,7 @@ void test_free_free_static()
   {
     const std::string springs = k > 0. ? "k = " + std::to_string(k) : "varying k";
     for (const bool with_influence : {true, false})
-      for (const std::string solver : {"direct", "iterative"})
+      for (const std::string solver : {"direct", "MUMPS", "iterative"})
       {
         DiscreteSystem s;
         make_chain(s, 10, std::abs(k), 2., false, false);
@@ -600,6 +613,42 @@ void test_point_mass()
            "Newmark refuses a DoF without mass and stiffness");
   }
 }
+
+// (f) the linear solver a value of Time integration/Newmark/Linear solver picks
+void test_linear_solver_choice()
+{
+  std::cout << "--- (f) choice of the linear solver" << std::endl;
+  for (const std::string value : {"auto", "direct"})
+  {
+    expect(resolve_linear_solver(value, 19999) == "KLU" &&
+               direct_solver_package(value, 19999) == "Amesos_Klu",
+           value + " at 19999 DoFs: KLU");
+    expect(resolve_linear_solver(value, 20000) == "MUMPS" &&
+               direct_solver_package(value, 20000) == "Amesos_Mumps",
+           value + " at 20000 DoFs: MUMPS");
+  }
+  expect(resolve_linear_solver("KLU", 1000000) == "KLU" &&
+             resolve_linear_solver("MUMPS", 10) == "MUMPS" &&
+             direct_solver_package("MUMPS", 10) == "Amesos_Mumps",
+         "KLU and MUMPS as named, whatever the size");
+  expect(resolve_linear_solver("iterative", 10) == "iterative" &&
+             direct_solver_package("iterative", 10) == "Amesos_Klu" &&
+             direct_solver_package("iterative", 20000) == "Amesos_Mumps",
+         "iterative: its factorisations as auto");
+  std::string message;
+  try
+  {
+    resolve_linear_solver("klu", 10);
+  }
+  catch (const std::exception &e)
+  {
+    message = message_of(e);
+  }
+  std::cout << "     message: " << message << std::endl;
+  expect(message.find("Time integration/Newmark/Linear solver = klu") !=
+             std::string::npos,
+         "an unknown linear solver is refused naming the entry");
+}
 } // namespace
 
 int main(int argc, char **argv)
@@ -614,6 +663,7 @@ int main(int argc, char **argv)
     test_free_free_static();
     test_step_force();
     test_point_mass();
+    test_linear_solver_choice();
   }
   catch (const std::exception &e)
   {

@@ -45,17 +45,19 @@ namespace
 {
 /**
  * The shift-invert operator (K - sigma M)^-1 of ARPACK's mode 3: one
- * Amesos_Klu factorisation, one forward/backward substitution per vmult().
+ * factorisation with the Amesos @p package (Amesos_Klu or Amesos_Mumps), one
+ * forward/backward substitution per vmult().
  */
 class ShiftedInverse
 {
 public:
-  explicit ShiftedInverse(const SparseMatrix<double> &shifted_matrix)
+  ShiftedInverse(const SparseMatrix<double> &shifted_matrix, const std::string &package)
+      : solver(package)
   {
     solver.factorize(shifted_matrix,
-                     "modal analysis: Amesos_Klu found a zero pivot in the shifted "
-                     "stiffness K - sigma M (a free DoF without stiffness and without "
-                     "mass?).");
+                     "modal analysis: " + package +
+                         " found a zero pivot in the shifted stiffness K - sigma M (a "
+                         "free DoF without stiffness and without mass?).");
   }
 
   /** dst = (K - sigma M)^-1 src. */
@@ -124,12 +126,16 @@ std::vector<Eigenpair> dense_modes(const SparseMatrix<double> &K,
   return pairs;
 }
 
-/** ARPACK shift-invert Lanczos with ncv Lanczos vectors. */
+/**
+ * ARPACK shift-invert Lanczos with ncv Lanczos vectors, the shifted stiffness
+ * factorised with the Amesos @p package.
+ */
 std::vector<Eigenpair> arpack_modes(const SparseMatrix<double> &K,
                                     const SparseMatrix<double> &M,
                                     const std::vector<bool> &fixed,
                                     const unsigned int n_modes,
-                                    const unsigned int ncv)
+                                    const unsigned int ncv,
+                                    const std::string &package)
 {
   const unsigned int n = K.m();
   // Shift sigma = -s < 0: K - sigma M = K + s M is positive definite even if
@@ -148,7 +154,7 @@ std::vector<Eigenpair> arpack_modes(const SparseMatrix<double> &K,
   shifted.copy_from(K);
   shifted.add(-sigma, M);
   // fixed rows: K keeps a positive diagonal, M is zero there
-  const ShiftedInverse inverse(shifted);
+  const ShiftedInverse inverse(shifted, package);
 
   SolverControl control(10000, 1e-13);
   ArpackSolver::AdditionalData data(ncv, ArpackSolver::largest_magnitude, true);
@@ -482,11 +488,13 @@ void normalise_and_check(const unsigned int k,
 ModalResult compute_modes(const DiscreteSystem &system,
                           const unsigned int n_modes,
                           const bool close_contacts,
-                          const Vector<double> *rope_state)
+                          const Vector<double> *rope_state,
+                          const std::string &linear_solver)
 {
   const unsigned int n = system.n_dofs();
   AssertThrow(system.fixed.size() == n,
               ExcMessage("modal analysis: the DiscreteSystem has no fixed flags."));
+  const std::string package = direct_solver_package(linear_solver, n);
   const ModalMatrices matrices(system, rope_state);
   const SparseMatrix<double> &K = matrices.K, &M = matrices.M;
   ModalResult result;
@@ -534,7 +542,7 @@ ModalResult compute_modes(const DiscreteSystem &system,
   const unsigned int ncv =
       std::min({n_free, n - 1, std::max(2 * n_modes + 2, n_modes + 20)});
   std::vector<Eigenpair> pairs = (ncv >= 2 * n_modes + 2)
-                                     ? arpack_modes(Kw, Mw, fixed, n_modes, ncv)
+                                     ? arpack_modes(Kw, Mw, fixed, n_modes, ncv, package)
                                      : dense_modes(Kw, Mw, fixed);
   std::sort(pairs.begin(),
             pairs.end(),

@@ -32,7 +32,8 @@ int dominant_direction(const ModalResult &r, const unsigned int k)
 } // namespace
 
 ModalRayleighDamping modal_rayleigh_damping(const DiscreteSystem &system,
-                                            const double damping_ratio)
+                                            const double damping_ratio,
+                                            const std::string &linear_solver)
 {
   AssertThrow(damping_ratio > 0.,
               ExcMessage("modal Rayleigh damping: the damping ratio must be > 0."));
@@ -40,7 +41,8 @@ ModalRayleighDamping modal_rayleigh_damping(const DiscreteSystem &system,
   unsigned int n_free = 0;
   for (unsigned int i = 0; i < system.n_dofs(); ++i)
     n_free += system.fixed[i] ? 0 : 1;
-  n_free -= compute_modes(system, 0, true, &system.initial_displacement).n_constraints;
+  n_free -= compute_modes(system, 0, true, &system.initial_displacement, linear_solver)
+                .n_constraints;
   ModalRayleighDamping result;
   result.damping_ratio = damping_ratio;
   unsigned int n_modes = 20, searched = 0;
@@ -48,7 +50,7 @@ ModalRayleighDamping modal_rayleigh_damping(const DiscreteSystem &system,
   {
     n_modes = std::min(n_modes, n_free);
     const ModalResult r =
-        compute_modes(system, n_modes, true, &system.initial_displacement);
+        compute_modes(system, n_modes, true, &system.initial_displacement, linear_solver);
     searched = r.frequencies.size();
     const double f_max = r.frequencies.empty() ? 0. : r.frequencies.back();
     result.mode_vertical = result.mode_horizontal = 0;
@@ -93,6 +95,7 @@ ModalRayleighDamping modal_rayleigh_damping(const DiscreteSystem &system,
 SummaryEntries apply_default_damping(const double zeta,
                                      const DiscreteSystem &system,
                                      const std::string &method,
+                                     const std::string &linear_solver,
                                      RayleighDamping &damping)
 {
   if (zeta <= 0. || damping.given)
@@ -103,7 +106,7 @@ SummaryEntries apply_default_damping(const double zeta,
               << ") with Method = event-driven: undamped" << std::endl;
     return {};
   }
-  const ModalRayleighDamping d = modal_rayleigh_damping(system, zeta);
+  const ModalRayleighDamping d = modal_rayleigh_damping(system, zeta, linear_solver);
   damping.a0 = d.a0;
   damping.a1 = d.a1;
   std::cout << "  default Rayleigh damping " << zeta << " at the first vertical mode ("

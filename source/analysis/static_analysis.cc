@@ -129,10 +129,12 @@ bool opposite_rows(const ContactRow &a, const ContactRow &b)
 /**
  * The static problem with the closed contact rows @p closed as bilateral
  * constraints: `[K L^T; L 0] [U; mu] = [F; -g0]`, `lambda = -mu` (so that
- * `K U = F + L^T lambda`), by KLU with up to two refinement steps. Returns
- * lambda per closed row (N).
+ * `K U = F + L^T lambda`), factorised with the Amesos @p package (KLU or
+ * MUMPS, pivoting) with up to two refinement steps. Returns lambda per
+ * closed row (N).
  */
 std::vector<double> solve_closed(const DiscreteSystem &system,
+                                 const std::string &package,
                                  const SparseMatrix<double> &K,
                                  const Vector<double> &F,
                                  const std::vector<const SparseRow *> &closed,
@@ -176,10 +178,10 @@ std::vector<double> solve_closed(const DiscreteSystem &system,
       }
     b[n + k] = closed_rhs[k];
   }
-  DirectSolver solver;
+  DirectSolver solver(package);
   solver.factorize(A,
-                   singular_message + " with its closed contacts (Amesos_Klu found a "
-                                      "zero pivot in [K L^T; L 0]).");
+                   singular_message + " with its closed contacts (" + package +
+                       " found a zero pivot in [K L^T; L 0]).");
   solver.solve(x, b);
   const double norm_b = b.l2_norm();
   for (unsigned int refinement = 0; refinement < 2; ++refinement)
@@ -426,18 +428,20 @@ void check_static_friction(const DiscreteSystem &system,
 }
 
 /**
- * K U = F by one Amesos_Klu factorisation (it stops at an exactly zero
- * pivot), then the solve and up to two steps of iterative refinement with it.
+ * K U = F by one factorisation with the Amesos @p package (KLU stops at an
+ * exactly zero pivot), then the solve and up to two steps of iterative
+ * refinement with it.
  */
-void solve_direct(const SparseMatrix<double> &K,
+void solve_direct(const std::string &package,
+                  const SparseMatrix<double> &K,
                   const Vector<double> &F,
                   const std::vector<bool> &fixed,
                   Vector<double> &U)
 {
   const double norm_F = F.l2_norm();
   Vector<double> r(U.size());
-  DirectSolver solver;
-  solver.factorize(K, singular_message + " (Amesos_Klu found a zero pivot in K).");
+  DirectSolver solver(package);
+  solver.factorize(K, singular_message + " (" + package + " found a zero pivot in K).");
   solver.solve(U, F);
   for (unsigned int refinement = 0; refinement < 2; ++refinement)
   {
@@ -503,15 +507,16 @@ struct HeldRows
 
 /**
  * What every static solve of one model takes: the model, its closed
- * contacts, the rows held, the linear solver (`direct` or `iterative`) and
- * where the contact forces go (N; nullptr: nowhere).
+ * contacts, the rows held, the linear solver (resolve_linear_solver(): KLU,
+ * MUMPS or iterative), the Amesos package of its factorisations and where
+ * the contact forces go (N; nullptr: nowhere).
  */
 struct StaticSolve
 {
   const DiscreteSystem &system;
   const ClosedContacts &contacts;
   const HeldRows &held;
-  const std::string &linear_solver;
+  const std::string linear_solver, package;
   std::vector<double> *contact_forces;
 };
 
@@ -531,7 +536,7 @@ void solve_linear(const StaticSolve &s,
   if (!s.contacts.closed.empty())
   {
     const std::vector<double> lambda =
-        solve_closed(s.system, K, F, s.held.rows, s.held.rhs, U);
+        solve_closed(s.system, s.package, K, F, s.held.rows, s.held.rhs, U);
     const std::vector<double> forces =
         closed_contact_forces(s.system, s.contacts, lambda, F);
     check_static_friction(s.system, s.contacts, s.held.sticking, lambda);
@@ -540,8 +545,8 @@ void solve_linear(const StaticSolve &s,
     return;
   }
 
-  if (s.linear_solver == "direct")
-    solve_direct(K, F, fixed, U);
+  if (s.linear_solver != "iterative")
+    solve_direct(s.package, K, F, fixed, U);
   else if (norm_F > 0.)
     solve_iterative(s.system, K, F, U);
 
@@ -631,10 +636,9 @@ void solve_static(const DiscreteSystem &system,
                   const bool constant_loads_only,
                   std::vector<double> *contact_forces)
 {
-  AssertThrow(linear_solver == "direct" || linear_solver == "iterative",
-              ExcMessage("static analysis: unknown linear solver <" + linear_solver +
-                         ">: use direct or iterative."));
   const unsigned int n = system.n_dofs();
+  const std::string solver = resolve_linear_solver(linear_solver, n),
+                    package = direct_solver_package(linear_solver, n);
   const std::vector<bool> &fixed = system.fixed;
   U.reinit(n);
   if (contact_forces != nullptr)
@@ -669,7 +673,7 @@ void solve_static(const DiscreteSystem &system,
     if (fixed[i])
       F[i] = 0.;
 
-  const StaticSolve s{system, contacts, held, linear_solver, contact_forces};
+  const StaticSolve s{system, contacts, held, solver, package, contact_forces};
   if (!system.ropes.empty())
   {
     try

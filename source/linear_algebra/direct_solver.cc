@@ -21,7 +21,34 @@ struct DirectSolver::Data
   LinearAlgebra::distributed::Vector<double> x, b;
 };
 
-DirectSolver::DirectSolver() : data(std::make_unique<Data>()) {}
+std::string resolve_linear_solver(const std::string &linear_solver,
+                                  const unsigned int n_dofs)
+{
+  if (linear_solver == "auto" || linear_solver == "direct")
+    return n_dofs < mumps_from_n_dofs ? "KLU" : "MUMPS";
+  AssertThrow(linear_solver == "KLU" || linear_solver == "MUMPS" ||
+                  linear_solver == "iterative",
+              ExcMessage("Time integration/Newmark/Linear solver = " + linear_solver +
+                         ": unknown linear solver (auto, KLU, MUMPS, direct or "
+                         "iterative)."));
+  return linear_solver;
+}
+
+std::string direct_solver_package(const std::string &linear_solver,
+                                  const unsigned int n_dofs)
+{
+  const std::string solver = resolve_linear_solver(
+      linear_solver == "iterative" ? std::string("auto") : linear_solver, n_dofs);
+  return solver == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu";
+}
+
+DirectSolver::DirectSolver(const std::string &package)
+    : data(std::make_unique<Data>()), amesos_package(package)
+{
+  AssertThrow(package == "Amesos_Klu" || package == "Amesos_Mumps",
+              ExcMessage("DirectSolver: unknown Amesos package <" + package +
+                         ">: Amesos_Klu or Amesos_Mumps."));
+}
 
 DirectSolver::~DirectSolver() = default;
 
@@ -32,7 +59,8 @@ void DirectSolver::factorize(const SparseMatrix<double> &matrix,
   failure = failure_message;
   data->matrix.reinit(matrix, 0.);
   data->solver = std::make_unique<TrilinosWrappers::SolverDirect>(
-      data->control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
+      data->control,
+      TrilinosWrappers::SolverDirect::AdditionalData(false, amesos_package));
   try
   {
     data->solver->initialize(data->matrix);

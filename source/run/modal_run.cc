@@ -47,7 +47,11 @@ void run_modal_analysis(Problem &problem, RunDirectory &directory)
   }
   {
     TimerOutput::Scope scope(timer, "eigenvalue solve");
-    r = compute_modes(system, problem.analysis_parameters.n_modes, true, &rope_state);
+    r = compute_modes(system,
+                      problem.analysis_parameters.n_modes,
+                      true,
+                      &rope_state,
+                      problem.newmark_parameters.linear_solver);
   }
   TimerOutput::Scope scope(timer, "output");
   directory.begin();

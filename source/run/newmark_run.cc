@@ -33,7 +33,7 @@ void run_newmark(Problem &problem, RunDirectory &directory)
                      problem.damping.branches);
   timer.leave_subsection();
   std::cout << "  Newmark (beta = " << parameters.beta << ", gamma = " << parameters.gamma
-            << ", " << parameters.linear_solver << " solver): factorisation "
+            << ", " << integrator.linear_solver() << " solver): factorisation "
             << integrator.factorization_time() << " s";
   if (integrator.memory().active())
     std::cout << ", frequency-range damping (" << integrator.memory().n_branches()

@@ -175,8 +175,11 @@ void Problem::prepare_transient()
     }
   const DefaultDamping defaults = model->default_damping();
   if (!damping.frequency_range() && defaults.type == "Rayleigh")
-    for (const auto &entry : apply_default_damping(
-             defaults.ratio, system, time_parameters.method, damping.rayleigh))
+    for (const auto &entry : apply_default_damping(defaults.ratio,
+                                                   system,
+                                                   time_parameters.method,
+                                                   newmark_parameters.linear_solver,
+                                                   damping.rayleigh))
       initial_state_summary.push_back(entry);
   AssertThrow(time_parameters.method != "event-driven" ||
                   (damping.rayleigh.a0 == 0. && damping.rayleigh.a1 == 0.),

@@ -3,6 +3,7 @@
 #include <deal.II/base/timer.h>
 
 #include <hati/analysis/static_analysis.h>
+#include <hati/linear_algebra/direct_solver.h>
 #include <hati/output/csv_file.h>
 #include <hati/output/output_writer.h>
 #include <hati/output/run_directory.h>
@@ -130,7 +131,9 @@ void run_static_analysis(Problem &problem, RunDirectory &directory)
   writer.finish();
 
   std::cout << "  static analysis (K U = F_ext(0), "
-            << problem.newmark_parameters.linear_solver << " solver):\n";
+            << resolve_linear_solver(problem.newmark_parameters.linear_solver,
+                                     system.n_dofs())
+            << " solver):\n";
   for (const auto &m : system.monitors)
   {
     std::cout << "    " << m.name << ":";

@@ -108,12 +108,20 @@ void NewmarkParameters::declare_parameters(ParameterHandler &prm)
                     "Newmark gamma (-), >= 0.5. Gamma > 0.5 adds numerical "
                     "damping and makes the scheme first order.");
   prm.declare_entry("Linear solver",
-                    "direct",
-                    Patterns::Selection("direct|iterative"),
-                    "direct: the effective matrix M + gamma DT C + beta DT^2 K is "
+                    "auto",
+                    Patterns::Selection("auto|KLU|MUMPS|direct|iterative"),
+                    "KLU: the effective matrix M + gamma DT C + beta DT^2 K is "
                     "factorised once (Amesos_Klu) and each step is one "
-                    "forward/backward substitution. iterative: conjugate gradients "
-                    "preconditioned by ML algebraic multigrid (large models).");
+                    "forward/backward substitution. MUMPS: the same with "
+                    "Amesos_Mumps (multifrontal; large models). auto: KLU below "
+                    "20000 DoFs, MUMPS at and above (the DoFs of the system solved: "
+                    "with HATI the implicit subdomain's). direct: the same as auto "
+                    "(kept for older parameter files). iterative: conjugate gradients "
+                    "preconditioned by ML algebraic multigrid. Also the solver of the "
+                    "static analysis, of Initial state = static and of the modal "
+                    "analysis (with iterative, the matrices that are always "
+                    "factorised, e.g. the shifted stiffness of the modal analysis, "
+                    "use auto's choice).");
   prm.declare_entry("Solver tolerance",
                     "1e-10",
                     Patterns::Double(0.),
@@ -154,9 +162,11 @@ void NewmarkParameters::check_unconditional_stability() const
   }
 }
 
-/** The Trilinos effective matrix with its Amesos_Klu factorisation or AMG. */
+/** The Trilinos effective matrix with its Amesos factorisation or AMG. */
 struct Newmark::EffectiveSolver
 {
+  explicit EffectiveSolver(const std::string &package) : direct(package) {}
+
   DirectSolver direct;
   // iterative solver: the Trilinos matrix and its AMG preconditioner
   TrilinosWrappers::SparseMatrix matrix;
@@ -169,10 +179,13 @@ Newmark::Newmark(const DiscreteSystem &system,
                  const RayleighDamping &damping,
                  const MaxwellBranches &maxwell)
     : system(system), dt(DT), beta(parameters.beta), gamma(parameters.gamma),
-      a0(damping.a0), a1(damping.a1), direct(parameters.linear_solver == "direct"),
-      tolerance(parameters.solver_tolerance),
+      a0(damping.a0), a1(damping.a1),
+      solver_name(resolve_linear_solver(parameters.linear_solver, system.n_dofs())),
+      package(direct_solver_package(parameters.linear_solver, system.n_dofs())),
+      direct(solver_name != "iterative"), tolerance(parameters.solver_tolerance),
       use_consistent_mass(system.has_consistent_mass() && parameters.mass != "lumped"),
-      solver(std::make_unique<EffectiveSolver>()), branches(maxwell, DT, system.n_dofs())
+      solver(std::make_unique<EffectiveSolver>(package)),
+      branches(maxwell, DT, system.n_dofs())
 {
   AssertThrow(!branches.active() || (a0 == 0. && a1 == 0.),
               ExcMessage("Newmark: Rayleigh and frequency-range damping cannot be "
@@ -185,10 +198,6 @@ Newmark::Newmark(const DiscreteSystem &system,
                  "Gamma) for unconditional stability "
                  "(2 Beta >= Gamma >= 1/2; Beta = 1/4, Gamma = 1/2 is the average "
                  "acceleration scheme)."));
-  AssertThrow(parameters.linear_solver == "direct" ||
-                  parameters.linear_solver == "iterative",
-              ExcMessage("Newmark: unknown linear solver <" + parameters.linear_solver +
-                         ">: use direct or iterative."));
   const unsigned int n = system.n_dofs();
   AssertThrow(system.fixed.size() == n,
               ExcMessage("Newmark: the DiscreteSystem has no fixed flags."));
@@ -228,9 +237,9 @@ Newmark::Newmark(const DiscreteSystem &system,
   if (direct)
     solver->direct.factorize(
         m_eff,
-        "Newmark: the factorisation (Amesos_Klu) of the effective matrix M + gamma DT "
-        "C + beta DT^2 K found a zero pivot: the model is singular (check the masses "
-        "and the supports).");
+        "Newmark: the factorisation (" + package +
+            ") of the effective matrix M + gamma DT C + beta DT^2 K found a zero pivot: "
+            "the model is singular (check the masses and the supports).");
   else
   {
     solver->matrix.reinit(m_eff, 0.);
@@ -397,12 +406,12 @@ void Newmark::solve_with_mass(Vector<double> &x, const Vector<double> &b) const
     SparseMatrix<double> mass(system.consistent_mass.get_sparsity_pattern());
     mass.copy_from(system.consistent_mass);
     decouple_fixed_dofs(mass, system.fixed);
-    mass_solver = std::make_unique<DirectSolver>();
+    mass_solver = std::make_unique<DirectSolver>(package);
     mass_solver->factorize(
         mass,
-        "Newmark: the consistent mass matrix is singular (Amesos_Klu "
-        "found a zero pivot): the initial acceleration M A_0 = F_0 - "
-        "C V_0 - K U_0 cannot be computed (a free DoF without mass?).");
+        "Newmark: the consistent mass matrix is singular (" + package +
+            " found a zero pivot): the initial acceleration M A_0 = F_0 - "
+            "C V_0 - K U_0 cannot be computed (a free DoF without mass?).");
   }
   Vector<double> rhs_free(b);
   zero_fixed(rhs_free);
@@ -597,7 +606,7 @@ void Newmark::solve_with_effective_matrix(Vector<double> &x,
                 << e.last_step << " iterations (residual " << e.last_residual
                 << ", target " << tolerance * norm_b
                 << "): the model is singular or badly conditioned (check the "
-                   "supports), or use Linear solver = direct.";
+                   "supports), or use Linear solver = auto.";
         AssertThrow(false, ExcMessage(message.str()));
       }
       catch (const std::exception &)
@@ -606,7 +615,7 @@ void Newmark::solve_with_effective_matrix(Vector<double> &x,
                     ExcMessage("Newmark: CG + AMG broke down on the effective matrix "
                                "(p.M_eff p <= 0): the model is singular (check the "
                                "masses and the supports), or use Linear solver = "
-                               "direct."));
+                               "auto."));
       }
     }
   }

@@ -6,6 +6,7 @@
 #include <hati/model/discrete_system.h>
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace hati
@@ -45,11 +46,11 @@ struct ModalResult
  * row: the eigenproblem `T^T K T q = omega^2 T^T M T q` is solved and the
  * modes are returned as `phi = T q` (they satisfy `L_k phi = 0`).
  *
- * Uses ARPACK (shift-invert Lanczos, one Amesos_Klu factorisation of
- * `K - sigma M`) when its constraint `2 n_modes + 1 < ncv <= n_free` can be
- * met, dense LAPACK (dsygv) on the free DoFs otherwise. Every returned pair
- * satisfies `||K phi - omega^2 M phi|| <= 1e-6 (||K phi|| + omega^2 ||M phi||)`
- * or an exception is thrown.
+ * Uses ARPACK (shift-invert Lanczos, one Amesos_Klu or Amesos_Mumps
+ * factorisation of `K - sigma M`, direct_solver_package()) when its constraint `2 n_modes
+ * + 1 < ncv <= n_free` can be met, dense LAPACK (dsygv) on the free DoFs otherwise. Every
+ * returned pair satisfies `||K phi - omega^2 M phi|| <= 1e-6 (||K phi|| + omega^2 ||M
+ * phi||)` or an exception is thrown.
  *
  * @param system the discrete system (stiffness, mass, fixed DoFs, influence).
  * @param n_modes number of modes wanted (-), at most the number of free DoFs
@@ -59,11 +60,16 @@ struct ModalResult
  * @param rope_state the displacement (m) at which the ropes' tangent
  *        `k e e^T + (T / l)(I - e e^T)` (R1, doc/theory.md 10.4) is added to
  *        K, normally the static state (null: U = 0); no effect without ropes.
+ * @param linear_solver the value of `Time integration/Newmark/Linear
+ *        solver` (auto, KLU, MUMPS, direct or iterative), which chooses the
+ *        factorisation of the shift-invert (direct_solver_package(); with
+ *        iterative, that of auto).
  */
 ModalResult compute_modes(const DiscreteSystem &system,
                           const unsigned int n_modes,
                           const bool close_contacts = true,
-                          const Vector<double> *rope_state = nullptr);
+                          const Vector<double> *rope_state = nullptr,
+                          const std::string &linear_solver = "auto");
 } // namespace hati
 
 #endif

@@ -48,12 +48,16 @@ struct ModalRayleighDamping
  *
  * @param system the discrete system (stiffness, mass, contacts).
  * @param damping_ratio zeta (-), > 0.
+ * @param linear_solver `Time integration/Newmark/Linear solver` (auto, KLU,
+ *        MUMPS, direct or iterative): the factorisation of the modal
+ *        analysis (compute_modes()).
  *
  * Throws ExcMessage naming Time integration/Damping if no vertical or no
  * horizontal mode is found.
  */
 ModalRayleighDamping modal_rayleigh_damping(const DiscreteSystem &system,
-                                            const double damping_ratio);
+                                            const double damping_ratio,
+                                            const std::string &linear_solver = "auto");
 
 /**
  * The default damping of a transient run: if the model's default damping
@@ -68,11 +72,14 @@ ModalRayleighDamping modal_rayleigh_damping(const DiscreteSystem &system,
  * @param zeta the model's default damping ratio (-, Model::default_damping_ratio()).
  * @param system its discrete system, built.
  * @param method Time integration/Method.
+ * @param linear_solver `Time integration/Newmark/Linear solver` (auto, KLU,
+ *        MUMPS, direct or iterative), passed to modal_rayleigh_damping().
  * @param damping the Time integration/Damping of the run, updated.
  */
 SummaryEntries apply_default_damping(const double zeta,
                                      const DiscreteSystem &system,
                                      const std::string &method,
+                                     const std::string &linear_solver,
                                      RayleighDamping &damping);
 } // namespace hati
 

@@ -19,9 +19,12 @@ using namespace dealii;
  * @param system the discrete system (stiffness, external forces, fixed DoFs).
  * @param time time t at which the external force is evaluated (s).
  * @param U the displacement (m, rad); resized to the number of DoFs.
- * @param linear_solver "direct" (Amesos_Klu, followed by up to two steps of
- *        iterative refinement) or "iterative" (CG + ML AMG, relative
- *        residual 1e-12).
+ * @param linear_solver the value of `Time integration/Newmark/Linear solver`:
+ *        "KLU" or "MUMPS" (one factorisation, Amesos_Klu or Amesos_Mumps,
+ *        followed by up to two steps of iterative refinement), "auto" or
+ *        "direct" (KLU below 20,000 DoFs, MUMPS at and above,
+ *        resolve_linear_solver()) or "iterative" (CG + ML AMG, relative
+ *        residual 1e-12); throws naming the entry for any other value.
  * @param constant_loads_only solve under the constant loads only (gravity,
  *        nodal loads), without the time-dependent ones (base excitation):
  *        the equilibrium a transient run starts from.
@@ -32,15 +35,14 @@ using namespace dealii;
  *
  * Contacts with a zero initial gap are closed (doc/theory.md 1.2 with the
  * static limit): the saddle-point problem `[K L_c^T; L_c 0] [U; -lambda] =
- * [F; -g0_c]` on the closed rows `L_c` is factorised with KLU (pivoting, so
- * that a structure supported by its contacts only is solved: then `K` alone
- * may be singular). Two closed rows that are exact opposites (a two-sided
- * contact without clearance) act as one bilateral row. A two-sided contact
- * with a clearance (two opposite rows, the same positive gap) is held at its
- * initial position (`L U = 0`): the play is a mechanism that a static state
- * must not load, so its force must vanish (`|lambda| <= 1e-9` times the
- * largest force or nodal load), otherwise the error names it; its force is
- * reported as 0. Every other closed
+ * [F; -g0_c]` on the closed rows `L_c` is factorised (KLU or MUMPS,
+ * direct_solver_package(); pivoting, so that a structure supported by its
+ * contacts only is solved: then `K` alone may be singular). Two closed rows that are
+ * exact opposites (a two-sided contact without clearance) act as one bilateral row. A
+ * two-sided contact with a clearance (two opposite rows, the same positive gap) is held
+ * at its initial position (`L U = 0`): the play is a mechanism that a static state must
+ * not load, so its force must vanish (`|lambda| <= 1e-9` times the largest force or nodal
+ * load), otherwise the error names it; its force is reported as 0. Every other closed
  * contact must be in compression (`lambda >= -1e-9 max|lambda|`), otherwise
  * the error names it.
  *
@@ -60,7 +62,7 @@ using namespace dealii;
 void solve_static(const DiscreteSystem &system,
                   const double time,
                   Vector<double> &U,
-                  const std::string &linear_solver = "direct",
+                  const std::string &linear_solver = "auto",
                   const bool constant_loads_only = false,
                   std::vector<double> *contact_forces = nullptr);
 } // namespace hati

@@ -12,22 +12,64 @@ namespace hati
 using namespace dealii;
 
 /**
- * A sparse matrix factorised once with Trilinos' Amesos_Klu, then any
- * number of forward/backward substitutions: the effective matrix of Newmark
- * (N2) and the columns `M_eff^-1 C_I^T` of the coupling (G3'), the mass of
- * the initial acceleration, the stiffness of the static analysis and the
+ * Number of DoFs (-) from which `Linear solver = auto` (and `direct`)
+ * factorises with MUMPS instead of KLU.
+ */
+constexpr unsigned int mumps_from_n_dofs = 20000;
+
+/**
+ * The solver that a value of `Time integration/Newmark/Linear solver`
+ * selects for a system of @p n_dofs DoFs: "KLU" (Amesos_Klu), "MUMPS"
+ * (Amesos_Mumps) or "iterative" (CG + ML AMG). `auto` and `direct` (its
+ * name before issue #25) give KLU below mumps_from_n_dofs DoFs and MUMPS
+ * at and above; `KLU`, `MUMPS` and `iterative` give themselves.
+ *
+ * @param linear_solver the entry's value: auto, KLU, MUMPS, direct or iterative.
+ * @param n_dofs number of DoFs of the system solved (-).
+ *
+ * Throws a one-line ExcMessage naming the entry for any other value.
+ */
+std::string resolve_linear_solver(const std::string &linear_solver,
+                                  const unsigned int n_dofs);
+
+/**
+ * The Amesos package, "Amesos_Klu" or "Amesos_Mumps", of the matrices of a
+ * system of @p n_dofs DoFs that are factorised: resolve_linear_solver()'s
+ * choice, and with `iterative` that of `auto`, for the matrices that are
+ * factorised whatever the solver (the consistent mass of the initial
+ * acceleration, the static problem with closed contacts, the shifted
+ * stiffness of the modal analysis).
+ *
+ * @param linear_solver the entry's value: auto, KLU, MUMPS, direct or iterative.
+ * @param n_dofs number of DoFs of the system solved (-).
+ */
+std::string direct_solver_package(const std::string &linear_solver,
+                                  const unsigned int n_dofs);
+
+/**
+ * A sparse matrix factorised once with a Trilinos Amesos package
+ * (Amesos_Klu or Amesos_Mumps, direct_solver_package()), then any number of
+ * forward/backward substitutions: the effective matrix of Newmark (N2) and
+ * the columns `M_eff^-1 C_I^T` of the coupling (G3'), the mass of the
+ * initial acceleration, the stiffness of the static analysis and the
  * shifted stiffness of the modal analysis all go through it.
  */
 class DirectSolver
 {
 public:
-  /** Not copyable: it owns its factorisation (a unique pointer). */
-  DirectSolver();
+  /**
+   * Not copyable: it owns its factorisation (a unique pointer).
+   *
+   * @param package the Amesos package: "Amesos_Klu" or "Amesos_Mumps"
+   *        (throws ExcMessage for any other).
+   */
+  explicit DirectSolver(const std::string &package);
   ~DirectSolver();
 
   /**
    * Copy @p matrix to Trilinos and factorise it. Throws ExcMessage with
-   * @p failure_message if Amesos_Klu finds a zero pivot (a singular matrix).
+   * @p failure_message if the factorisation fails (a zero pivot: a singular
+   * matrix).
    */
   void factorize(const SparseMatrix<double> &matrix, const std::string &failure_message);
 
@@ -40,9 +82,13 @@ public:
   /** Wall time of the last factorize() (s). */
   double factorization_time() const { return seconds; }
 
+  /** The Amesos package: "Amesos_Klu" or "Amesos_Mumps". */
+  const std::string &package() const { return amesos_package; }
+
 private:
   struct Data;
   std::unique_ptr<Data> data;
+  std::string amesos_package;
   std::string failure;
   double seconds = 0.;
 };

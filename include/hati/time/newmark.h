@@ -52,10 +52,12 @@ struct NewmarkParameters
   /** Newmark gamma (-), weight of A_{n+1} in V_{n+1} (N1, N3); >= 1/2. */
   double gamma = 0.5;
   /**
-   * "direct": the effective matrix of N2 is factorised once with
-   * Amesos_Klu; "iterative": CG preconditioned by ML algebraic multigrid.
+   * "KLU" / "MUMPS": the effective matrix of N2 is factorised once with
+   * Amesos_Klu / Amesos_Mumps; "auto" (and "direct", its former name): KLU
+   * below 20,000 DoFs, MUMPS at and above (resolve_linear_solver());
+   * "iterative": CG preconditioned by ML algebraic multigrid.
    */
-  std::string linear_solver = "direct";
+  std::string linear_solver = "auto";
   /** Relative residual of the iterative solver, ||r|| <= tol ||b|| (-). */
   double solver_tolerance = 1e-10;
   /** "consistent" (the model's consistent mass, if it has one) or "lumped". */
@@ -81,8 +83,8 @@ struct NewmarkParameters
  *
  * M is the consistent mass of the system when it has one, else the lumped
  * diagonal. M_eff is assembled once as a Trilinos matrix and factorised once
- * (Amesos_Klu) or handed to CG + ML AMG. Fixed DoFs stay at zero: their rows
- * of M_eff are decoupled and their right-hand sides are set to zero.
+ * (Amesos_Klu or Amesos_Mumps) or handed to CG + ML AMG. Fixed DoFs stay at zero: their
+ * rows of M_eff are decoupled and their right-hand sides are set to zero.
  *
  * The integrator only sees the DiscreteSystem (no model type, no mesh).
  */
@@ -205,6 +207,12 @@ public:
   double factorization_time() const { return factorization_seconds; }
 
   /**
+   * The solver of M_eff, resolved for this system's number of DoFs
+   * (resolve_linear_solver()): "KLU", "MUMPS" or "iterative".
+   */
+  const std::string &linear_solver() const { return solver_name; }
+
+  /**
    * Solve `M_eff x = b` (the matrix of N2) with the existing factorisation
    * (or CG + AMG, @p x being the initial guess), for the explicit/implicit
    * coupling. @p b is a force (N), @p x an acceleration (m/s^2). Rows of
@@ -250,6 +258,9 @@ private:
   const double dt;
   const double beta, gamma;
   const double a0, a1;
+  /** resolve_linear_solver() of the parameters, and the Amesos package of
+   * the factorisations (direct_solver_package()). */
+  const std::string solver_name, package;
   const bool direct;
   const double tolerance;
   const bool use_consistent_mass;
