@@ -83,6 +83,13 @@ bool has_friction(const std::vector<ContactRow> &contacts)
   return false;
 }
 
+unsigned int n_contacts(const std::vector<ContactRow> &contacts)
+{
+  return std::count_if(contacts.begin(),
+                       contacts.end(),
+                       [](const ContactRow &c) { return !c.constraint; });
+}
+
 void check_finite(const DiscreteSystem &system)
 {
   auto finite = [](const SparseMatrix<double> &a)

@@ -59,10 +59,10 @@ Frame::~Frame() = default;
 
 void Frame::select_part(const std::vector<unsigned char> &parts, const int part)
 {
-  AssertThrow(part < 0 || frame.solids.empty(),
-              ExcMessage("Model/Frame/Solids: a frame with solids cannot be decomposed "
-                         "yet (Method = HATI): run it with Newmark, or with CD-Lagrange "
-                         "when it has no ties or rigid links"));
+  AssertThrow(part < 0 || (frame.solids.empty() && frame.solids.rigid_links.empty()),
+              ExcMessage("Model/Frame/Solids, Rigid links: a frame with solids or rigid "
+                         "links cannot be decomposed yet (Method = HATI): run it with "
+                         "Newmark or CD-Lagrange"));
   Model::select_part(parts, part);
 }
 
@@ -223,23 +223,31 @@ void Frame::set_up_constraints(const MeshLayout &layout,
 
 void Frame::add_link_constraints()
 {
+  links.clear();
   for (const auto &l : frame.solids.rigid_links)
+    links.push_back({l.name,
+                     node_dofs.at(l.slave),
+                     rigid_link_rows(node_dofs.at(l.master),
+                                     frame.nodes.at(l.master),
+                                     frame.nodes.at(l.slave))});
+  if (!frame.solids.empty())
   {
-    const auto &slave = node_dofs.at(l.slave);
-    for (unsigned int c = 0; c < 6; ++c)
-      AssertThrow(!constraints.is_constrained(slave[c]),
-                  ExcMessage("Model/Frame/Rigid links: rigid link '" + l.name +
-                             "': node '" + l.slave + "' is already held"));
-    add_constraint_lines(slave,
-                         rigid_link_rows(node_dofs.at(l.master),
-                                         frame.nodes.at(l.master),
-                                         frame.nodes.at(l.slave)),
-                         constraints);
+    solids = std::make_unique<FrameSolids>(frame, n_beam_dofs);
+    solids->add_supports(constraints);
+    for (auto &tie : solids->ties(node_dofs))
+      links.push_back(std::move(tie));
   }
-  if (frame.solids.empty())
-    return;
-  solids = std::make_unique<FrameSolids>(frame, n_beam_dofs);
-  solids->add_constraints(node_dofs, constraints);
+  if (links_as_rows)
+    return; // bilateral rows of the explicit scheme (add_link_rows())
+  for (const auto &link : links)
+  {
+    for (unsigned int c = 0; c < 6; ++c)
+      AssertThrow(!constraints.is_constrained(link.slave[c]),
+                  ExcMessage("Model/Frame/Ties, Rigid links: '" + link.name +
+                             "': its node is already held (a support, a tie or the slave "
+                             "of a rigid link)"));
+    add_constraint_lines(link, constraints);
+  }
 }
 
 std::vector<bool> Frame::excited_members(const CommonModelParameters &common) const
@@ -271,7 +279,10 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
   gravity = common.gravity;
 
   if (triangulation.n_active_cells() == 0)
+  {
+    links_as_rows = common.links_as_rows;
     create_mesh();
+  }
   const unsigned int n = n_beam_dofs + (solids ? solids->n_dofs() : 0);
   system.reinit(n);
 
@@ -304,10 +315,11 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
           "Model/Frame/Solid element degree = 1: linear hexahedra lock in bending (a "
           "plate one element thick gives about 1/3 of its deflection); use 2");
   }
-  if (!frame.solids.ties.empty() || !frame.solids.rigid_links.empty())
+  if (!links.empty() && !links_as_rows)
     system.lumped_mass_refusal =
-        "Model/Frame/Ties, Rigid links: the explicit scheme needs them as bilateral "
-        "rows, which are not implemented yet; use Method = Newmark";
+        "Model/Frame/Ties, Rigid links: eliminated as constraints, which a lumped "
+        "(diagonal) mass cannot carry: use Method = CD-Lagrange (bilateral rows) or "
+        "Newmark with Mass = consistent";
   const std::vector<double> spring = add_springs(system);
   add_point_masses(excited, restricted, system);
   for (const auto &p : frame.point_masses)
@@ -331,6 +343,7 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
 
   add_loads(common, system);
   add_contacts(common, system);
+  add_link_rows(system);
   add_monitors(system);
 }
 
@@ -458,72 +471,6 @@ void Frame::add_loads(const CommonModelParameters &common, DiscreteSystem &syste
       system.constant_force[i] = 0.;
 }
 
-void Frame::add_contacts(const CommonModelParameters &common,
-                         DiscreteSystem &system) const
-{
-  // contacts (doc/theory.md 1.2): g = gap + n . (u_node - u_other), so L has
-  // n on the node's translations and -n on the other node's (none for a rigid
-  // plane); a two-sided contact is two such rows with normals n and -n and
-  // gaps c / 2. A node-to-node contact belongs to the explicit subdomain if
-  // either node touches an explicit cell.
-  for (const auto &c : frame.contacts)
-  {
-    std::vector<unsigned int> contact_cells = node_cells.at(c.node);
-    if (!c.other_node.empty())
-      contact_cells.insert(contact_cells.end(),
-                           node_cells.at(c.other_node).begin(),
-                           node_cells.at(c.other_node).end());
-    if (!owns_node(contact_cells))
-      continue;
-    // two-sided without clearance: one bilateral row; with a clearance: two
-    // opposite rows
-    const bool bilateral = c.two_sided && c.gap == 0.;
-    for (const double side : c.two_sided && !bilateral ? std::vector<double>{1., -1.}
-                                                       : std::vector<double>{1.})
-    {
-      ContactRow row;
-      row.name = c.name;
-      row.bilateral = bilateral;
-      for (unsigned int d = 0; d < 3; ++d)
-        if (c.normal[d] != 0.)
-        {
-          row.dofs.push_back(node_dofs.at(c.node)[d]);
-          row.coefficients.push_back(side * c.normal[d]);
-          if (!c.other_node.empty())
-          {
-            row.dofs.push_back(node_dofs.at(c.other_node)[d]);
-            row.coefficients.push_back(-side * c.normal[d]);
-          }
-        }
-      row.initial_gap = c.two_sided ? 0.5 * c.gap : c.gap;
-      row.restitution = c.restitution >= 0. ? c.restitution : common.restitution;
-      // Coulomb friction (A9): the rows of the tangential relative velocity
-      // t . (u_node - u_other), the same for both sides of a clearance
-      if (c.friction > 0.)
-      {
-        row.friction = c.friction;
-        for (const auto &t : contact_tangent_directions(c.normal, c.rolls))
-        {
-          SparseRow tangent;
-          for (unsigned int d = 0; d < 3; ++d)
-            if (t[d] != 0.)
-            {
-              tangent.dofs.push_back(node_dofs.at(c.node)[d]);
-              tangent.coefficients.push_back(t[d]);
-              if (!c.other_node.empty())
-              {
-                tangent.dofs.push_back(node_dofs.at(c.other_node)[d]);
-                tangent.coefficients.push_back(-t[d]);
-              }
-            }
-          row.tangents.push_back(tangent);
-        }
-      }
-      system.contacts.push_back(row);
-    }
-  }
-}
-
 void Frame::make_pattern(DiscreteSystem &system) const
 {
   const unsigned int n = system.n_dofs();
@@ -593,42 +540,6 @@ double Frame::add_ropes(DiscreteSystem &system) const
   return rope_omega_squared_bound(system.ropes, system.lumped_mass, system.fixed);
 }
 
-void Frame::add_monitors(DiscreteSystem &system) const
-{
-  for (const auto &node : frame.monitor_nodes)
-  {
-    MonitorPoint m;
-    m.name = node;
-    bool eliminated = false;
-    for (unsigned int c = 0; c < 6; ++c)
-    {
-      m.labels.push_back(component_labels[c]);
-      m.dofs.push_back(node_dofs.at(node)[c]);
-      const auto *entries = constraints.get_constraint_entries(m.dofs[c]);
-      eliminated = eliminated || (entries != nullptr && !entries->empty());
-    }
-    // a tied node or the slave of a rigid link: its values from the free DoFs
-    if (eliminated)
-      for (const auto dof : m.dofs)
-      {
-        SparseRow row;
-        const auto *entries = constraints.get_constraint_entries(dof);
-        if (entries == nullptr)
-        {
-          row.dofs.push_back(dof);
-          row.coefficients.push_back(1.);
-        }
-        else
-          for (const auto &[j, a] : *entries)
-          {
-            row.dofs.push_back(j);
-            row.coefficients.push_back(a);
-          }
-        m.rows.push_back(row);
-      }
-    system.monitors.push_back(m);
-  }
-}
 void Frame::write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const
 {
   const auto &[fields, time, cycle] = snapshot;

@@ -40,6 +40,15 @@ std::vector<long long> shape_key(const DoFHandler<3>::active_cell_iterator &cell
   key.push_back(std::llround(std::log(h) * 1e9));
   return key;
 }
+
+/** The index of every solid by name. */
+std::map<std::string, unsigned int> solid_index(const SolidDescription &d)
+{
+  std::map<std::string, unsigned int> index;
+  for (unsigned int k = 0; k < d.solids.size(); ++k)
+    index[d.solids[k].name] = k;
+  return index;
+}
 } // namespace
 
 FrameSolids::FrameSolids(const FrameDescription &frame,
@@ -57,15 +66,11 @@ FrameSolids::FrameSolids(const FrameDescription &frame,
   dof_handler.distribute_dofs(fe);
 }
 
-void FrameSolids::add_constraints(
-    const std::map<std::string, std::array<types::global_dof_index, 6>> &node_dofs,
-    AffineConstraints<double> &constraints) const
+void FrameSolids::add_supports(AffineConstraints<double> &constraints) const
 {
   const double tolerance = 1e-9 * std::max(size(), 1.);
-  std::map<std::string, unsigned int> index;
-  for (unsigned int k = 0; k < frame.solids.solids.size(); ++k)
-    index[frame.solids.solids[k].name] = k;
-  // supports: every translation of the face's DoFs
+  const auto index = solid_index(frame.solids);
+  // every translation of the face's DoFs
   for (const auto &plane : frame.solids.supports)
   {
     const std::string where = "Model/Frame/Solid supports: solid '" + plane.solid + "'";
@@ -82,7 +87,14 @@ void FrameSolids::add_constraints(
       if (!constraints.is_constrained(dof))
         constraints.add_line(dof);
   }
-  // ties (B1): the beam node's six DoFs as functions of the face's DoFs
+}
+
+std::vector<LinkRows> FrameSolids::ties(
+    const std::map<std::string, std::array<types::global_dof_index, 6>> &node_dofs) const
+{
+  const double tolerance = 1e-9 * std::max(size(), 1.);
+  const auto index = solid_index(frame.solids);
+  std::vector<LinkRows> links;
   for (const auto &tie : frame.solids.ties)
   {
     const std::string where = "Model/Frame/Ties: tie '" + tie.name + "'";
@@ -95,14 +107,9 @@ void FrameSolids::add_constraints(
                                           projection,
                                           tolerance,
                                           first_dof);
-    const auto &slave = node_dofs.at(tie.node);
-    for (unsigned int c = 0; c < 6; ++c)
-      AssertThrow(
-          !constraints.is_constrained(slave[c]),
-          ExcMessage(where + ": node '" + tie.node +
-                     "' is already held (a support, a rigid link or another tie)"));
-    add_constraint_lines(slave, tie_rows(face, x, where), constraints);
+    links.push_back({tie.name, node_dofs.at(tie.node), tie_rows(face, x, where)});
   }
+  return links;
 }
 
 void FrameSolids::add_pattern(const AffineConstraints<double> &constraints,

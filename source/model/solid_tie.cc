@@ -112,8 +112,7 @@ FaceMoments face_moments(const DoFHandler<3> &dof_handler,
   return m;
 }
 
-std::array<std::vector<std::pair<types::global_dof_index, double>>, 6>
-tie_rows(const FaceMoments &face, const Point<3> &node, const std::string &where)
+NodeRows tie_rows(const FaceMoments &face, const Point<3> &node, const std::string &where)
 {
   AssertThrow(face.n_faces > 0 && face.area > 0.,
               ExcMessage(where + ": no face of the solid's boundary lies on that plane "
@@ -125,7 +124,7 @@ tie_rows(const FaceMoments &face, const Point<3> &node, const std::string &where
                                  "I_G is singular): it cannot carry a moment"));
   const Tensor<2, 3> J_inverse = invert(face.inertia);
   const Tensor<1, 3> arm = face.centroid - node;
-  std::array<std::vector<std::pair<types::global_dof_index, double>>, 6> rows;
+  NodeRows rows;
   for (unsigned int j = 0; j < face.dofs.size(); ++j)
   {
     Tensor<1, 3> e;
@@ -143,13 +142,12 @@ tie_rows(const FaceMoments &face, const Point<3> &node, const std::string &where
   return rows;
 }
 
-std::array<std::vector<std::pair<types::global_dof_index, double>>, 6>
-rigid_link_rows(const std::array<types::global_dof_index, 6> &master,
-                const Point<3> &x_master,
-                const Point<3> &x_slave)
+NodeRows rigid_link_rows(const std::array<types::global_dof_index, 6> &master,
+                         const Point<3> &x_master,
+                         const Point<3> &x_slave)
 {
   const Tensor<1, 3> d = x_slave - x_master;
-  std::array<std::vector<std::pair<types::global_dof_index, double>>, 6> rows;
+  NodeRows rows;
   for (unsigned int c = 0; c < 3; ++c)
   {
     rows[c].emplace_back(master[c], 1.);
@@ -164,15 +162,38 @@ rigid_link_rows(const std::array<types::global_dof_index, 6> &master,
   return rows;
 }
 
-void add_constraint_lines(
-    const std::array<types::global_dof_index, 6> &slave,
-    const std::array<std::vector<std::pair<types::global_dof_index, double>>, 6> &rows,
-    AffineConstraints<double> &constraints)
+void add_constraint_lines(const LinkRows &link, AffineConstraints<double> &constraints)
 {
   for (unsigned int c = 0; c < 6; ++c)
   {
-    constraints.add_line(slave[c]);
-    constraints.add_entries(slave[c], rows[c]);
+    constraints.add_line(link.slave[c]);
+    constraints.add_entries(link.slave[c], link.rows[c]);
+  }
+}
+
+void add_link_rows(const LinkRows &link,
+                   const std::vector<bool> &fixed,
+                   std::vector<ContactRow> &rows)
+{
+  for (unsigned int c = 0; c < 6; ++c)
+  {
+    ContactRow row;
+    row.name = link.name;
+    row.bilateral = true;
+    row.constraint = true;
+    if (!fixed[link.slave[c]])
+    {
+      row.dofs.push_back(link.slave[c]);
+      row.coefficients.push_back(1.);
+    }
+    for (const auto &[j, a] : link.rows[c])
+      if (!fixed[j])
+      {
+        row.dofs.push_back(j);
+        row.coefficients.push_back(-a);
+      }
+    if (!row.dofs.empty())
+      rows.push_back(row);
   }
 }
 } // namespace hati

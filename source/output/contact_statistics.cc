@@ -41,6 +41,8 @@ ContactStatistics::ContactStatistics(const std::vector<ContactRow> &contacts,
 {
   for (const auto &c : contacts)
   {
+    if (c.constraint) // the rows of ties and rigid links follow the contacts
+      break;
     auto it = std::find_if(
         groups.begin(), groups.end(), [&](const Entry &e) { return e.name == c.name; });
     group_of_row.push_back(it - groups.begin());
@@ -53,13 +55,13 @@ ContactStatistics::ContactStatistics(const std::vector<ContactRow> &contacts,
   group_impulse.assign(groups.size(), 0.);
   // a group of bilateral rows (two-sided without clearance) never separates
   always_closed.assign(groups.size(), 1);
-  for (unsigned int k = 0; k < contacts.size(); ++k)
+  for (unsigned int k = 0; k < group_of_row.size(); ++k)
     if (!contacts[k].bilateral)
       always_closed[group_of_row[k]] = 0;
   pushing.assign(groups.size(), 0);
   pushed_once.assign(groups.size(), 0);
   // touching in the initial state: pushing before the first step
-  for (unsigned int k = 0; k < contacts.size() && k < initial_gaps.size(); ++k)
+  for (unsigned int k = 0; k < group_of_row.size() && k < initial_gaps.size(); ++k)
     if (initial_gaps[k] <= 0.)
       pushing[group_of_row[k]] = pushed_once[group_of_row[k]] = 1;
   initially_closed = pushed_once;
@@ -71,7 +73,7 @@ void ContactStatistics::add_step(const double time,
 {
   ++n_steps;
   std::fill(group_impulse.begin(), group_impulse.end(), 0.);
-  for (unsigned int k = 0; k < impulses.size(); ++k)
+  for (unsigned int k = 0; k < group_of_row.size(); ++k)
   {
     const double l = contacts[k].bilateral ? std::abs(impulses[k]) : impulses[k];
     if (l > 0.)
@@ -166,7 +168,7 @@ void ContactStatistics::add_friction_step(const double time,
   }
   std::fill(group_tangential.begin(), group_tangential.end(), 0.);
   std::fill(group_slip.begin(), group_slip.end(), 0.);
-  for (unsigned int k = 0; k < slip.size(); ++k)
+  for (unsigned int k = 0; k < group_of_row.size(); ++k)
   {
     const unsigned int g = group_of_row[k];
     group_tangential[2 * g] += tangential[2 * k];

@@ -49,6 +49,8 @@ OutputWriter::OutputWriter(RunDirectory &run,
   contacts << '\n';
   for (const auto &c : system.contacts)
   {
+    if (c.constraint) // the rows of ties and rigid links follow the contacts
+      break;
     auto it = std::find(contact_names.begin(), contact_names.end(), c.name);
     contact_group.push_back(it - contact_names.begin());
     if (it == contact_names.end())
@@ -100,7 +102,7 @@ void OutputWriter::write_history(const OutputState &s)
 
 void OutputWriter::write_contacts(const OutputState &s)
 {
-  if (s.gaps.size() != system.contacts.size() || system.contacts.empty())
+  if (s.gaps.size() != system.contacts.size() || contact_group.empty())
     return; // no contact state (implicit or static analyses)
   const unsigned int ng = contact_names.size();
   auto &gap = group_gap, &vn = group_velocity, &imp = group_impulse;
@@ -113,7 +115,7 @@ void OutputWriter::write_contacts(const OutputState &s)
   force.assign(ng, 0.);
   n_rows.assign(ng, 0);
   n_active.assign(ng, 0);
-  for (unsigned int k = 0; k < s.gaps.size(); ++k)
+  for (unsigned int k = 0; k < contact_group.size(); ++k)
   {
     const unsigned int g = contact_group[k];
     gap[g] = std::min(gap[g], s.gaps[k]);
@@ -158,7 +160,7 @@ void OutputWriter::group_friction(const OutputState &s)
   group_tangential.assign(2 * ng, 0.);
   group_slip.assign(ng, 0.);
   group_state.assign(ng, FrictionState::open);
-  for (unsigned int k = 0; k < s.gaps.size(); ++k)
+  for (unsigned int k = 0; k < contact_group.size(); ++k)
   {
     const unsigned int g = contact_group[k];
     group_tangential[2 * g] += s.tangential_impulses[2 * k];
@@ -183,7 +185,7 @@ void OutputWriter::track_contacts(const std::vector<double> &gaps,
 {
   // called after every step: no allocation here
   std::fill(group_pushing.begin(), group_pushing.end(), false);
-  for (unsigned int k = 0; k < gaps.size(); ++k)
+  for (unsigned int k = 0; k < contact_group.size(); ++k)
   {
     penetration = std::max(penetration, -gaps[k]);
     if (impulses[k] > 0.)

@@ -66,6 +66,10 @@ Problem::Problem(ParameterHandler &prm, const ConditionalOStream &out) : out(out
   prm.leave_subsection();
   output_parameters.parse_parameters(prm);
   common_parameters.parse_parameters(prm);
+  // the explicit scheme enforces ties and rigid links as bilateral rows; the
+  // other analyses eliminate them (doc/theory.md 11.2)
+  common_parameters.links_as_rows =
+      analysis_parameters.type == "transient" && time_parameters.method == "CD-Lagrange";
   model = create_model(prm);
 }
 
@@ -74,12 +78,14 @@ void Problem::build_system()
   model->build(common_parameters, system);
   for (const auto &w : system.warnings)
     warn(w);
-  AssertThrow(system.lumped_mass_refusal.empty() ||
-                  !(analysis_parameters.type == "transient" &&
-                    time_parameters.method == "Newmark" &&
-                    newmark_parameters.mass == "lumped"),
-              ExcMessage(system.lumped_mass_refusal +
-                         " (Time integration/Newmark/Mass = lumped; use consistent)"));
+  AssertThrow(
+      system.lumped_mass_refusal.empty() || !(analysis_parameters.type == "transient" &&
+                                              ((time_parameters.method == "Newmark" &&
+                                                newmark_parameters.mass == "lumped") ||
+                                               time_parameters.method == "event-driven")),
+      ExcMessage(
+          system.lumped_mass_refusal +
+          " (Time integration/Method = event-driven, or Newmark with Mass = lumped)"));
   check_finite(system);
   system.fill_default_mass_influence();
 }
@@ -349,7 +355,7 @@ SummaryValue Problem::report_static_contact_forces(const std::vector<double> &fo
   std::vector<double> sums;
   for (unsigned int k = 0; k < system.contacts.size() && k < forces.size(); ++k)
   {
-    if (system.contacts[k].initial_gap != 0.)
+    if (system.contacts[k].initial_gap != 0. || system.contacts[k].constraint)
       continue;
     const auto it = std::find(names.begin(), names.end(), system.contacts[k].name);
     if (it == names.end())

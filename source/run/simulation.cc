@@ -40,7 +40,7 @@ void Simulation::run()
   std::cout << "hati: " << parameter_file
             << "\n  model: " << problem->model->description()
             << "\n  DoFs: " << problem->system.n_dofs()
-            << ", contacts: " << problem->system.contacts.size()
+            << ", contacts: " << n_contacts(problem->system.contacts)
             << "\n  output: " << output_directory << "/" << std::endl;
   problem->add_loads();
   analysis_registry()

@@ -364,12 +364,14 @@ template <class Integrator> void TimeLoop<Integrator>::run(TimerOutput &timer)
   const double output_before = output_clock.seconds();
   const WallClock::Scope loop(loop_clock);
   TimerOutput::Scope scope(timer, "time stepping");
+  // the constraint rows of ties and rigid links are not contacts
+  const bool has_contacts = n_contacts(system.contacts) > 0;
   for (unsigned long step = 1; step <= n_steps; ++step)
   {
     integrator.step();
     steps_done = step;
     if constexpr (explicit_scheme)
-      if (!system.contacts.empty())
+      if (has_contacts)
       {
         const WallClock::Scope scope(statistics_clock);
         writer.track_contacts(integrator.gaps(), integrator.impulses());
@@ -437,7 +439,7 @@ void TimeLoop<Integrator>::add_coupling_summary(SummaryEntries &summary) const
 template <class Integrator>
 void TimeLoop<Integrator>::add_contact_summary(SummaryEntries &summary)
 {
-  if (system.contacts.empty())
+  if (n_contacts(system.contacts) == 0)
     return;
   if constexpr (!std::is_same_v<Integrator, Newmark>)
     summary.emplace_back("wall_time_contacts", integrator.contact_seconds());
@@ -513,7 +515,7 @@ void TimeLoop<Integrator>::finish(TimerOutput &timer, SummaryEntries summary)
       summary.end(),
       {{"model", problem.model->description()},
        {"n_dofs", system.n_dofs()},
-       {"n_contacts", system.contacts.size()},
+       {"n_contacts", n_contacts(system.contacts)},
        {"dt", dt},
        {"end_time", integrator.time()},
        {"n_steps", steps_done},
@@ -538,7 +540,7 @@ void TimeLoop<Integrator>::finish(TimerOutput &timer, SummaryEntries summary)
   write_summary(directory.path() + "/summary.json", summary, problem.warnings);
   std::cout << "  done: " << steps_done << " steps in " << wall << " s (output "
             << output_clock.seconds() << " s in " << output_clock.calls() << " calls); ";
-  if (!system.contacts.empty())
+  if (n_contacts(system.contacts) > 0)
     std::cout << "impacts: " << writer.n_impacts()
               << ", max penetration: " << writer.max_penetration() << " m, ";
   std::cout << "energy balance error: " << drift << " J ("

@@ -52,7 +52,18 @@ struct ContactRow : SparseRow
   std::vector<SparseRow> tangents;
   /** Whether the contact has friction (mu > 0 and a tangent row). */
   bool frictional() const { return friction > 0. && !tangents.empty(); }
+  /**
+   * An equality of a tie or a rigid link (B1, doc/theory.md 11.2) enforced
+   * by the explicit scheme: bilateral, gap 0, restitution 0, so that
+   * `L V = 0` after every step. Not a contact: contacts.csv, the contact
+   * statistics, the contact counts and the static contact forces leave it
+   * out. The model appends these rows after its contacts.
+   */
+  bool constraint = false;
 };
+
+/** The number of rows of @p contacts that are contacts (not constraint rows). */
+unsigned int n_contacts(const std::vector<ContactRow> &contacts);
 
 /**
  * Gaps up to this (m) count as closed in the active set of CD-Lagrange (A4,

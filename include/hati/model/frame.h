@@ -10,6 +10,7 @@
 #include <hati/model/frame_element.h>
 #include <hati/model/frame_section_forces.h>
 #include <hati/model/model.h>
+#include <hati/model/solid_tie.h>
 
 #include <map>
 #include <memory>
@@ -114,8 +115,13 @@ private:
                         DiscreteSystem &system) const;
   /** Rigid translations, gravity and nodal loads (the system's DoFs fixed first). */
   void add_loads(const CommonModelParameters &common, DiscreteSystem &system) const;
-  /** The contact rows of the contacts owned by the part built. */
+  /** The contact rows of the contacts owned by the part built (frame_rows.cc). */
   void add_contacts(const CommonModelParameters &common, DiscreteSystem &system) const;
+  /**
+   * With links_as_rows, the ties and rigid links as bilateral constraint
+   * rows after the contacts (frame_rows.cc).
+   */
+  void add_link_rows(DiscreteSystem &system) const;
   /** The monitor points of history.csv. */
   void add_monitors(DiscreteSystem &system) const;
   /**
@@ -158,6 +164,13 @@ private:
   types::global_dof_index n_beam_dofs = 0;
   /** The 3D solids (frame_solids.h), null without. */
   std::unique_ptr<FrameSolids> solids;
+  /** The ties and rigid links: the six DoFs of a node as functions of others. */
+  std::vector<LinkRows> links;
+  /**
+   * CommonModelParameters::links_as_rows of the first build(): the links as
+   * bilateral rows (explicit scheme) instead of constraints.
+   */
+  bool links_as_rows = false;
   double total_mass = 0.;
   /** Gravity (m/s^2): the members' weight is a span load for section forces. */
   Tensor<1, 3> gravity;

@@ -9,6 +9,7 @@
 
 #include <hati/model/discrete_system.h>
 #include <hati/model/frame_description.h>
+#include <hati/model/solid_tie.h>
 
 #include <array>
 #include <map>
@@ -43,14 +44,20 @@ public:
   types::global_dof_index offset() const { return first_dof; }
 
   /**
-   * The supports of solid faces (every translation fixed) and the ties of
-   * beam nodes (B1: the node's six DoFs @p node_dofs as functions of the
-   * face DoFs) into @p constraints, before it is closed. Throws one-line
-   * errors naming the entry for a face with no solid node.
+   * The supports of solid faces (every translation fixed) into
+   * @p constraints, before it is closed. Throws a one-line error naming the
+   * entry for a face with no solid node.
    */
-  void add_constraints(
-      const std::map<std::string, std::array<types::global_dof_index, 6>> &node_dofs,
-      AffineConstraints<double> &constraints) const;
+  void add_supports(AffineConstraints<double> &constraints) const;
+
+  /**
+   * The ties of beam nodes (B1): each node's six DoFs (@p node_dofs) as
+   * functions of its face's DoFs. Throws one-line errors naming the tie for
+   * a face with no solid node or a face that is a line.
+   */
+  std::vector<LinkRows>
+  ties(const std::map<std::string, std::array<types::global_dof_index, 6>> &node_dofs)
+      const;
 
   /** The couplings of the solid cells, condensed with @p constraints. */
   void add_pattern(const AffineConstraints<double> &constraints,

@@ -51,6 +51,13 @@ struct CommonModelParameters
   double restitution = 0.;
   /** Initial gap between the body and the obstacle (m). */
   double initial_gap = 0.;
+  /**
+   * Not a parameter: set by Problem for the explicit scheme (CD-Lagrange).
+   * True: ties and rigid links are bilateral constraint rows
+   * (ContactRow::constraint) and the tied DoFs stay free; false: they are
+   * eliminated as affine constraints (static, modal, Newmark).
+   */
+  bool links_as_rows = false;
 };
 
 /**

@@ -7,6 +7,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <hati/model/discrete_system.h>
 #include <hati/model/solid_description.h>
 
 #include <array>
@@ -18,6 +19,19 @@
 namespace hati
 {
 using namespace dealii;
+
+/** Six rows, one per DoF of a node: DoF c `= sum_j rows[c][j].second
+ * u_{rows[c][j].first}`. */
+using NodeRows = std::array<std::vector<std::pair<types::global_dof_index, double>>, 6>;
+
+/** The six DoFs of a node (a tied node, a slave) as functions of other DoFs. */
+struct LinkRows
+{
+  /** The tie's or the rigid link's name. */
+  std::string name;
+  std::array<types::global_dof_index, 6> slave;
+  NodeRows rows;
+};
 
 /**
  * The area moments of a face of a solid's boundary (spec B1, doc/theory.md
@@ -64,26 +78,31 @@ FaceMoments face_moments(const DoFHandler<3> &dof_handler,
  * `U_P = U_G - theta x (G - P)`. Throws a one-line error starting with
  * @p where if the face has no area or is a line (I_G singular).
  */
-std::array<std::vector<std::pair<types::global_dof_index, double>>, 6>
+NodeRows
 tie_rows(const FaceMoments &face, const Point<3> &node, const std::string &where);
 
 /**
  * The rows of a rigid link: slave DoF c `= sum rows[c]` of the master's
  * DoFs, `u_s = u_m + theta_m x (x_s - x_m)`, `theta_s = theta_m`.
  */
-std::array<std::vector<std::pair<types::global_dof_index, double>>, 6>
-rigid_link_rows(const std::array<types::global_dof_index, 6> &master,
-                const Point<3> &x_master,
-                const Point<3> &x_slave);
+NodeRows rigid_link_rows(const std::array<types::global_dof_index, 6> &master,
+                         const Point<3> &x_master,
+                         const Point<3> &x_slave);
 
 /**
- * Add the six lines `slave[c] = rows[c]` to @p constraints (slave DoFs not
- * yet constrained).
+ * Add the six lines `slave[c] = rows[c]` of @p link to @p constraints (slave
+ * DoFs not yet constrained).
  */
-void add_constraint_lines(
-    const std::array<types::global_dof_index, 6> &slave,
-    const std::array<std::vector<std::pair<types::global_dof_index, double>>, 6> &rows,
-    AffineConstraints<double> &constraints);
+void add_constraint_lines(const LinkRows &link, AffineConstraints<double> &constraints);
+
+/**
+ * The six bilateral constraint rows `slave_c - sum rows[c] = 0` of @p link
+ * (ContactRow::constraint, named after the link) appended to @p rows; the
+ * DoFs flagged in @p fixed (supported) are left out of them.
+ */
+void add_link_rows(const LinkRows &link,
+                   const std::vector<bool> &fixed,
+                   std::vector<ContactRow> &rows);
 } // namespace hati
 
 #endif
