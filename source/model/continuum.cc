@@ -390,9 +390,9 @@ void Continuum<dim>::build(const CommonModelParameters &common, DiscreteSystem &
   const std::vector<std::string> labels(axes.begin(), axes.begin() + dim);
   using Dofs = std::vector<types::global_dof_index>;
   system.monitors.push_back(
-      {"impact_end", labels, Dofs(ends.right.begin(), ends.right.end())});
+      {"impact_end", labels, Dofs(ends.right.begin(), ends.right.end()), {}});
   system.monitors.push_back(
-      {"free_end", labels, Dofs(ends.left.begin(), ends.left.end())});
+      {"free_end", labels, Dofs(ends.left.begin(), ends.left.end()), {}});
 }
 
 template <int dim>

@@ -16,6 +16,47 @@ std::string rope_message(const std::string &name)
          "integrator: put its hook point in the Explicit region or the Explicit "
          "members";
 }
+
+/**
+ * The rows @p links (whole numbering) split into their explicit and implicit
+ * parts: the explicit part must be one DoF of the explicit subdomain with
+ * coefficient 1, every other entry a DoF of the implicit one (G3'', doc/theory.md 11.3).
+ */
+void add_link_rows(const std::vector<SparseRow> &links, Decomposition &decomposition)
+{
+  const auto &e = decomposition.parts[0].global_dofs,
+             &i = decomposition.parts[1].global_dofs;
+  for (const SparseRow &link : links)
+  {
+    SparseRow row_E, row_I;
+    for (unsigned int k = 0; k < link.dofs.size(); ++k)
+    {
+      const auto in_E = std::lower_bound(e.begin(), e.end(), link.dofs[k]);
+      const auto in_I = std::lower_bound(i.begin(), i.end(), link.dofs[k]);
+      if (k == 0 && in_E != e.end() && *in_E == link.dofs[k])
+      {
+        row_E.dofs.push_back(in_E - e.begin());
+        row_E.coefficients.push_back(link.coefficients[k]);
+      }
+      else if (k > 0 && in_I != i.end() && *in_I == link.dofs[k])
+      {
+        row_I.dofs.push_back(in_I - i.begin());
+        row_I.coefficients.push_back(link.coefficients[k]);
+      }
+    }
+    AssertThrow(row_E.dofs.size() == 1 && row_E.coefficients[0] == 1.,
+                ExcMessage("Model/Decomposition: a tie across the interface must have "
+                           "its beam node in the explicit subdomain and its solid in "
+                           "the implicit one"));
+    for (const SparseRow &other : decomposition.rows[0])
+      AssertThrow(other.dofs[0] != row_E.dofs[0],
+                  ExcMessage("Model/Decomposition: a tied node joins members of both "
+                             "subdomains: put all the members at a tied node on one "
+                             "side"));
+    decomposition.rows[0].push_back(row_E);
+    decomposition.rows[1].push_back(row_I);
+  }
+}
 } // namespace
 
 void extract_subsystem(const DiscreteSystem &full,
@@ -180,13 +221,22 @@ void decompose(Model &model,
     AssertThrow(p == 0 || part.system.ropes.empty(),
                 ExcMessage(rope_message(part.system.ropes[0].name)));
   }
+  // the rows of the model's links across (G3''), in the whole numbering
+  const std::vector<SparseRow> links = model.interface_rows();
   model.select_part(cell_parts, -1);
 
-  auto &interface = decomposition.interface;
-  interface[0].clear();
-  interface[1].clear();
+  auto &rows = decomposition.rows;
+  rows[0].clear();
+  rows[1].clear();
   const auto &e = decomposition.parts[0].global_dofs,
              &i = decomposition.parts[1].global_dofs;
+  auto pair_row = [](const unsigned int dof, const double coefficient)
+  {
+    SparseRow row;
+    row.dofs = {dof};
+    row.coefficients = {coefficient};
+    return row;
+  };
   for (unsigned int a = 0, b = 0; a < e.size() && b < i.size();)
     if (e[a] < i[b])
       ++a;
@@ -194,10 +244,11 @@ void decompose(Model &model,
       ++b;
     else
     {
-      interface[0].push_back(a++);
-      interface[1].push_back(b++);
+      rows[0].push_back(pair_row(a++, 1.));
+      rows[1].push_back(pair_row(b++, -1.));
     }
-  AssertThrow(!interface[0].empty(),
+  add_link_rows(links, decomposition);
+  AssertThrow(!rows[0].empty(),
               ExcMessage("Model/Decomposition: the explicit and implicit subdomains "
                          "share no node (no interface): the coupling needs them to "
                          "touch"));

@@ -59,11 +59,68 @@ Frame::~Frame() = default;
 
 void Frame::select_part(const std::vector<unsigned char> &parts, const int part)
 {
-  AssertThrow(part < 0 || (frame.solids.empty() && frame.solids.rigid_links.empty()),
-              ExcMessage("Model/Frame/Solids, Rigid links: a frame with solids or rigid "
-                         "links cannot be decomposed yet (Method = HATI): run it with "
-                         "Newmark or CD-Lagrange"));
+  AssertThrow(part < 0 || frame.solids.rigid_links.empty(),
+              ExcMessage("Model/Frame/Rigid links: a frame with rigid links cannot be "
+                         "decomposed yet (Method = HATI): run it with Newmark or "
+                         "CD-Lagrange"));
   Model::select_part(parts, part);
+  // the ties whose node is explicit cross the interface (interface_rows())
+  if (!links.empty() && triangulation.n_active_cells() > 0)
+    close_constraints();
+}
+
+bool Frame::node_explicit(const std::string &node) const
+{
+  if (parts.empty())
+    return false;
+  for (const unsigned int c : node_cells.at(node))
+    if (parts[c] == 0)
+      return true;
+  return false;
+}
+
+void Frame::close_constraints()
+{
+  constraints.clear();
+  constraints.copy_from(open_constraints);
+  for (unsigned int k = 0; k < links.size(); ++k)
+  {
+    // bilateral rows of the explicit scheme (add_link_rows()); across the
+    // interface of a decomposed model (interface_rows()); eliminated otherwise
+    if (links_as_rows || (selected_part >= 0 && node_explicit(link_nodes[k])))
+      continue;
+    for (unsigned int c = 0; c < 6; ++c)
+      AssertThrow(!constraints.is_constrained(links[k].slave[c]),
+                  ExcMessage("Model/Frame/Ties, Rigid links: '" + links[k].name +
+                             "': its node is already held (a support, a tie or the slave "
+                             "of a rigid link)"));
+    add_constraint_lines(links[k], constraints);
+  }
+  constraints.close();
+}
+
+std::vector<SparseRow> Frame::interface_rows() const
+{
+  // a tie of an explicit node to the (implicit) solid: U_P - R u_face = 0
+  std::vector<SparseRow> rows;
+  if (parts.empty())
+    return rows;
+  for (unsigned int k = 0; k < links.size(); ++k)
+    if (node_explicit(link_nodes[k]))
+      for (unsigned int c = 0; c < 6; ++c)
+      {
+        SparseRow row;
+        row.dofs.push_back(links[k].slave[c]);
+        row.coefficients.push_back(1.);
+        for (const auto &[j, a] : links[k].rows[c])
+          if (!constraints.is_constrained(j))
+          {
+            row.dofs.push_back(j);
+            row.coefficients.push_back(-a);
+          }
+        rows.push_back(row);
+      }
+  return rows;
 }
 
 void Frame::create_mesh()
@@ -206,7 +263,7 @@ void Frame::set_up_constraints(const MeshLayout &layout,
   n_mesh_dofs = dof_handler.n_dofs();
   n_beam_dofs = n_mesh_dofs + 6 * frame.rope_only_nodes().size();
   add_link_constraints();
-  constraints.close();
+  close_constraints();
   types::global_dof_index next = n_mesh_dofs;
   for (const auto &node : frame.rope_only_nodes())
   {
@@ -224,30 +281,28 @@ void Frame::set_up_constraints(const MeshLayout &layout,
 void Frame::add_link_constraints()
 {
   links.clear();
+  link_nodes.clear();
   for (const auto &l : frame.solids.rigid_links)
+  {
     links.push_back({l.name,
                      node_dofs.at(l.slave),
                      rigid_link_rows(node_dofs.at(l.master),
                                      frame.nodes.at(l.master),
                                      frame.nodes.at(l.slave))});
+    link_nodes.push_back(l.slave);
+  }
   if (!frame.solids.empty())
   {
     solids = std::make_unique<FrameSolids>(frame, n_beam_dofs);
     solids->add_supports(constraints);
     for (auto &tie : solids->ties(node_dofs))
       links.push_back(std::move(tie));
+    for (const auto &tie : frame.solids.ties)
+      link_nodes.push_back(tie.node);
   }
-  if (links_as_rows)
-    return; // bilateral rows of the explicit scheme (add_link_rows())
-  for (const auto &link : links)
-  {
-    for (unsigned int c = 0; c < 6; ++c)
-      AssertThrow(!constraints.is_constrained(link.slave[c]),
-                  ExcMessage("Model/Frame/Ties, Rigid links: '" + link.name +
-                             "': its node is already held (a support, a tie or the slave "
-                             "of a rigid link)"));
-    add_constraint_lines(link, constraints);
-  }
+  // the joints and supports; the links are added per subdomain (close_constraints())
+  open_constraints.clear();
+  open_constraints.copy_from(constraints);
 }
 
 std::vector<bool> Frame::excited_members(const CommonModelParameters &common) const
@@ -309,7 +364,8 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
     AssertThrow(!restricted,
                 ExcMessage("Loading/Excited members: not available for a frame with "
                            "solids (the whole model is excited)"));
-    solids->assemble(constraints, system, omega2, mass);
+    if (selected_part != 0) // the solids are implicit in a decomposed model
+      solids->assemble(constraints, system, omega2, mass);
     if (frame.solids.degree == 1)
       system.warnings.push_back(
           "Model/Frame/Solid element degree = 1: linear hexahedra lock in bending (a "

@@ -52,7 +52,7 @@ void PointMass::build(const CommonModelParameters &common, DiscreteSystem &syste
   ground.restitution = common.restitution;
   system.contacts.push_back(ground);
 
-  system.monitors.push_back({"ball", {"x", "y", "z"}, {0, 1, 2}});
+  system.monitors.push_back({"ball", {"x", "y", "z"}, {0, 1, 2}, {}});
 }
 
 void PointMass::write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const

@@ -26,18 +26,13 @@ InterfaceProblem::InterfaceProblem(const Decomposition &decomposition,
                                    const double gamma)
     : decomposition(decomposition)
 {
+  // (G3'') C_E one DoF per row with coefficient 1 (Decomposition), C_I
+  // general
   const unsigned int n_gamma = decomposition.n_interface_dofs();
-  for (unsigned int k = 0; k < n_gamma; ++k)
-  {
-    SparseRow e, i;
-    e.dofs = {decomposition.interface[0][k]};
-    e.coefficients = {1.};
-    i.dofs = {decomposition.interface[1][k]};
-    i.coefficients = {-1.};
-    rows_E.push_back(e);
-    rows_I.push_back(i);
-  }
-  dofs_E = decomposition.interface[0];
+  rows_E = decomposition.rows[0];
+  rows_I = decomposition.rows[1];
+  for (const SparseRow &row : rows_E)
+    dofs_E.push_back(row.dofs[0]);
   for (auto *v : {&free_jump, &implicit_guess, &solve_work, &u_old, &implicit_part})
     v->reinit(n_gamma);
   const unsigned int n_I = decomposition.parts[1].system.n_dofs();

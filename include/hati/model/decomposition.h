@@ -26,19 +26,22 @@ struct Subdomain
  * subsets of the model's one DoFHandler, each assembled from its own cells
  * only (Model::select_part()), so an interface DoF, a free DoF touched by
  * cells of both sides, has a copy on each side holding that side's share of
- * mass and stiffness. Interface pair k is the DoF interface[0][k] of the
- * explicit subdomain and interface[1][k] of the implicit one: the signed
- * Boolean operators are `C_E = +1` and `C_I = -1` on these DoFs.
+ * mass and stiffness. Interface row k is `rows[0][k] U^E + rows[1][k] U^I =
+ * 0` in the subdomains' numberings (G3'', doc/theory.md 11.3): for a shared
+ * DoF the signed Boolean rows `C_E = +1`, `C_I = -1`; for a beam node of the
+ * explicit side tied to a solid face of the implicit side (Model::
+ * interface_rows()) `+1` on the node's DoF and minus the B1 row on the face
+ * DoFs. The explicit row is always one DoF with coefficient 1.
  */
 struct Decomposition
 {
   std::array<Subdomain, 2> parts;
-  std::array<std::vector<unsigned int>, 2> interface;
+  std::array<std::vector<SparseRow>, 2> rows;
   /** Subdomain (0, 1) of every active cell of the model. */
   std::vector<unsigned char> cell_parts;
 
-  /** Number of interface DoF pairs. */
-  unsigned int n_interface_dofs() const { return interface[0].size(); }
+  /** Number of interface rows. */
+  unsigned int n_interface_dofs() const { return rows[0].size(); }
 };
 
 /**

@@ -70,10 +70,17 @@ public:
                             const double time,
                             const Vector<double> &U) const override;
   /**
-   * Model::select_part(); a decomposition of a frame with solids is refused
-   * (not yet: doc/user_guide.md "Solids and ties").
+   * Model::select_part(), and the ties eliminated in it: those of an
+   * implicit node (a tie of an explicit node crosses the interface,
+   * interface_rows()); the solids are implicit. A decomposition of a frame
+   * with rigid links is refused (not yet).
    */
   void select_part(const std::vector<unsigned char> &parts, const int part) override;
+  /**
+   * The ties of the explicit nodes to the implicit solids as interface rows
+   * `U_P,c - sum_j R_cj u_j = 0` (G3'', doc/theory.md 11.3), whole numbering.
+   */
+  std::vector<SparseRow> interface_rows() const override;
   /** The solids of the frame (null if it has none). */
   const FrameSolids *solid_part() const { return solids.get(); }
 
@@ -140,8 +147,15 @@ private:
     return constraints.is_constrained(i) ||
            (i >= n_mesh_dofs && i < n_beam_dofs && (i - n_mesh_dofs) % 6 >= 3);
   }
-  /** The ties, solid supports and rigid links as constraint lines (before close()). */
+  /** The solids, their supports, and the rows of the ties and rigid links (links). */
   void add_link_constraints();
+  /**
+   * constraints: the joints and supports (open_constraints) and the links
+   * eliminated in the current part, closed.
+   */
+  void close_constraints();
+  /** Whether @p node touches an explicit cell of the current parts. */
+  bool node_explicit(const std::string &node) const;
 
   const FrameDescription frame;
   Triangulation<1, 3> triangulation;
@@ -166,6 +180,10 @@ private:
   std::unique_ptr<FrameSolids> solids;
   /** The ties and rigid links: the six DoFs of a node as functions of others. */
   std::vector<LinkRows> links;
+  /** The node (tied, or slave) of each link. */
+  std::vector<std::string> link_nodes;
+  /** The joints and supports, before the links are added and it is closed. */
+  AffineConstraints<double> open_constraints;
   /**
    * CommonModelParameters::links_as_rows of the first build(): the links as
    * bilateral rows (explicit scheme) instead of constraints.

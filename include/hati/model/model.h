@@ -182,6 +182,15 @@ public:
    */
   virtual void select_part(const std::vector<unsigned char> &parts, const int part);
 
+  /**
+   * Interface rows other than shared DoFs (G3'', doc/theory.md 11.3): rows
+   * `C U = 0` of the whole model's numbering whose DoFs lie in both
+   * subdomains of the parts given to select_part(), e.g. a beam node of the
+   * explicit side tied to a solid face of the implicit side (+1 on the node's
+   * DoF, minus the B1 row on the face's). None by default.
+   */
+  virtual std::vector<SparseRow> interface_rows() const { return {}; }
+
   /** One line describing the model for the terminal and summary.json. */
   virtual std::string description() const = 0;
 

@@ -51,7 +51,8 @@ struct HATIParameters
  * Newmark with the macro step DT = m dt, glued at the interface DoFs by
  * Lagrange multipliers Lambda (interface forces, acting as `C_E^T Lambda`
  * on the explicit side and `C_I^T Lambda` on the implicit side, with
- * `C_E = +1`, `C_I = -1` on the interface DoF pairs).
+ * `C_E = +1`, `C_I = -1` on the interface DoF pairs, or the general rows of
+ * a tie across, G3'', doc/theory.md 11.3).
  *
  * One macro step [t_n, t_{n+m}] (step()) with the interface problem (G3'),
  * the multiplier linear in time over the macro step:

@@ -20,7 +20,9 @@ using namespace dealii;
  * The interface problem of the HATI coupling (doc/theory.md 9.1-9.5,
  * G3'-G4): the Lagrange multipliers Lambda (interface forces, N) act as
  * `C_E^T Lambda` on the explicit subdomain and `C_I^T Lambda` on the
- * implicit one, `C_E = +1`, `C_I = -1` on the DoFs of each interface pair.
+ * implicit one, the rows of Decomposition::rows: `C_E = +1`, `C_I = -1` on
+ * the DoFs of each interface pair, `C_E = +1` on a tied beam node's DoF and
+ * `C_I` minus its B1 row on the solid face (G3'', doc/theory.md 11.3).
  *
  * It owns what does not depend on the explicit response: the rows C_E,
  * C_I, the implicit part of the interface matrix
