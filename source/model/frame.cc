@@ -684,13 +684,6 @@ void Frame::write_section_forces(std::ostream *out,
   section_force_output.write(out, time, u, cells, gravity);
 }
 
-SummaryEntries Frame::summary_entries(const std::map<std::string, double> &) const
-{
-  return section_force_output.summary_entries();
-}
-
-std::string Frame::results_table() const { return section_force_output.results_table(); }
-
 DofDescription Frame::describe_dof(const types::global_dof_index dof) const
 {
   static const char *const components[6] = {"ux", "uy", "uz", "rx", "ry", "rz"};

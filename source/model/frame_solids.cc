@@ -6,6 +6,7 @@
 
 #include <hati/model/frame_solids.h>
 #include <hati/model/solid_mesh.h>
+#include <hati/model/solid_stress_output.h>
 #include <hati/model/solid_tie.h>
 
 #include <cmath>
@@ -64,7 +65,10 @@ FrameSolids::FrameSolids(const FrameDescription &frame,
   create_solid_mesh(frame.solids, triangulation);
   dof_handler.reinit(triangulation);
   dof_handler.distribute_dofs(fe);
+  output = std::make_unique<SolidStressOutput>(*this);
 }
+
+FrameSolids::~FrameSolids() = default;
 
 void FrameSolids::add_supports(AffineConstraints<double> &constraints) const
 {
@@ -228,7 +232,6 @@ void FrameSolids::stresses(const Vector<double> &U,
   points.clear();
   for (const auto &cell : dof_handler.active_cell_iterators())
   {
-    const Material &m = materials[cell->material_id()];
     values.reinit(cell);
     global_dofs(cell, first_dof, dofs);
     for (unsigned int q = 0; q < quadrature.size(); ++q)
@@ -237,9 +240,7 @@ void FrameSolids::stresses(const Vector<double> &U,
       for (unsigned int i = 0; i < n; ++i)
         grad[fe.system_to_component_index(i).first] +=
             U[dofs[i]] * values.shape_grad(i, q);
-      const SymmetricTensor<2, 3> strain = symmetrize(grad);
-      stress.push_back(m.lambda * trace(strain) * unit_symmetric_tensor<3>() +
-                       2. * m.mu * strain);
+      stress.push_back(this->stress(cell->material_id(), symmetrize(grad)));
       points.push_back(values.quadrature_point(q));
     }
   }

@@ -19,6 +19,14 @@ namespace
 constexpr double flush_interval = 2.;
 /** ... and when their buffers hold this many bytes. */
 constexpr std::size_t flush_size = 1 << 20;
+
+/** The file of snapshot @p cycle of the VTU series @p series: `<series>-NNNNN.vtu`. */
+std::string snapshot_name(const std::string &series, const unsigned int cycle)
+{
+  char number[32];
+  std::snprintf(number, sizeof(number), "-%05u.vtu", cycle);
+  return series + number;
+}
 } // namespace
 
 OutputWriter::OutputWriter(RunDirectory &run,
@@ -26,7 +34,8 @@ OutputWriter::OutputWriter(RunDirectory &run,
                            const Model &model)
     : run(run), dir(run.path()), system(system), model(model),
       friction(has_friction(system.contacts)),
-      last_flush(std::chrono::steady_clock::now()), last_pvd_sync(last_flush)
+      last_flush(std::chrono::steady_clock::now()), last_pvd_sync(last_flush),
+      series(model.vtu_series()), envelope_files(model.envelope_files())
 {
   run.begin();
   use_shortest_numbers(section_rows);
@@ -95,6 +104,8 @@ void OutputWriter::write_history(const OutputState &s)
     if (s.section_force_rows)
       section_forces << section_rows.str();
   }
+  if (s.section_force_rows)
+    model.update_envelopes(s.time, *s.displacement);
   if (s.contact_rows)
     write_contacts(s);
   flush_if_due();
@@ -242,23 +253,26 @@ void OutputWriter::write_vtu(const OutputState &s)
         status[c.dofs[i]] += std::abs(c.coefficients[i]);
     }
   }
-  char name[64];
-  std::snprintf(name,
-                sizeof(name),
-                "solution-%05u.vtu",
-                static_cast<unsigned int>(vtu_files.size()));
+  const unsigned int cycle = vtu_files.size();
+  const VtuSnapshot snapshot{{{"displacement", s.displacement},
+                              {"velocity", s.velocity},
+                              {"contact_impulse", &impulse},
+                              {"contact_status", &status}},
+                             s.time,
+                             cycle};
+  const std::string name = snapshot_name("solution", cycle);
   {
     OutputStream out(run.open(name));
-    model.write_vtu(out,
-                    {{{"displacement", s.displacement},
-                      {"velocity", s.velocity},
-                      {"contact_impulse", &impulse},
-                      {"contact_status", &status}},
-                     s.time,
-                     static_cast<unsigned int>(vtu_files.size())});
+    model.write_vtu(out, snapshot);
     out.close();
   }
-  // the index names complete snapshots only, and is replaced atomically
+  for (const auto &other : series)
+  {
+    OutputStream out(run.open(snapshot_name(other, cycle)));
+    model.write_series_vtu(other, out, snapshot);
+    out.close();
+  }
+  // the indices name complete snapshots only, and are replaced atomically
   vtu_files.emplace_back(s.time, name);
   std::ostringstream pvd;
   DataOutBase::write_pvd_record(pvd, vtu_files);
@@ -268,17 +282,42 @@ void OutputWriter::write_vtu(const OutputState &s)
   pvd_durable =
       std::chrono::duration<double>(now - last_pvd_sync).count() >= flush_interval;
   run.replace("solution.pvd", pvd.str(), pvd_durable);
+  for (const auto &other : series)
+  {
+    std::vector<std::pair<double, std::string>> files;
+    for (unsigned int k = 0; k < vtu_files.size(); ++k)
+      files.emplace_back(vtu_files[k].first, snapshot_name(other, k));
+    std::ostringstream index;
+    DataOutBase::write_pvd_record(index, files);
+    run.replace(other + ".pvd", index.str(), pvd_durable);
+  }
   if (pvd_durable)
     last_pvd_sync = now;
+  write_envelopes(false);
   flush();
+}
+
+void OutputWriter::write_envelopes(const bool durable)
+{
+  for (const auto &name : envelope_files)
+  {
+    std::ostringstream content;
+    model.write_envelope_file(name, content);
+    run.replace(name, content.str(), durable);
+  }
 }
 
 void OutputWriter::finish()
 {
   flush();
   if (!pvd_durable)
+  {
     run.sync("solution.pvd");
+    for (const auto &other : series)
+      run.sync(other + ".pvd");
+  }
   pvd_durable = true;
+  write_envelopes(true);
 }
 
 void OutputWriter::flush_if_due()

@@ -172,6 +172,7 @@ void run_static_analysis(Problem &problem, RunDirectory &directory)
   for (const auto &entry : problem.model->summary_entries(problem.static_contact_forces))
     summary.push_back(entry);
   write_summary(directory.path() + "/summary.json", summary, problem.warnings);
+  std::cout << problem.model->results_table();
   std::cout << "  largest translation " << umax << " m; results in " << directory.path()
             << "/ (history.csv, solution.pvd, summary.json)" << std::endl;
   timer.print_summary();

@@ -39,7 +39,8 @@ class FrameSolids;
  *
  * What the frame is made of comes from a FrameDescription (the `Model/Frame`
  * parser, frame_parser.h, or a generator such as the bridge crane); the
- * section forces are written by FrameSectionForces.
+ * section forces are written by FrameSectionForces, the solids' stresses by
+ * their SolidStressOutput (frame_results.cc).
  */
 class Frame : public Model
 {
@@ -61,14 +62,28 @@ public:
   std::vector<std::string> cell_members() const override;
   bool has_members() const override { return true; }
   std::string section_forces_header() const override;
-  /** FrameSectionForces::summary_entries(). */
+  /**
+   * FrameSectionForces::summary_entries() and, with solids, `solids`
+   * (SolidStressOutput::summary()).
+   */
   SummaryEntries summary_entries(
       const std::map<std::string, double> &static_contact_forces) const override;
-  /** The envelope of the section forces as table lines. */
+  /** The envelopes of the section forces and of the solids' stress as table lines. */
   std::string results_table() const override;
   void write_section_forces(std::ostream *out,
                             const double time,
                             const Vector<double> &U) const override;
+  /** `solids` for a frame with solids (SolidStressOutput), none otherwise. */
+  std::vector<std::string> vtu_series() const override;
+  /** The snapshot of `solids` (SolidStressOutput::write_vtu()). */
+  void write_series_vtu(const std::string &series,
+                        std::ostream &out,
+                        const VtuSnapshot &snapshot) const override;
+  /** The envelope of the solids' von Mises stress. */
+  void update_envelopes(const double time, const Vector<double> &U) const override;
+  /** `stress_envelope.vtu` for a frame with solids, none otherwise. */
+  std::vector<std::string> envelope_files() const override;
+  void write_envelope_file(const std::string &name, std::ostream &out) const override;
   /**
    * Model::select_part(), and the ties eliminated in it: those of an
    * implicit node (a tie of an explicit node crosses the interface,

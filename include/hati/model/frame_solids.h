@@ -1,6 +1,7 @@
 #ifndef hati_model_frame_solids_h
 #define hati_model_frame_solids_h
 
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/grid/tria.h>
@@ -13,12 +14,15 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace hati
 {
 using namespace dealii;
+
+class SolidStressOutput;
 
 /**
  * The 3D solids of a frame model (doc/user_guide.md "Solids and ties"):
@@ -28,6 +32,8 @@ using namespace dealii;
  * elasticity with the consistent mass and the row-sum lumped mass
  * (positive for FE_Q(p)); the supports of solid faces and the ties of beam
  * nodes to solid faces (B1) as lines of the frame's AffineConstraints.
+ * Its SolidStressOutput writes the stresses (`solids.pvd`,
+ * `stress_envelope.vtu`, summary.json `solids`).
  */
 class FrameSolids
 {
@@ -37,6 +43,7 @@ public:
    * name); the DoFs numbered from @p offset.
    */
   FrameSolids(const FrameDescription &frame, const types::global_dof_index offset);
+  ~FrameSolids();
 
   /** Number of DoFs of the solids. */
   types::global_dof_index n_dofs() const { return dof_handler.n_dofs(); }
@@ -88,6 +95,27 @@ public:
                 std::vector<SymmetricTensor<2, 3>> &stress,
                 std::vector<Point<3>> &points) const;
 
+  /** The stress (Pa) of @p strain in the solid of index @p solid (Hooke). */
+  SymmetricTensor<2, 3> stress(const unsigned int solid,
+                               const SymmetricTensor<2, 3> &strain) const
+  {
+    const Material &m = materials[solid];
+    return m.lambda * trace(strain) * unit_symmetric_tensor<3>() + 2. * m.mu * strain;
+  }
+
+  /** Number of solids; the name of the solid of index @p solid. */
+  unsigned int n_solids() const { return materials.size(); }
+  const std::string &solid_name(const unsigned int solid) const
+  {
+    return frame.solids.solids[solid].name;
+  }
+
+  /**
+   * The stress output of the solids; not const: its envelope is updated
+   * from the model's const output functions (Model::update_envelopes()).
+   */
+  SolidStressOutput &stress_output() const { return *output; }
+
   /** The diagonal of the box around the solids' vertices (m). */
   double size() const;
   /** Number of cells and of DoFs, e.g. "2 solids: 640 hexahedra of degree 2". */
@@ -107,6 +135,8 @@ private:
   FESystem<3> fe;
   DoFHandler<3> dof_handler;
   types::global_dof_index first_dof = 0;
+  /** Created last: it reads the DoFHandler. */
+  std::unique_ptr<SolidStressOutput> output;
 };
 } // namespace hati
 

@@ -258,6 +258,44 @@ public:
   {
   }
 
+  /**
+   * Names of the VTU series the model writes next to `solution`, each as
+   * `<name>.pvd` and `<name>-NNNNN.vtu` with the cycles and times of
+   * `solution.pvd` (a frame with solids: `solids`); none by default.
+   */
+  virtual std::vector<std::string> vtu_series() const { return {}; }
+
+  /**
+   * One snapshot of the series @p series (a name of vtu_series()) from the
+   * DoF vectors of @p snapshot, as write_vtu() does for `solution`.
+   */
+  virtual void write_series_vtu(const std::string & /*series*/,
+                                std::ostream & /*out*/,
+                                const VtuSnapshot & /*snapshot*/) const
+  {
+  }
+
+  /**
+   * Update the model's envelopes other than the section forces' (a frame
+   * with solids: the largest von Mises stress) at time @p time (s) for the
+   * displacement @p U: at the rows of `Output/Section force interval`.
+   */
+  virtual void update_envelopes(const double /*time*/, const Vector<double> & /*U*/) const
+  {
+  }
+
+  /**
+   * Names of the files the model writes from those envelopes (a frame with
+   * solids: `stress_envelope.vtu`); none by default.
+   */
+  virtual std::vector<std::string> envelope_files() const { return {}; }
+
+  /** The file @p name (a name of envelope_files()) as it stands. */
+  virtual void write_envelope_file(const std::string & /*name*/,
+                                   std::ostream & /*out*/) const
+  {
+  }
+
 protected:
   /** Whether build() assembles the active cell @p index (select_part()). */
   bool cell_selected(const unsigned int index) const

@@ -70,8 +70,13 @@ struct OutputState
  * force = impulse / duration (the summed static force in a static
  * analysis), number of active rows; with friction the tangential impulse,
  * slip velocity and state, on every row), `energy.csv`,
- * `solution.pvd` + `solution-NNNNN.vtu`, `section_forces.csv` when the model
- * writes section forces, and `summary.json` at the end.
+ * `solution.pvd` + `solution-NNNNN.vtu` and the model's other VTU series
+ * with the same cycles and times (Model::vtu_series(), e.g. `solids.pvd` +
+ * `solids-NNNNN.vtu`), `section_forces.csv` when the model writes section
+ * forces, the model's envelope files (Model::envelope_files(), e.g.
+ * `stress_envelope.vtu`: its envelopes are updated at the section force
+ * rows, the files replaced at every VTU snapshot and at the end), and
+ * `summary.json` at the end.
  * It also counts impacts (a contact name going from no impulse to a
  * positive impulse) and the largest penetration.
  *
@@ -80,7 +85,7 @@ struct OutputState
  * the buffers hold 1 MiB and at least every 2 s of wall time: every CSV
  * ends on a complete line at every instant. `solution.pvd` is replaced
  * atomically after its snapshot is complete, and made durable (fsync) at
- * most every 2 s and by finish().
+ * most every 2 s and by finish(); so are the indices of the other series.
  */
 class OutputWriter
 {
@@ -97,7 +102,10 @@ public:
   void write_contacts(const OutputState &state);
   /** A row of energy.csv; the drift is relative to the first row. */
   void write_energy(const double time, const Energies &energies);
-  /** A VTU snapshot and the updated PVD index. */
+  /**
+   * A VTU snapshot of every series and the updated PVD indices; the
+   * envelope files replaced (not made durable).
+   */
   void write_vtu(const OutputState &state);
   /**
    * Track impacts and the largest penetration from the gaps and impulses
@@ -118,8 +126,9 @@ public:
    */
   void flush();
   /**
-   * flush() at the end of a run (completed or interrupted), and make
-   * `solution.pvd` durable if its last replacement was not (sync_file()).
+   * flush() at the end of a run (completed or interrupted), make
+   * `solution.pvd` and the other indices durable if their last replacement
+   * was not (sync_file()), and write the envelope files durably.
    */
   void finish();
 
@@ -134,6 +143,8 @@ private:
   void flush_if_due();
   /** The friction columns of write_contacts() per contact name (A9). */
   void group_friction(const OutputState &state);
+  /** Replace the model's envelope files by their current content. */
+  void write_envelopes(const bool durable);
 
   RunDirectory &run;
   const std::string dir;
@@ -162,6 +173,8 @@ private:
   bool have_energy = false;
   double energy0 = 0., last_drift = 0., energy_scale = 0.;
   std::vector<std::pair<double, std::string>> vtu_files;
+  /** The model's VTU series besides `solution` and its envelope files. */
+  const std::vector<std::string> series, envelope_files;
 };
 
 } // namespace hati
