@@ -3,7 +3,6 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria_description.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/numerics/data_out.h>
 
 #include <hati/model/frame.h>
 #include <hati/model/frame_solids.h>
@@ -18,7 +17,6 @@ namespace hati
 {
 namespace
 {
-const char *const component_labels[6] = {"x", "y", "z", "rx", "ry", "rz"};
 
 /** The name of every member of @p frame, in order. */
 std::vector<std::string> member_names(const FrameDescription &frame)
@@ -594,57 +592,6 @@ double Frame::add_ropes(DiscreteSystem &system) const
     system.ropes.push_back(rope);
   }
   return rope_omega_squared_bound(system.ropes, system.lumped_mass, system.fixed);
-}
-
-void Frame::write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const
-{
-  const auto &[fields, time, cycle] = snapshot;
-  DataOut<1, 3> data_out;
-  data_out.attach_dof_handler(dof_handler);
-  std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
-      6, DataComponentInterpretation::component_is_part_of_vector);
-  std::vector<Vector<double>> distributed(fields.size());
-  Vector<float> member_id(triangulation.n_active_cells());
-  std::array<Vector<float>, 6> forces;
-  for (auto &f : forces)
-    f.reinit(triangulation.n_active_cells());
-  for (unsigned int f = 0; f < fields.size(); ++f)
-  {
-    distributed[f] = *fields[f].second;
-    constraints.distribute(distributed[f]);
-    if (distributed[f].size() > n_mesh_dofs) // rope-only nodes: not in the mesh
-    {
-      Vector<double> mesh_part(n_mesh_dofs);
-      std::copy(distributed[f].begin(),
-                distributed[f].begin() + n_mesh_dofs,
-                mesh_part.begin());
-      distributed[f].swap(mesh_part);
-    }
-    std::vector<std::string> names(3, fields[f].first);
-    for (unsigned int c = 0; c < 3; ++c)
-      names.push_back(fields[f].first + "_rotational");
-    data_out.add_data_vector(
-        distributed[f], names, DataOut<1, 3>::type_dof_data, interpretation);
-    if (fields[f].first == "displacement")
-      for (unsigned int c = 0; c < cells.size(); ++c)
-      {
-        const auto s = frame_cell_section_forces(cells[c], distributed[f], gravity);
-        for (unsigned int k = 0; k < 6; ++k)
-          forces[k][c] = 0.5 * (s[k] + s[6 + k]); // mid-element value
-      }
-  }
-  for (unsigned int c = 0; c < cells.size(); ++c)
-    member_id[c] = cells[c].member;
-  data_out.add_data_vector(member_id, "member", DataOut<1, 3>::type_cell_data);
-  const Vector<float> subdomain = subdomain_field();
-  if (subdomain.size() > 0)
-    data_out.add_data_vector(subdomain, "subdomain", DataOut<1, 3>::type_cell_data);
-  const char *force_names[6] = {"N", "Vy", "Vz", "T", "My", "Mz"};
-  for (unsigned int k = 0; k < 6; ++k)
-    data_out.add_data_vector(forces[k], force_names[k], DataOut<1, 3>::type_cell_data);
-  data_out.build_patches();
-  data_out.set_flags(DataOutBase::VtkFlags(time, cycle));
-  data_out.write_vtu(out);
 }
 
 std::vector<Point<3>> Frame::cell_centres() const

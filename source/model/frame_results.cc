@@ -1,11 +1,13 @@
+#include <deal.II/numerics/data_out.h>
+
 #include <hati/model/frame.h>
 #include <hati/model/frame_solids.h>
 #include <hati/model/solid_stress_output.h>
 
 namespace hati
 {
-// The results of a frame beyond solution.pvd and section_forces.csv: the
-// summary entries, the results table, and the stress output of its solids
+// The results of a frame: its VTU snapshots (solution.pvd), the summary
+// entries, the results table, and the stress output of its solids
 
 SummaryEntries Frame::summary_entries(const std::map<std::string, double> &) const
 {
@@ -74,4 +76,55 @@ void Frame::write_envelope_file(const std::string &name, std::ostream &out) cons
               ExcMessage("no envelope file " + name));
   solids->stress_output().write_envelope(out);
 }
+void Frame::write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const
+{
+  const auto &[fields, time, cycle] = snapshot;
+  DataOut<1, 3> data_out;
+  data_out.attach_dof_handler(dof_handler);
+  std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
+      6, DataComponentInterpretation::component_is_part_of_vector);
+  std::vector<Vector<double>> distributed(fields.size());
+  Vector<float> member_id(triangulation.n_active_cells());
+  std::array<Vector<float>, 6> forces;
+  for (auto &f : forces)
+    f.reinit(triangulation.n_active_cells());
+  for (unsigned int f = 0; f < fields.size(); ++f)
+  {
+    distributed[f] = *fields[f].second;
+    constraints.distribute(distributed[f]);
+    if (distributed[f].size() > n_mesh_dofs) // rope-only nodes: not in the mesh
+    {
+      Vector<double> mesh_part(n_mesh_dofs);
+      std::copy(distributed[f].begin(),
+                distributed[f].begin() + n_mesh_dofs,
+                mesh_part.begin());
+      distributed[f].swap(mesh_part);
+    }
+    std::vector<std::string> names(3, fields[f].first);
+    for (unsigned int c = 0; c < 3; ++c)
+      names.push_back(fields[f].first + "_rotational");
+    data_out.add_data_vector(
+        distributed[f], names, DataOut<1, 3>::type_dof_data, interpretation);
+    if (fields[f].first == "displacement")
+      for (unsigned int c = 0; c < cells.size(); ++c)
+      {
+        const auto s = frame_cell_section_forces(cells[c], distributed[f], gravity);
+        for (unsigned int k = 0; k < 6; ++k)
+          forces[k][c] = 0.5 * (s[k] + s[6 + k]); // mid-element value
+      }
+  }
+  for (unsigned int c = 0; c < cells.size(); ++c)
+    member_id[c] = cells[c].member;
+  data_out.add_data_vector(member_id, "member", DataOut<1, 3>::type_cell_data);
+  const Vector<float> subdomain = subdomain_field();
+  if (subdomain.size() > 0)
+    data_out.add_data_vector(subdomain, "subdomain", DataOut<1, 3>::type_cell_data);
+  const char *force_names[6] = {"N", "Vy", "Vz", "T", "My", "Mz"};
+  for (unsigned int k = 0; k < 6; ++k)
+    data_out.add_data_vector(forces[k], force_names[k], DataOut<1, 3>::type_cell_data);
+  data_out.build_patches();
+  data_out.set_flags(DataOutBase::VtkFlags(time, cycle));
+  data_out.write_vtu(out);
+}
+
 } // namespace hati
