@@ -18,7 +18,6 @@ namespace hati
 {
 namespace
 {
-const char *const component_labels[6] = {"x", "y", "z", "rx", "ry", "rz"};
 
 /** The name of every member of @p frame, in order. */
 std::vector<std::string> member_names(const FrameDescription &frame)
@@ -391,73 +390,6 @@ void Frame::assemble_cells(const std::vector<bool> &excited,
   }
 }
 
-std::vector<double> Frame::add_springs(DiscreteSystem &system) const
-{
-  std::vector<double> spring(system.n_dofs(), 0.);
-  for (const auto &s : frame.supports)
-    for (unsigned int c = 0; c < 6; ++c)
-      if (s.stiffness[c] > 0. && owns_node(node_cells.at(s.node)))
-      {
-        const auto i = node_dofs.at(s.node)[c];
-        system.stiffness.add(i, i, s.stiffness[c]);
-        spring[i] += s.stiffness[c];
-      }
-  return spring;
-}
-
-void Frame::add_point_masses(const std::vector<bool> &excited,
-                             const bool restricted,
-                             DiscreteSystem &system) const
-{
-  for (const auto &p : frame.point_masses)
-    for (unsigned int c = 0; c < 6; ++c)
-    {
-      if (!owns_node(node_cells.at(p.node)))
-        break;
-      const auto i = node_dofs.at(p.node)[c];
-      if (held(i))
-        continue;
-      const double m = c < 3 ? p.mass : p.rotary_inertia[c - 3];
-      system.lumped_mass[i] += m;
-      system.consistent_mass.add(i, i, m);
-      if (c < 3)
-        system.mass_influence[c][i] += m;
-      if (restricted && node_excited(p.node, excited))
-      {
-        system.excited_lumped_mass[i] += m;
-        if (c < 3)
-          system.excited_mass_influence[c][i] += m;
-      }
-    }
-}
-
-void Frame::add_loads(const CommonModelParameters &common, DiscreteSystem &system) const
-{
-  // rigid translations; gravity F = M r g (consistent mass, inertia coupled
-  // to the supports included); nodal loads
-  const unsigned int n = system.n_dofs();
-  for (unsigned int d = 0; d < 3; ++d)
-  {
-    system.influence[d].reinit(n);
-    for (const auto &vd : vertex_dofs)
-      if (!system.fixed[vd[d]])
-        system.influence[d][vd[d]] = 1.;
-    for (types::global_dof_index i = n_mesh_dofs + d; i < n_beam_dofs; i += 6)
-      system.influence[d][i] = 1.; // the translations of rope-only nodes
-    system.constant_force.add(common.gravity[d], system.mass_influence[d]);
-  }
-  if (solids)
-    solids->add_influence(system.fixed, system.influence);
-  system.gravity = common.gravity;
-  for (const auto &[node, f] : frame.nodal_loads)
-    if (owns_node(node_cells.at(node)))
-      for (unsigned int c = 0; c < 6; ++c)
-        system.constant_force[node_dofs.at(node)[c]] += f[c];
-  for (unsigned int i = 0; i < n; ++i)
-    if (system.fixed[i])
-      system.constant_force[i] = 0.;
-}
-
 void Frame::add_contacts(const CommonModelParameters &common,
                          DiscreteSystem &system) const
 {
@@ -593,42 +525,6 @@ double Frame::add_ropes(DiscreteSystem &system) const
   return rope_omega_squared_bound(system.ropes, system.lumped_mass, system.fixed);
 }
 
-void Frame::add_monitors(DiscreteSystem &system) const
-{
-  for (const auto &node : frame.monitor_nodes)
-  {
-    MonitorPoint m;
-    m.name = node;
-    bool eliminated = false;
-    for (unsigned int c = 0; c < 6; ++c)
-    {
-      m.labels.push_back(component_labels[c]);
-      m.dofs.push_back(node_dofs.at(node)[c]);
-      const auto *entries = constraints.get_constraint_entries(m.dofs[c]);
-      eliminated = eliminated || (entries != nullptr && !entries->empty());
-    }
-    // a tied node or the slave of a rigid link: its values from the free DoFs
-    if (eliminated)
-      for (const auto dof : m.dofs)
-      {
-        SparseRow row;
-        const auto *entries = constraints.get_constraint_entries(dof);
-        if (entries == nullptr)
-        {
-          row.dofs.push_back(dof);
-          row.coefficients.push_back(1.);
-        }
-        else
-          for (const auto &[j, a] : *entries)
-          {
-            row.dofs.push_back(j);
-            row.coefficients.push_back(a);
-          }
-        m.rows.push_back(row);
-      }
-    system.monitors.push_back(m);
-  }
-}
 void Frame::write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const
 {
   const auto &[fields, time, cycle] = snapshot;
