@@ -27,6 +27,18 @@ const std::string singular_message =
     "static analysis: the stiffness matrix is singular: the model can move as a "
     "rigid body (check the supports)";
 
+/**
+ * The largest residual `||K U - F|| / ||F||` accepted. A direct solve is
+ * backward stable: its residual is round-off, about `eps || |K| |U| ||`,
+ * which a mechanism (a round-off pivot, U of the order of ||F|| / (eps
+ * ||K||)) raises to the order of ||F||. Well-posed models with a large
+ * stiffness contrast reach 1e-8: a 6 m box girder with 12 mm plates in
+ * solid elements, whose through-thickness stiffness is 1e8 times its
+ * bending stiffness, leaves 3e-8 ||F|| (2.2e-16 times || |K| |U| || =
+ * 1.8e8 ||F||).
+ */
+constexpr double residual_tolerance = 1e-6;
+
 /** ||x||_2 over the free DoFs. */
 double free_norm(const Vector<double> &x, const std::vector<bool> &fixed)
 {
@@ -195,11 +207,12 @@ std::vector<double> solve_closed(const DiscreteSystem &system,
   AssertThrow(std::isfinite(x.l2_norm()),
               ExcMessage(singular_message + " (the solution is not finite)."));
   const double norm_r = A.residual(r, x, b);
-  if (!(norm_r <= 1e-8 * norm_b))
+  if (!(norm_r <= residual_tolerance * norm_b))
   {
     std::ostringstream message;
     message << singular_message << " with its closed contacts (residual " << norm_r
-            << " > 1e-8 ||F|| = " << 1e-8 * norm_b << ").";
+            << " > " << residual_tolerance << " ||F|| = " << residual_tolerance * norm_b
+            << ").";
     AssertThrow(false, ExcMessage(message.str()));
   }
   U.reinit(n);
@@ -555,11 +568,11 @@ void solve_linear(const StaticSolve &s,
   Vector<double> r(n);
   residual(K, U, F, fixed, r);
   const double norm_r = free_norm(r, fixed);
-  if (!(norm_r <= 1e-8 * norm_F))
+  if (!(norm_r <= residual_tolerance * norm_F))
   {
     std::ostringstream message;
-    message << singular_message << " (residual ||K U - F|| = " << norm_r
-            << " > 1e-8 ||F|| = " << 1e-8 * norm_F << ").";
+    message << singular_message << " (residual ||K U - F|| = " << norm_r << " > "
+            << residual_tolerance << " ||F|| = " << residual_tolerance * norm_F << ").";
     AssertThrow(false, ExcMessage(message.str()));
   }
   for (unsigned int i = 0; i < n; ++i)

@@ -1,15 +1,10 @@
-// The rows a frame adds to its system: contacts, the constraint rows of ties
-// and rigid links (explicit scheme), monitor points.
+// The rows a frame adds to its system: contacts and the constraint rows of
+// ties and rigid links (explicit scheme).
 #include <hati/model/frame.h>
 #include <hati/model/solid_tie.h>
 
 namespace hati
 {
-namespace
-{
-const char *const component_labels[6] = {"x", "y", "z", "rx", "ry", "rz"};
-}
-
 void Frame::add_contacts(const CommonModelParameters &common,
                          DiscreteSystem &system) const
 {
@@ -84,41 +79,5 @@ void Frame::add_link_rows(DiscreteSystem &system) const
     return;
   for (const auto &link : links)
     hati::add_link_rows(link, system.fixed, system.contacts);
-}
-void Frame::add_monitors(DiscreteSystem &system) const
-{
-  for (const auto &node : frame.monitor_nodes)
-  {
-    MonitorPoint m;
-    m.name = node;
-    bool eliminated = false;
-    for (unsigned int c = 0; c < 6; ++c)
-    {
-      m.labels.push_back(component_labels[c]);
-      m.dofs.push_back(node_dofs.at(node)[c]);
-      const auto *entries = constraints.get_constraint_entries(m.dofs[c]);
-      eliminated = eliminated || (entries != nullptr && !entries->empty());
-    }
-    // a tied node or the slave of a rigid link: its values from the free DoFs
-    if (eliminated)
-      for (const auto dof : m.dofs)
-      {
-        SparseRow row;
-        const auto *entries = constraints.get_constraint_entries(dof);
-        if (entries == nullptr)
-        {
-          row.dofs.push_back(dof);
-          row.coefficients.push_back(1.);
-        }
-        else
-          for (const auto &[j, a] : *entries)
-          {
-            row.dofs.push_back(j);
-            row.coefficients.push_back(a);
-          }
-        m.rows.push_back(row);
-      }
-    system.monitors.push_back(m);
-  }
 }
 } // namespace hati

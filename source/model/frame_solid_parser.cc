@@ -184,7 +184,10 @@ void declare_solid_entries(ParameterHandler &prm)
       "on the plane axis = value (m, global axes), or of its part within r (m) of the "
       "node's projection on that plane (faces whose centre lies within). The face may "
       "warp (no rigid face): a beam force F and moment M reach the face as the "
-      "traction F/S + (I_G^-1 M) x r (doc/theory.md B1).");
+      "traction F/S + (I_G^-1 M) x r (doc/theory.md B1); so do the node's nodal "
+      "loads, point masses and springs. The traction is uniform over the face: "
+      "the open end of a box girder distorts under it, give the girder its end "
+      "diaphragms (diaphragm spacing).");
   prm.declare_entry("Solid supports",
                     "",
                     Patterns::Anything(),

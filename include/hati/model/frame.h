@@ -162,6 +162,14 @@ private:
     return constraints.is_constrained(i) ||
            (i >= n_mesh_dofs && i < n_beam_dofs && (i - n_mesh_dofs) % 6 >= 3);
   }
+  /**
+   * Add @p value to the diagonal entry of DoF @p i of @p matrix through the
+   * constraints: on the DoFs a tied node or a rigid link's slave follows,
+   * `C^T value C` (a spring or a point mass at such a node).
+   */
+  void add_to_diagonal(const types::global_dof_index i,
+                       const double value,
+                       SparseMatrix<double> &matrix) const;
   /** The solids, their supports, and the rows of the ties and rigid links (links). */
   void add_link_constraints();
   /**
