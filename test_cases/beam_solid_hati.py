@@ -12,7 +12,11 @@ t = 0: Lambda_0 from the acceleration-level saddle point).
   aliasing at some m): the history of B1 (u_y, u_z, r_x) and of B0 (u_z);
   within 2 % of the peak for m <= 10 (printed for all);
 - the energy balance closes with the interface work (1e-10 of the largest
-  energy) and the velocity jump at the macro-step ends is round-off."""
+  energy) and the velocity jump at the macro-step ends is round-off.
+- a contact on the explicit beam: B1 stopped by a rigid plane 2 mm below
+  it (plastic impacts): HATI (m = 5, 10) against the fully explicit run,
+  the history of B1 and B0 within 2 % of the peak, the largest impulse of
+  one step and the largest mean force over 1 ms within 2 %."""
 import numpy as np
 
 from hati_test import Context, read_csv, read_summary
@@ -45,4 +49,29 @@ for m in range(1, 26):
                   s["energy_balance_relative"], 0.0, abs_tol=1e-10)
         ctx.check_true("m = %d: six interface rows" % m, s.get("n_interface_dofs") == 6,
                        str(s.get("n_interface_dofs")))
+contact = ["Model/Frame/Contacts=stop: B1, 0, 0, 1, 0.002, 0", "Time integration/End time=0.03"]
+ref, _ = ctx.run(prm, "explicit_contact", contact)
+hr = read_csv(ref + "/history.csv")
+cr = read_csv(ref + "/contacts.csv")
+sr = read_summary(ref)
+ctx.check_true("the explicit beam hits the stop", np.sum(cr["impulse"]) > 0.0,
+               "(impulse %.4g N s)" % np.sum(cr["impulse"]))
+for m in (5, 10):
+    out, _ = ctx.run(prm, "hati_contact_m%d" % m,
+                     contact + ["Time integration/Method=HATI",
+                                "Time integration/Time step=%g" % dt,
+                                "Time integration/HATI/Time step ratio=%d" % m,
+                                "Model/Decomposition/Explicit members=b"])
+    h = read_csv(out + "/history.csv")
+    c = read_csv(out + "/contacts.csv")
+    for col in ("B1uz", "B0uz", "B1uy"):
+        r = np.interp(h["time"], hr["time"], hr[col])
+        ctx.check("contact, m = %d: %s, max |HATI - explicit| / peak" % (m, col),
+                  np.max(np.abs(h[col] - r)) / np.max(np.abs(r)), 0.0, abs_tol=0.02)
+    s = read_summary(out)
+    for key in ("peak_impulse", "peak_mean_force"):
+        ctx.check("contact, m = %d: %s / explicit" % (m, key), s["contacts"]["stop"][key] /
+                  sr["contacts"]["stop"][key], 1.0, abs_tol=0.02)
+    ctx.check("contact, m = %d: energy balance (relative)" % m,
+              s["energy_balance_relative"], 0.0, abs_tol=1e-10)
 ctx.finish()

@@ -458,8 +458,6 @@ void Frame::assemble_cells(const std::vector<bool> &excited,
   }
 }
 
-}
-
 void Frame::make_pattern(DiscreteSystem &system) const
 {
   const unsigned int n = system.n_dofs();
