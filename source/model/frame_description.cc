@@ -392,6 +392,27 @@ void validate_solids(const FrameDescription &d, const std::set<std::string> &use
             "Rigid links",
             who + ": node '" + l.slave + "' is already tied or the slave of a link");
   }
+  // a chain of links is resolved; a closed one (each node the slave of the
+  // next) has no master and would not end
+  std::map<std::string, std::string> master_of;
+  for (const auto &l : S.rigid_links)
+    master_of[l.slave] = l.master;
+  for (const auto &l : S.rigid_links)
+  {
+    std::string chain = "'" + l.slave + "'", n = l.master;
+    for (std::size_t k = 0; k <= master_of.size() && n != l.slave; ++k)
+    {
+      chain += " -> '" + n + "'";
+      const auto up = master_of.find(n);
+      if (up == master_of.end())
+        break;
+      n = up->second;
+    }
+    require(n != l.slave,
+            "Rigid links",
+            "rigid link '" + l.name + "': its slave follows itself through the links (" +
+                chain + " -> '" + l.slave + "'): a closed chain has no master");
+  }
 }
 } // namespace
 

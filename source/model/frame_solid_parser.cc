@@ -82,11 +82,29 @@ Solid parse_box_girder(const Item &it)
           "Solids",
           it,
           "thicknesses and the element size must be > 0, the diaphragm spacing >= 0 (m)");
-  require(s.width > 2. * s.web_thickness && s.height > 2. * s.flange_thickness,
+  // one element through each wall and a hollow between them
+  require(s.width > 2. * s.web_thickness,
           "Solids",
           it,
-          "the box is thinner than its walls: a box girder needs width > 2 x web "
-          "thickness and height > 2 x flange thickness (one element each)");
+          "the width " + it.values[7] + " m is not more than 2 x the web thickness " +
+              it.values[9] +
+              " m: a box girder needs width > 2 x web thickness (one "
+              "element through each web and a hollow between them)");
+  require(s.height > 2. * s.flange_thickness,
+          "Solids",
+          it,
+          "the height " + it.values[8] + " m is not more than 2 x the flange thickness " +
+              it.values[10] +
+              " m: a box girder needs height > 2 x flange thickness "
+              "(one element through each flange and a hollow between them)");
+  // diaphragms of web thickness at that spacing must not overlap
+  if (s.diaphragm_spacing > 0.)
+    require(s.diaphragm_spacing > s.web_thickness,
+            "Solids",
+            it,
+            "the diaphragm spacing " + it.values[13] +
+                " m is not more than the web thickness " + it.values[9] +
+                " m (the diaphragms' thickness): they would overlap; give 0 for none");
   require(s.x0.distance(s.x1) > 2. * s.web_thickness || s.diaphragm_spacing == 0.,
           "Solids",
           it,
@@ -167,8 +185,9 @@ void declare_solid_entries(ParameterHandler &prm)
       "and its height along the local z axis of a frame member between the same "
       "points, four plates one element thick with conforming corners, plates meshed "
       "at the element size, optional transverse diaphragms of web thickness at that "
-      "spacing and at both ends); 'name: mesh, file.msh, material' (a Gmsh ASCII 4.1 "
-      "hexahedral mesh, m). Materials from Materials (E, nu, rho).");
+      "spacing (> web thickness) and at both ends); 'name: mesh, file.msh, material' "
+      "(a Gmsh ASCII mesh of 8-node hexahedra, format 4.1 or 2.2, m). Materials from "
+      "Materials (E, nu, rho).");
   prm.declare_entry("Solid element degree",
                     "2",
                     Patterns::Integer(),

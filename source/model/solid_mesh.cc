@@ -1,16 +1,14 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 
-#include <hati/base/input_file.h>
 #include <hati/model/frame_element.h>
+#include <hati/model/gmsh_solid_reader.h>
 #include <hati/model/memory_estimate.h>
 #include <hati/model/solid_mesh.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <set>
 
 namespace hati
@@ -77,9 +75,29 @@ void create_box(const Solid &s, Triangulation<3> &t)
       t, std::vector<unsigned int>(s.cells.begin(), s.cells.end()), s.x0, s.x1);
 }
 
+/**
+ * An upper bound of the number of cells of the girder from its dimensions
+ * alone (the cross-section's counts exact, the axial count bounded by the
+ * diaphragms' number): checked against the memory before any step is
+ * built, since a tiny element size or diaphragm spacing would fill the
+ * memory with steps first.
+ */
+double girder_cells_bound(const Solid &s, const double length)
+{
+  const auto across = [&](const double inner)
+  { return 2. + std::max(1., std::round(inner / s.element_size)); };
+  const double n_slabs =
+      s.diaphragm_spacing > 0. ? length / s.diaphragm_spacing + 2. : 0.;
+  return (length / s.element_size + 2. * n_slabs + 1.) *
+         across(s.width - 2. * s.web_thickness) *
+         across(s.height - 2. * s.flange_thickness);
+}
+
 void create_box_girder(const Solid &s, Triangulation<3> &t)
 {
   const double length = s.x0.distance(s.x1);
+  const double bound = girder_cells_bound(s, length);
+  check_memory_estimate(where(s), bound, 81. * bound, 81. * 27. * bound);
   std::vector<std::vector<double>> steps(3);
   std::vector<bool> diaphragm;
   axial_steps(s, length, steps[0], diaphragm);
@@ -137,34 +155,6 @@ void create_box_girder(const Solid &s, Triangulation<3> &t)
       t);
 }
 
-void read_mesh(const Solid &s, Triangulation<3> &t)
-{
-  require_regular_file(s.file, where(s), "mesh");
-  std::ifstream in(s.file);
-  AssertThrow(in, ExcMessage(where(s) + ": cannot open '" + s.file + "'"));
-  GridIn<3> reader;
-  reader.attach_triangulation(t);
-  try
-  {
-    reader.read_msh(in);
-  }
-  catch (const std::exception &e)
-  {
-    std::string what = e.what();
-    std::replace(what.begin(), what.end(), '\n', ' ');
-    AssertThrow(false,
-                ExcMessage(where(s) + ": '" + s.file +
-                           "' is not a Gmsh ASCII mesh deal.II reads (" +
-                           what.substr(0, 200) + ")"));
-  }
-  for (const auto &cell : t.active_cell_iterators())
-    AssertThrow(
-        cell->reference_cell() == ReferenceCells::Hexahedron,
-        ExcMessage(where(s) + ": '" + s.file +
-                   "' has cells that are not hexahedra (only hexahedral meshes)"));
-  AssertThrow(t.n_active_cells() > 0,
-              ExcMessage(where(s) + ": '" + s.file + "' has no hexahedra"));
-}
 } // namespace
 
 void create_solid_mesh(const SolidDescription &description,
@@ -179,7 +169,11 @@ void create_solid_mesh(const SolidDescription &description,
     else if (s.kind == "box girder")
       create_box_girder(s, part);
     else
-      read_mesh(s, part);
+    {
+      read_gmsh_hexahedra(s.file, where(s), part);
+      const double n = part.n_active_cells();
+      check_memory_estimate(where(s), n, 81. * n, 81. * 27. * n);
+    }
     for (const auto &cell : part.active_cell_iterators())
       cell->set_material_id(k);
     if (triangulation.n_active_cells() == 0)
