@@ -57,14 +57,13 @@ Frame::~Frame() = default;
 
 void Frame::select_part(const std::vector<unsigned char> &parts, const int part)
 {
-  AssertThrow(part < 0 || frame.solids.rigid_links.empty(),
-              ExcMessage("Model/Frame/Rigid links: a frame with rigid links cannot be "
-                         "decomposed yet (Method = HATI): run it with Newmark or "
-                         "CD-Lagrange"));
   Model::select_part(parts, part);
-  // the ties whose node is explicit cross the interface (interface_rows())
+  // each link eliminated, rows of the explicit part, or across the interface
   if (!links.empty() && triangulation.n_active_cells() > 0)
+  {
+    place_links(part);
     close_constraints();
+  }
 }
 
 bool Frame::node_explicit(const std::string &node) const
@@ -85,7 +84,7 @@ void Frame::close_constraints()
   {
     // bilateral rows of the explicit scheme (add_link_rows()); across the
     // interface of a decomposed model (interface_rows()); eliminated otherwise
-    if (links_as_rows || (selected_part >= 0 && node_explicit(link_nodes[k])))
+    if (links_as_rows || (k < link_sides.size() && link_sides[k] != LinkSide::eliminated))
       continue;
     for (unsigned int c = 0; c < 6; ++c)
       AssertThrow(!constraints.is_constrained(links[k].slave[c]),
@@ -95,30 +94,6 @@ void Frame::close_constraints()
     add_constraint_lines(links[k], constraints);
   }
   constraints.close();
-}
-
-std::vector<SparseRow> Frame::interface_rows() const
-{
-  // a tie of an explicit node to the (implicit) solid: U_P - R u_face = 0
-  std::vector<SparseRow> rows;
-  if (parts.empty())
-    return rows;
-  for (unsigned int k = 0; k < links.size(); ++k)
-    if (node_explicit(link_nodes[k]))
-      for (unsigned int c = 0; c < 6; ++c)
-      {
-        SparseRow row;
-        row.dofs.push_back(links[k].slave[c]);
-        row.coefficients.push_back(1.);
-        for (const auto &[j, a] : links[k].rows[c])
-          if (!constraints.is_constrained(j))
-          {
-            row.dofs.push_back(j);
-            row.coefficients.push_back(-a);
-          }
-        rows.push_back(row);
-      }
-  return rows;
 }
 
 void Frame::create_mesh()
@@ -280,6 +255,7 @@ void Frame::add_link_constraints()
 {
   links.clear();
   link_nodes.clear();
+  link_sides.clear();
   for (const auto &l : frame.solids.rigid_links)
   {
     links.push_back({l.name,

@@ -74,10 +74,76 @@ void Frame::add_contacts(const CommonModelParameters &common,
 void Frame::add_link_rows(DiscreteSystem &system) const
 {
   // after the contacts: ties and rigid links as bilateral constraint rows of
-  // the explicit scheme (doc/theory.md 11.2); eliminated otherwise
-  if (!links_as_rows)
-    return;
-  for (const auto &link : links)
-    hati::add_link_rows(link, system.fixed, system.contacts);
+  // the explicit scheme (doc/theory.md 11.2), and in a decomposed model the
+  // rigid links between explicit nodes in the explicit part; eliminated or
+  // across the interface otherwise
+  for (unsigned int k = 0; k < links.size(); ++k)
+    if (links_as_rows || (selected_part == 0 && k < link_sides.size() &&
+                          link_sides[k] == LinkSide::explicit_rows))
+      hati::add_link_rows(links[k], system.fixed, system.contacts);
+}
+
+void Frame::place_links(const int part)
+{
+  // the rigid links come first in links (add_link_constraints()); a tie's
+  // master is a solid, always implicit
+  const auto &rigid = frame.solids.rigid_links;
+  link_sides.assign(links.size(), LinkSide::eliminated);
+  for (unsigned int k = 0; k < rigid.size(); ++k)
+  {
+    const auto &l = rigid[k];
+    const bool m = part >= 0 && node_explicit(l.master),
+               s = part >= 0 && node_explicit(l.slave);
+    const bool swap = m && !s;
+    const std::string &slave = swap ? l.master : l.slave,
+                      &master = swap ? l.slave : l.master;
+    links[k] = {l.name,
+                node_dofs.at(slave),
+                rigid_link_rows(
+                    node_dofs.at(master), frame.nodes.at(master), frame.nodes.at(slave))};
+    link_nodes[k] = slave;
+    link_sides[k] = m && s ? LinkSide::explicit_rows
+                           : (m || s ? LinkSide::interface : LinkSide::eliminated);
+  }
+  for (unsigned int k = rigid.size(); k < links.size(); ++k)
+    if (part >= 0 && node_explicit(link_nodes[k]))
+      link_sides[k] = LinkSide::interface;
+}
+
+std::vector<SparseRow> Frame::interface_rows() const
+{
+  // U_P - R u_master = 0, the explicit node P one DoF per row (G3'')
+  std::vector<SparseRow> rows;
+  if (parts.empty())
+    return rows;
+  for (unsigned int k = 0; k < links.size(); ++k)
+    if (k < link_sides.size() && link_sides[k] == LinkSide::interface)
+      for (unsigned int c = 0; c < 6; ++c)
+      {
+        SparseRow row;
+        row.dofs.push_back(links[k].slave[c]);
+        row.coefficients.push_back(1.);
+        auto add = [&row](const types::global_dof_index j, const double a)
+        {
+          for (unsigned int i = 1; i < row.dofs.size(); ++i)
+            if (row.dofs[i] == j)
+            {
+              row.coefficients[i] += a;
+              return;
+            }
+          row.dofs.push_back(j);
+          row.coefficients.push_back(a);
+        };
+        for (const auto &[j, a] : links[k].rows[c])
+          if (!constraints.is_constrained(j))
+            add(j, -a);
+          else if (const auto *line = constraints.get_constraint_entries(j))
+            // a master DoF eliminated in the implicit part (a chain of
+            // links): its line over free DoFs (closed; a support has none)
+            for (const auto &[jj, aa] : *line)
+              add(jj, -a * aa);
+        rows.push_back(row);
+      }
+  return rows;
 }
 } // namespace hati

@@ -6,7 +6,9 @@
 #include <hati/run/problem.h>
 #include <hati/run/time_loop.h>
 #include <hati/time/hati_coupling.h>
+#include <hati/time/macro_aliasing.h>
 
+#include <cmath>
 #include <iostream>
 #include <new>
 #include <sstream>
@@ -76,6 +78,25 @@ void run_hati(Problem &problem, RunDirectory &directory)
             << " DoFs (Newmark, DT = " << coupling->time_step()
             << " s, m = " << coupling->time_step_ratio() << "), "
             << coupling->n_interface_dofs() << " interface DoFs" << std::endl;
+  {
+    // macro-step aliasing (doc/theory.md 11.3): a warning, not a refusal
+    const auto omegas = free_interface_frequencies(parts[0].system);
+    const double dt = coupling->micro_time_step();
+    const unsigned int m = coupling->time_step_ratio();
+    const std::string w = aliasing_warning(
+        aliasing_modes(omegas, dt, m, aliasing_phase), omegas, dt, m, aliasing_phase);
+    if (omegas.empty())
+      std::cout << "  macro-step aliasing not checked (the explicit subdomain has more "
+                   "than 2000 free DoFs)"
+                << std::endl;
+    else
+      std::cout << "  explicit free-interface modes: " << omegas.size() << ", up to "
+                << omegas.back() / (2. * M_PI) << " Hz; " << (w.empty() ? "none" : "some")
+                << " folds within " << aliasing_phase
+                << " rad of zero frequency per macro step" << std::endl;
+    if (!w.empty())
+      problem.warn(w);
+  }
   run_time_loop(*coupling,
                 problem,
                 directory,

@@ -85,15 +85,20 @@ public:
   std::vector<std::string> envelope_files() const override;
   void write_envelope_file(const std::string &name, std::ostream &out) const override;
   /**
-   * Model::select_part(), and the ties eliminated in it: those of an
-   * implicit node (a tie of an explicit node crosses the interface,
-   * interface_rows()); the solids are implicit. A decomposition of a frame
-   * with rigid links is refused (not yet).
+   * Model::select_part(), and the links eliminated in it (place_links()):
+   * the ties of implicit nodes and the rigid links between implicit nodes
+   * (a tie of an explicit node and a rigid link with one explicit node cross
+   * the interface, interface_rows(); a rigid link between explicit nodes is
+   * six bilateral rows of the explicit part); the solids are implicit.
    */
   void select_part(const std::vector<unsigned char> &parts, const int part) override;
   /**
-   * The ties of the explicit nodes to the implicit solids as interface rows
-   * `U_P,c - sum_j R_cj u_j = 0` (G3'', doc/theory.md 11.3), whole numbering.
+   * The links across the interface as interface rows `U_P,c - sum_j R_cj u_j
+   * = 0` (G3'', doc/theory.md 11.3), whole numbering: the ties of explicit
+   * nodes to the (implicit) solids, and the rigid links with one explicit
+   * node, written with that node as the slave (the explicit side one DoF per
+   * row). A master DoF eliminated in the implicit part (a chain of links) is
+   * replaced by its constraint line.
    */
   std::vector<SparseRow> interface_rows() const override;
   /** The solids of the frame (null if it has none). */
@@ -179,6 +184,13 @@ private:
   void close_constraints();
   /** Whether @p node touches an explicit cell of the current parts. */
   bool node_explicit(const std::string &node) const;
+  /**
+   * The side of every link for part @p part (link_sides) and each rigid
+   * link's orientation: the explicit node as the slave of a link across
+   * the interface (`u_m = u_s + theta_s x (x_m - x_s)`, `theta_m =
+   * theta_s` is the same link), the description's otherwise.
+   */
+  void place_links(const int part);
 
   const FrameDescription frame;
   Triangulation<1, 3> triangulation;
@@ -205,6 +217,18 @@ private:
   std::vector<LinkRows> links;
   /** The node (tied, or slave) of each link. */
   std::vector<std::string> link_nodes;
+  /** Where a link acts in a decomposed model (place_links()). */
+  enum class LinkSide
+  {
+    /** an AffineConstraints line (both nodes implicit, or no decomposition) */
+    eliminated,
+    /** bilateral rows of the explicit part (both nodes explicit) */
+    explicit_rows,
+    /** interface rows (G3''), the slave explicit, the master implicit */
+    interface
+  };
+  /** Per link (empty: every link eliminated, or rows with links_as_rows). */
+  std::vector<LinkSide> link_sides;
   /** The joints and supports, before the links are added and it is closed. */
   AffineConstraints<double> open_constraints;
   /**
