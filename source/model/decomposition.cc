@@ -19,8 +19,9 @@ std::string rope_message(const std::string &name)
 
 /**
  * The rows @p links (whole numbering) split into their explicit and implicit
- * parts: the explicit part must be one DoF of the explicit subdomain with
- * coefficient 1, every other entry a DoF of the implicit one (G3'', doc/theory.md 11.3).
+ * parts (G3'', doc/theory.md 11.3): a DoF of one subdomain only goes to that
+ * side's row; a DoF of both (an interface DoF) to the explicit side if it is
+ * the row's first (the slave of a link), to the implicit side otherwise.
  */
 void add_link_rows(const std::vector<SparseRow> &links, Decomposition &decomposition)
 {
@@ -33,26 +34,28 @@ void add_link_rows(const std::vector<SparseRow> &links, Decomposition &decomposi
     {
       const auto in_E = std::lower_bound(e.begin(), e.end(), link.dofs[k]);
       const auto in_I = std::lower_bound(i.begin(), i.end(), link.dofs[k]);
-      if (k == 0 && in_E != e.end() && *in_E == link.dofs[k])
+      const bool E = in_E != e.end() && *in_E == link.dofs[k],
+                 I = in_I != i.end() && *in_I == link.dofs[k];
+      if (E && (k == 0 || !I))
       {
         row_E.dofs.push_back(in_E - e.begin());
         row_E.coefficients.push_back(link.coefficients[k]);
       }
-      else if (k > 0 && in_I != i.end() && *in_I == link.dofs[k])
+      else if (I)
       {
         row_I.dofs.push_back(in_I - i.begin());
         row_I.coefficients.push_back(link.coefficients[k]);
       }
     }
-    AssertThrow(row_E.dofs.size() == 1 && row_E.coefficients[0] == 1.,
-                ExcMessage("Model/Decomposition: a tie across the interface must have "
-                           "its beam node in the explicit subdomain and its solid in "
-                           "the implicit one"));
-    for (const SparseRow &other : decomposition.rows[0])
-      AssertThrow(other.dofs[0] != row_E.dofs[0],
-                  ExcMessage("Model/Decomposition: a tied node joins members of both "
-                             "subdomains: put all the members at a tied node on one "
-                             "side"));
+    AssertThrow(!row_E.dofs.empty() && !row_I.dofs.empty(),
+                ExcMessage("Model/Decomposition: a tie or rigid link across the "
+                           "interface has no DoF on one side"));
+    if (row_E.dofs.size() == 1)
+      for (const SparseRow &other : decomposition.rows[0])
+        AssertThrow(other.dofs.size() != 1 || other.dofs[0] != row_E.dofs[0],
+                    ExcMessage("Model/Decomposition: a tied node joins members of both "
+                               "subdomains: put all the members at a tied node on one "
+                               "side"));
     decomposition.rows[0].push_back(row_E);
     decomposition.rows[1].push_back(row_I);
   }

@@ -338,8 +338,13 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
     AssertThrow(!restricted,
                 ExcMessage("Loading/Excited members: not available for a frame with "
                            "solids (the whole model is excited)"));
-    if (selected_part != 0) // the solids are implicit in a decomposed model
-      solids->assemble(constraints, system, omega2, mass);
+    // in a decomposed model, the solid cells of the part (after the beams'
+    // in parts, cell_centres())
+    std::vector<bool> owned;
+    if (selected_part >= 0)
+      for (unsigned int c = triangulation.n_active_cells(); c < parts.size(); ++c)
+        owned.push_back(parts[c] == selected_part);
+    solids->assemble(constraints, system, omega2, mass, owned);
     if (frame.solids.degree == 1)
       system.warnings.push_back(
           "Model/Frame/Solid element degree = 1: linear hexahedra lock in bending (a "
@@ -505,9 +510,13 @@ double Frame::add_ropes(DiscreteSystem &system) const
 
 std::vector<Point<3>> Frame::cell_centres() const
 {
+  // the beam cells, then the solid cells (a decomposition assigns both)
   std::vector<Point<3>> centres(triangulation.n_active_cells());
   for (const auto &cell : triangulation.active_cell_iterators())
     centres[cell->active_cell_index()] = cell->center();
+  if (solids)
+    for (const auto &c : solids->cell_centres())
+      centres.push_back(c);
   return centres;
 }
 
@@ -521,9 +530,13 @@ double Frame::size() const
 
 std::vector<std::string> Frame::cell_members() const
 {
+  // the beam cells' members, then the solid cells' solids
   std::vector<std::string> names(cells.size());
   for (unsigned int c = 0; c < cells.size(); ++c)
     names[c] = frame.members[cells[c].member].name;
+  if (solids)
+    for (const unsigned int s : solids->cell_solids())
+      names.push_back(solids->solid_name(s));
   return names;
 }
 

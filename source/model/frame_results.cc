@@ -44,14 +44,17 @@ void Frame::write_series_vtu(const std::string &series,
       constraints.distribute(x);
     }
   AssertThrow(u.size() > 0, ExcMessage("a solids snapshot without displacement"));
-  // the subdomain of the solid cells (the hook of Model::select_part()):
-  // none, a frame with solids is not decomposed yet
-  solids->stress_output().write_vtu(out,
-                                    u,
-                                    v.size() > 0 ? &v : nullptr,
-                                    snapshot.time,
-                                    snapshot.cycle,
-                                    Vector<float>());
+  // the subdomain of the solid cells: their parts follow the beam cells'
+  const Vector<float> all = subdomain_field();
+  Vector<float> subdomain;
+  if (all.size() > triangulation.n_active_cells())
+  {
+    subdomain.reinit(all.size() - triangulation.n_active_cells());
+    for (unsigned int c = 0; c < subdomain.size(); ++c)
+      subdomain[c] = all[triangulation.n_active_cells() + c];
+  }
+  solids->stress_output().write_vtu(
+      out, u, v.size() > 0 ? &v : nullptr, snapshot.time, snapshot.cycle, subdomain);
 }
 
 void Frame::update_envelopes(const double time, const Vector<double> &U) const
@@ -116,9 +119,16 @@ void Frame::write_vtu(std::ostream &out, const VtuSnapshot &snapshot) const
   for (unsigned int c = 0; c < cells.size(); ++c)
     member_id[c] = cells[c].member;
   data_out.add_data_vector(member_id, "member", DataOut<1, 3>::type_cell_data);
-  const Vector<float> subdomain = subdomain_field();
+  // the beam cells come first in the parts (then the solids')
+  Vector<float> subdomain = subdomain_field();
   if (subdomain.size() > 0)
+  {
+    Vector<float> beams(triangulation.n_active_cells());
+    for (unsigned int c = 0; c < beams.size(); ++c)
+      beams[c] = subdomain[c];
+    subdomain.swap(beams);
     data_out.add_data_vector(subdomain, "subdomain", DataOut<1, 3>::type_cell_data);
+  }
   const char *force_names[6] = {"N", "Vy", "Vz", "T", "My", "Mz"};
   for (unsigned int k = 0; k < 6; ++k)
     data_out.add_data_vector(forces[k], force_names[k], DataOut<1, 3>::type_cell_data);

@@ -1,6 +1,7 @@
 // The rows a frame adds to its system: contacts and the constraint rows of
 // ties and rigid links (explicit scheme).
 #include <hati/model/frame.h>
+#include <hati/model/frame_solids.h>
 #include <hati/model/solid_tie.h>
 
 namespace hati
@@ -85,8 +86,8 @@ void Frame::add_link_rows(DiscreteSystem &system) const
 
 void Frame::place_links(const int part)
 {
-  // the rigid links come first in links (add_link_constraints()); a tie's
-  // master is a solid, always implicit
+  // the rigid links come first in links (add_link_constraints()), then the
+  // ties, whose master is a solid face
   const auto &rigid = frame.solids.rigid_links;
   link_sides.assign(links.size(), LinkSide::eliminated);
   for (unsigned int k = 0; k < rigid.size(); ++k)
@@ -106,13 +107,40 @@ void Frame::place_links(const int part)
                            : (m || s ? LinkSide::interface : LinkSide::eliminated);
   }
   for (unsigned int k = rigid.size(); k < links.size(); ++k)
-    if (part >= 0 && node_explicit(link_nodes[k]))
-      link_sides[k] = LinkSide::interface;
+  {
+    if (part < 0)
+      continue;
+    const auto &tie = frame.solids.ties[k - rigid.size()];
+    const int solid = solid_part(tie.face.solid);
+    AssertThrow(solid >= 0,
+                ExcMessage("Model/Decomposition: the solid '" + tie.face.solid +
+                           "' of the tie '" + tie.name +
+                           "' lies in both subdomains: put the whole solid on one side "
+                           "(its name in Explicit members, or all its cells in the "
+                           "Explicit region)"));
+    const bool n = node_explicit(link_nodes[k]), s = solid == 0;
+    link_sides[k] = n && s ? LinkSide::explicit_rows
+                           : (n || s ? LinkSide::interface : LinkSide::eliminated);
+  }
+}
+
+int Frame::solid_part(const std::string &solid) const
+{
+  // the solid cells' parts follow the beam cells' (cell_centres())
+  const std::vector<unsigned int> cell_solid = solids->cell_solids();
+  const unsigned int first = triangulation.n_active_cells();
+  int part = -2;
+  for (unsigned int c = 0; c < cell_solid.size(); ++c)
+    if (solids->solid_name(cell_solid[c]) == solid && first + c < parts.size())
+      part = part == -2 || part == parts[first + c] ? parts[first + c] : -1;
+  return part == -2 ? 1 : part;
 }
 
 std::vector<SparseRow> Frame::interface_rows() const
 {
-  // U_P - R u_master = 0, the explicit node P one DoF per row (G3'')
+  // U_P - R u_master = 0 (G3''): a tie of an explicit node or a rigid link
+  // (turned so that the explicit node is P): C_E one DoF per row; a tie of an
+  // implicit node to an explicit solid: C_E the face's B1 row
   std::vector<SparseRow> rows;
   if (parts.empty())
     return rows;

@@ -130,7 +130,8 @@ void FrameSolids::add_pattern(const AffineConstraints<double> &constraints,
 void FrameSolids::assemble(const AffineConstraints<double> &constraints,
                            DiscreteSystem &system,
                            double &omega2,
-                           double &mass) const
+                           double &mass,
+                           const std::vector<bool> &owned) const
 {
   const QGauss<3> quadrature(fe.degree + 1);
   FEValues<3> values(
@@ -145,6 +146,8 @@ void FrameSolids::assemble(const AffineConstraints<double> &constraints,
   std::map<std::vector<long long>, double> bounds;
   for (const auto &cell : dof_handler.active_cell_iterators())
   {
+    if (!owned.empty() && !owned[cell->active_cell_index()])
+      continue;
     const Material &m = materials[cell->material_id()];
     values.reinit(cell);
     ke = 0.;
@@ -244,6 +247,22 @@ void FrameSolids::stresses(const Vector<double> &U,
       points.push_back(values.quadrature_point(q));
     }
   }
+}
+
+std::vector<Point<3>> FrameSolids::cell_centres() const
+{
+  std::vector<Point<3>> centres(triangulation.n_active_cells());
+  for (const auto &cell : triangulation.active_cell_iterators())
+    centres[cell->active_cell_index()] = cell->center();
+  return centres;
+}
+
+std::vector<unsigned int> FrameSolids::cell_solids() const
+{
+  std::vector<unsigned int> solid(triangulation.n_active_cells());
+  for (const auto &cell : triangulation.active_cell_iterators())
+    solid[cell->active_cell_index()] = cell->material_id();
+  return solid;
 }
 
 double FrameSolids::size() const

@@ -143,8 +143,9 @@ void DecompositionParameters::declare_parameters(ParameterHandler &prm)
       "",
       Patterns::Anything(),
       "Frames: names of the members of the explicit subdomain, 'member, member, "
-      "...' (members of a mesh file by their physical name); added to the cells of "
-      "the Explicit region. Ignored by single-domain methods.");
+      "...' (members of a mesh file by their physical name), and of solids to put "
+      "there (Model/Frame/Solids; by default solids are implicit); added to the "
+      "cells of the Explicit region. Ignored by single-domain methods.");
 }
 
 void DecompositionParameters::parse_parameters(ParameterHandler &prm)

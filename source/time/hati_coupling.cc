@@ -101,8 +101,8 @@ HATICoupling::HATICoupling(const Decomposition &decomposition,
 
 void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass)
 {
-  const std::vector<unsigned int> &dofs_E = interface->explicit_dofs();
-  const unsigned int n_gamma = dofs_E.size();
+  const std::vector<SparseRow> &rows_E = interface->explicit_rows();
+  const unsigned int n_gamma = rows_E.size();
   const double dt = explicit_integrator.time_step();
   Vector<double> &increment_sum = increments.increment_sum,
                  &increment_weighted = increments.increment_weighted,
@@ -119,12 +119,13 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
     if (record_damping)
       record.record_velocity(j, explicit_integrator.velocity());
     // interface displacement increment of this step, dt C_E V_{j-1/2}
-    // (C_E: +1 on the explicit DoF of each interface pair)
-    const double *const V = explicit_integrator.velocity().data();
+    // (C_E: +1 on the explicit DoF of each interface pair; a sparse row for
+    // a tie to an explicit solid, G3'')
+    const Vector<double> &V = explicit_integrator.velocity();
     const double weight = (2. * j - 1.) / (2. * m);
     for (unsigned int k = 0; k < n_gamma; ++k)
     {
-      const double du = dt * V[dofs_E[k]];
+      const double du = dt * rows_E[k].apply(V);
       increment_sum[k] += du;
       increment_weighted[k] += weight * du;
     }
@@ -143,11 +144,19 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
     {
       const double lambda = w0 * lambda_n[k] + w1 * lambda_end[k];
       if (lambda != 0.)
-        explicit_view.add_dof_force(dofs_E[k], lambda);
+        for (unsigned int i = 0; i < rows_E[k].dofs.size(); ++i)
+          explicit_view.add_dof_force(rows_E[k].dofs[i],
+                                      rows_E[k].coefficients[i] * lambda);
     }
     if (j == m)
       for (unsigned int k = 0; k < n_gamma; ++k)
-        v_end[k] = explicit_view.integer_velocity(dofs_E[k]);
+      {
+        double v = 0.;
+        for (unsigned int i = 0; i < rows_E[k].dofs.size(); ++i)
+          v += rows_E[k].coefficients[i] *
+               explicit_view.integer_velocity(rows_E[k].dofs[i]);
+        v_end[k] = v;
+      }
     explicit_view.finish_step();
     if (pass)
       record.record_load_weights(j, explicit_view);

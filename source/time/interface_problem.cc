@@ -26,13 +26,10 @@ InterfaceProblem::InterfaceProblem(const Decomposition &decomposition,
                                    const double gamma)
     : decomposition(decomposition)
 {
-  // (G3'') C_E one DoF per row with coefficient 1 (Decomposition), C_I
-  // general
+  // (G3'') C_E and C_I sparse rows (Decomposition)
   const unsigned int n_gamma = decomposition.n_interface_dofs();
   rows_E = decomposition.rows[0];
   rows_I = decomposition.rows[1];
-  for (const SparseRow &row : rows_E)
-    dofs_E.push_back(row.dofs[0]);
   for (auto *v : {&free_jump, &implicit_guess, &solve_work, &u_old, &implicit_part})
     v->reinit(n_gamma);
   const unsigned int n_I = decomposition.parts[1].system.n_dofs();
@@ -102,6 +99,11 @@ void InterfaceProblem::initial_multiplier(CDLagrange &explicit_integrator,
   std::vector<Vector<double>> columns(n_gamma, Vector<double>(n_I));
   LAPACKFullMatrix<double> B(n_gamma, n_gamma);
   Vector<double> b(n_I), e(n_gamma);
+  // C_E M_E^-1 C_E^T: diagonal for the rows of single DoFs
+  std::vector<const SparseRow *> explicit_rows;
+  for (const SparseRow &row : rows_E)
+    explicit_rows.push_back(&row);
+  const FullMatrix<double> W_E = delassus(explicit_rows, minv);
   for (unsigned int l = 0; l < n_gamma; ++l)
   {
     b = 0.;
@@ -110,10 +112,7 @@ void InterfaceProblem::initial_multiplier(CDLagrange &explicit_integrator,
     add_transpose(rows_I, e, b);
     implicit.solve_with_mass(columns[l], b);
     for (unsigned int k = 0; k < n_gamma; ++k)
-      B(k, l) = rows_I[k].apply(columns[l]) +
-                (k == l ? minv[rows_E[k].dofs[0]] * rows_E[k].coefficients[0] *
-                              rows_E[k].coefficients[0]
-                        : 0.);
+      B(k, l) = rows_I[k].apply(columns[l]) + W_E(k, l);
   }
   B.compute_lu_factorization();
   B.solve(rhs);

@@ -99,11 +99,15 @@ void RampSuperposition::find_reach()
   std::vector<int> index(system.n_dofs(), -1);
   for (unsigned int r = 0; r < nR; ++r)
     index[reach_dofs[r]] = r;
-  interface_reach_index.clear();
-  for (const unsigned int d : interface.explicit_dofs())
+  interface_reach_rows.clear();
+  for (const SparseRow &row : interface.explicit_rows())
   {
-    AssertThrow(index[d] >= 0, ExcInternalError());
-    interface_reach_index.push_back(index[d]);
+    interface_reach_rows.emplace_back();
+    for (unsigned int i = 0; i < row.dofs.size(); ++i)
+    {
+      AssertThrow(index[row.dofs[i]] >= 0, ExcInternalError());
+      interface_reach_rows.back().emplace_back(index[row.dofs[i]], row.coefficients[i]);
+    }
   }
   for (auto *v : {&dissipation_p, &dissipation_p_prev, &dissipation_c})
     v->reinit(nR);
@@ -527,7 +531,12 @@ double RampSuperposition::ramp_dissipation(const Response &ramp,
     // free velocity
     const double s = dt * double(j) / m;
     for (unsigned int l = 0; l < n_gamma; ++l)
-      impulse_term += p[interface_reach_index[l]] * s * lambda[l];
+    {
+      double cp = 0.; // C_E,l p on the reach
+      for (const auto &[r, c] : interface_reach_rows[l])
+        cp += c * p[r];
+      impulse_term += cp * s * lambda[l];
+    }
     if (with_impulses)
       for (unsigned int c = 0; c < nrc; ++c)
       {

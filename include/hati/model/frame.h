@@ -89,7 +89,9 @@ public:
    * the ties of implicit nodes and the rigid links between implicit nodes
    * (a tie of an explicit node and a rigid link with one explicit node cross
    * the interface, interface_rows(); a rigid link between explicit nodes is
-   * six bilateral rows of the explicit part); the solids are implicit.
+   * six bilateral rows of the explicit part); a tie across when its node
+   * and its solid are on different sides. The solid cells' parts follow the
+   * beam cells' in @p parts (cell_centres()).
    */
   void select_part(const std::vector<unsigned char> &parts, const int part) override;
   /**
@@ -191,6 +193,11 @@ private:
    * theta_s` is the same link), the description's otherwise.
    */
   void place_links(const int part);
+  /**
+   * The part (0 explicit, 1 implicit) of every cell of the solid @p solid
+   * in the current parts, -1 if they differ; 1 without a decomposition.
+   */
+  int solid_part(const std::string &solid) const;
 
   const FrameDescription frame;
   Triangulation<1, 3> triangulation;
@@ -224,7 +231,10 @@ private:
     eliminated,
     /** bilateral rows of the explicit part (both nodes explicit) */
     explicit_rows,
-    /** interface rows (G3''), the slave explicit, the master implicit */
+    /**
+     * interface rows (G3''): a rigid link's slave explicit and its master
+     * implicit; a tie's node and solid on different sides
+     */
     interface
   };
   /** Per link (empty: every link eliminated, or rows with links_as_rows). */

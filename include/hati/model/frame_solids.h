@@ -75,12 +75,19 @@ public:
    * vectors `M r_d` of the solid cells into @p system, condensed with
    * @p constraints; raises @p omega2 (1/s^2) to the largest element bound
    * of omega^2 (element eigenproblems with the lumped mass) and adds the
-   * solids' mass (kg) to @p mass.
+   * solids' mass (kg) to @p mass. Only the cells flagged in @p owned (by
+   * active cell index; empty: every cell), the cells of one subdomain.
    */
   void assemble(const AffineConstraints<double> &constraints,
                 DiscreteSystem &system,
                 double &omega2,
-                double &mass) const;
+                double &mass,
+                const std::vector<bool> &owned = {}) const;
+
+  /** The centre of every active cell (m), by active cell index. */
+  std::vector<Point<3>> cell_centres() const;
+  /** The index of the solid of every active cell. */
+  std::vector<unsigned int> cell_solids() const;
 
   /** 1 on the free solid DoFs of component d in @p influence[d]. */
   void add_influence(const std::vector<bool> &fixed,

@@ -53,10 +53,11 @@ public:
 
   /** Number of interface DoF pairs n_G. */
   unsigned int size() const { return rows_E.size(); }
-  /** The rows C_E (+1 on the explicit DoF of each pair). */
+  /**
+   * The rows C_E (+1 on the explicit DoF of each pair; a sparse row for a
+   * tie to an explicit solid, G3''): the micro steps add `C_E^T Lambda_j`.
+   */
   const std::vector<SparseRow> &explicit_rows() const { return rows_E; }
-  /** The explicit DoF of each pair (the micro steps add forces there). */
-  const std::vector<unsigned int> &explicit_dofs() const { return dofs_E; }
 
   /**
    * (G3') @p H_inverse = `(H_E + H_I)^-1` for the explicit part @p H_E
@@ -121,8 +122,6 @@ public:
 private:
   const Decomposition &decomposition;
   std::vector<SparseRow> rows_E, rows_I;
-  /** The explicit DoF of each interface pair (rows_E: +1 on it). */
-  std::vector<unsigned int> dofs_E;
   /** gamma DT C_I M_eff^-1 C_I^T (G3'). */
   DenseColumns H_I;
   /** M_eff^-1 C_I^T, if it fits in max_link_column_entries (empty: solves). */

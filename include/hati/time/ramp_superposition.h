@@ -296,8 +296,8 @@ private:
   std::vector<Vector<double>> pass_stiffness_reach;
   /** S V of a micro step on every explicit DoF (reach not all DoFs). */
   Vector<double> stiffness_velocity_full;
-  /** Reach index of the explicit DoF of each interface pair. */
-  std::vector<unsigned int> interface_reach_index;
+  /** Each interface row C_E,l as (reach index, coefficient) pairs. */
+  std::vector<std::vector<std::pair<unsigned int, double>>> interface_reach_rows;
   /** Work vectors of ramp_dissipation(). */
   mutable Vector<double> dissipation_p, dissipation_p_prev, dissipation_c, dissipation_g,
       dissipation_q;
