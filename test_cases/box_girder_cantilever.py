@@ -4,6 +4,9 @@ hexahedra, clamped by Solid supports, loaded through a tied beam node)
 against Timoshenko beam theory (issue #25,
 parameter_files/box_girder_cantilever.prm):
 
+- Solid cuts (theory 11.4) of the statically loaded girder on an element
+  face and inside cells against statics: V = P (2e-3), M = P (6 - a)
+  (1e-5), the other four resultants below 1e-6 P;
 - static tip deflection along Z and along Y within 2 % of
   P L^3 / (3 E I) + P L / (G A_s), A_s from the strain energy of the
   thin-walled shear flow; a point mass at the tied node weighs on the solid
@@ -89,16 +92,36 @@ for k, f in enumerate(timoshenko_frequencies(Iz, 1e6 * A, 2, rotary=0.0)):
     ctx.check("Timoshenko equation, A_s = 1e6 A, no rotary inertia: f_%d = Euler-Bernoulli (Hz)" % (k + 1),
               f, eb[k], rel=1e-5)
 
-# static: tip deflection along Z (the parameter file) and along Y
+# static: tip deflection along Z (the parameter file) and along Y; the
+# girder's cuts (theory 11.4) on an element face (x = 3: 0.012 + 10 x
+# 0.2988 m) and inside cells (x = 1, 2.5) against the statics of the part
+# beyond them: with the tip load F at x = 6, V = F, M = (6 - a) e_x x F
+cuts = {"c1": 1.0, "c25": 2.5, "c3": 3.0}
+cut_entry = "Model/Frame/Solid cuts=" + "; ".join("%s: girder, x=%g" % c for c in cuts.items())
 for axis, column, load, I, As in (("Z", "tipuz", "0, 0, -10000", Iy, As_z),
                                   ("Y", "tipuy", "0, 10000, 0", Iz, As_y)):
-    out, _ = ctx.run(prm, "static_" + axis, ["Model/Frame/Nodal loads=tip: " + load])
+    out, _ = ctx.run(prm, "static_" + axis, ["Model/Frame/Nodal loads=tip: " + load, cut_entry])
     w = abs(read_csv(out + "/history.csv")[column][0])
     w_ref = P * L**3 / (3 * E * I) + P * L / (G * As)
     print("     (Euler-Bernoulli %.6g m, shear %.6g m)" % (P * L**3 / (3 * E * I), P * L / (G * As)))
     ctx.check("static tip deflection along %s (m), Timoshenko" % axis, w, w_ref, rel=0.02)
     if axis == "Z":
         w_z = w
+    f = read_csv(out + "/section_forces.csv")
+    F = [float(v) for v in load.split(",")]
+    for name, a in cuts.items():
+        row = f[f["member"] == name][0]
+        reference = {"N": 0.0, "Vy": F[1], "Vz": F[2], "T": 0.0,
+                     "My": -(6 - a) * F[2], "Mz": (6 - a) * F[1]}
+        # the shear force: the webs' (flanges') parabolic shear flow in one
+        # quadratic element through the wall (measured below 1e-3); the
+        # bending moment: linear stresses (measured below 1e-6)
+        V, M = ("Vz", "My") if axis == "Z" else ("Vy", "Mz")
+        ctx.check("load along %s: cut %s %s (N)" % (axis, name, V), row[V], reference[V], rel=2e-3)
+        ctx.check("load along %s: cut %s %s (N m)" % (axis, name, M), row[M], reference[M], rel=1e-5)
+        ctx.check("load along %s: cut %s other forces / P (N, N m / m)" % (axis, name),
+                  max(abs(row[k] - reference[k]) for k in ("N", "Vy", "Vz", "T", "My", "Mz")
+                      if k not in (V, M)) / P, 0.0, abs_tol=1e-6)
 
 # a point mass at the tied node: gravity on it reaches the solid through the
 # tie like a nodal load m g (superposition: with minus without the mass)
