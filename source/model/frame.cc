@@ -575,7 +575,7 @@ void Frame::write_section_forces(std::ostream *out,
   constraints.distribute(u);
   section_force_output.write(out, time, u, cells, gravity);
   if (solids)
-    solids->cuts().write(out, time, u, section_force_output);
+    solids->cuts().write(out, time, u, gravity, section_force_output);
 }
 
 DofDescription Frame::describe_dof(const types::global_dof_index dof) const

@@ -105,6 +105,9 @@ public:
     return m.lambda * trace(strain) * unit_symmetric_tensor<3>() + 2. * m.mu * strain;
   }
 
+  /** The density (kg/m^3) of the solid of index @p solid. */
+  double density(const unsigned int solid) const { return materials[solid].rho; }
+
   /** Number of solids; the name of the solid of index @p solid. */
   unsigned int n_solids() const { return materials.size(); }
   const std::string &solid_name(const unsigned int solid) const
