@@ -6,7 +6,8 @@ parameter_files/box_girder_cantilever.prm):
 
 - Solid cuts (theory 11.4) of the statically loaded girder on an element
   face and inside cells against statics: V = P, M = P (6 - a) (1e-7,
-  measured 6e-9), the other four resultants below 1e-8 P;
+  measured 6e-9), the other four resultants below 1e-8 P; the same on a
+  girder along global Y (its local axes x = Y, y = X, z = -Z);
 - static tip deflection along Z and along Y within 2 % of
   P L^3 / (3 E I) + P L / (G A_s), A_s from the strain energy of the
   thin-walled shear flow; a point mass at the tied node weighs on the solid
@@ -122,6 +123,27 @@ for axis, column, load, I, As in (("Z", "tipuz", "0, 0, -10000", Iy, As_z),
         ctx.check("load along %s: cut %s other forces / P (N, N m / m)" % (axis, name),
                   max(abs(row[k] - reference[k]) for k in ("N", "Vy", "Vz", "T", "My", "Mz")
                       if k not in (V, M)) / P, 0.0, abs_tol=1e-8)
+
+# the girder along global +Y (coarse, 0.6 m elements): a cut x = a in its
+# local axes (x = Y, y = X, z = -Z, a frame member's default orientation)
+# is the plane Y = a; tip load F = (3e3, 0, -1e4) N and moment 500 N m
+# about Y at (0, 6, 0): N = 0, Vy = F.X, Vz = F.(-Z), T = 500, My = (M +
+# r x F).X, Mz = (M + r x F).(-Z) with r = (0, 6 - a, 0)
+out, _ = ctx.run(prm, "static_along_Y",
+                 ["Model/Frame/Nodes=tip: 0, 6, 0; stub: 0, 6.1, 0",
+                  "Model/Frame/Members=stub: tip, stub, box, light, 1",
+                  "Model/Frame/Solids=girder: box girder, 0, 0, 0, 0, 6, 0, 0.4, 0.6, 0.012, 0.016, 0.6, steel, 6",
+                  "Model/Frame/Solid supports=girder: y=0", "Model/Frame/Ties=end: tip, girder, y=6",
+                  "Model/Frame/Nodal loads=tip: 3000, 0, -10000, 0, 500, 0",
+                  "Model/Frame/Solid cuts=a: girder, x=2.5"])
+row = read_csv(out + "/section_forces.csv")[0]
+M = np.array([0, 500.0, 0]) + np.cross([0, 6 - 2.5, 0], [3000.0, 0, -10000.0])
+# (round-off of the thin-walled solid's solve, measured 1.5e-8 P and
+# 5e-9 P L: tolerances 1e-7 P for forces, 1e-7 P L for moments)
+for k, ref in (("N", 0.0), ("Vy", 3000.0), ("Vz", 10000.0)):
+    ctx.check("girder along Y: cut x = 2.5 %s (N)" % k, row[k], ref, abs_tol=1e-7 * P)
+for k, ref in (("T", M[1]), ("My", M[0]), ("Mz", -M[2])):
+    ctx.check("girder along Y: cut x = 2.5 %s (N m)" % k, row[k], ref, abs_tol=1e-7 * P * L)
 
 # a point mass at the tied node: gravity on it reaches the solid through the
 # tie like a nodal load m g (superposition: with minus without the mass)
