@@ -15,8 +15,9 @@ using namespace dealii;
  * The 3D solids of a frame model and how they hold to the beams, as plain
  * data (doc/user_guide.md "Solids and ties"): the `Model/Frame` entries
  * `Solids`, `Solid element degree`, `Ties`, `Solid supports`, `Rigid
- * links`, `Solid cuts` and the solid items of `Monitor nodes`. FrameDescription holds one
- * of these; FrameSolids builds the meshes and the constraints from it.
+ * links`, `Solid cuts` and the solid items of `Monitor nodes`.
+ * FrameDescription holds one of these; FrameSolids builds the meshes, the
+ * constraints, the cuts and the monitors from it.
  */
 struct SolidDescription
 {
