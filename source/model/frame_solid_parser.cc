@@ -221,12 +221,14 @@ void declare_solid_entries(ParameterHandler &prm)
       "Cross-section cuts of solids, 'name: solid, <axis>=<value>; ...': the section "
       "forces N, Vy, Vz, T, My, Mz (N, N m, about the centroid of the cut, in the "
       "solid's local axes: a box girder's those of a frame member between its two "
-      "axis points, x along it; global for box and mesh) integrated from the "
-      "stresses over the plane axis = value (m, the coordinate along that local "
-      "axis from the global origin), the force of the part at larger coordinate "
-      "on the part at smaller coordinate (a beam's convention). Rows of "
-      "section_forces.csv (member = name, element 0, x = value) and the envelope, "
-      "at the rows of the Section force members.");
+      "axis points, x along it; global for box and mesh; N along the cut's axis, "
+      "then the next two axes cyclically) of the plane axis = value (m, the "
+      "coordinate along that local axis from the global origin), the force of the "
+      "part at larger coordinate on the part at smaller coordinate (a beam's "
+      "convention), integrated from the stresses over the layer of cells at the "
+      "plane (doc/theory.md 11.4: exact in statics). Rows of section_forces.csv "
+      "(member = name, element 0, x = value) and the envelope, at the rows of the "
+      "Section force members.");
   prm.declare_entry("Rigid links",
                     "",
                     Patterns::Anything(),
