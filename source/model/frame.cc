@@ -7,6 +7,7 @@
 #include <hati/model/frame.h>
 #include <hati/model/frame_solids.h>
 #include <hati/model/memory_estimate.h>
+#include <hati/model/solid_cuts.h>
 #include <hati/model/solid_tie.h>
 
 #include <cmath>
@@ -24,6 +25,15 @@ std::vector<std::string> member_names(const FrameDescription &frame)
   std::vector<std::string> names;
   for (const auto &m : frame.members)
     names.push_back(m.name);
+  return names;
+}
+
+/** The name of every cut of a solid of @p frame, in order. */
+std::vector<std::string> cut_names(const FrameDescription &frame)
+{
+  std::vector<std::string> names;
+  for (const auto &c : frame.solids.cuts)
+    names.push_back(c.name);
   return names;
 }
 
@@ -49,7 +59,9 @@ struct Frame::MeshLayout
 
 Frame::Frame(const FrameDescription &description)
     : frame(validated(description)), fe(FE_Q<1, 3>(1), 6),
-      section_force_output(member_names(description), description.section_force_members)
+      section_force_output(member_names(description),
+                           description.section_force_members,
+                           cut_names(description))
 {
 }
 
@@ -546,11 +558,13 @@ void Frame::write_section_forces(std::ostream *out,
                                  const double time,
                                  const Vector<double> &U) const
 {
-  if (frame.section_force_members.empty())
+  if (frame.section_force_members.empty() && frame.solids.cuts.empty())
     return;
   Vector<double> u(U);
   constraints.distribute(u);
   section_force_output.write(out, time, u, cells, gravity);
+  if (solids)
+    solids->cuts().write(out, time, u, gravity, section_force_output);
 }
 
 DofDescription Frame::describe_dof(const types::global_dof_index dof) const

@@ -335,9 +335,9 @@ std::vector<std::string> FrameDescription::rope_only_nodes() const
 namespace
 {
 /**
- * Solids, ties, solid supports and rigid links: names, materials, the
- * solids and nodes they name; a tied or slave node is a member node that no
- * support fixes, tied or slaved once.
+ * Solids, ties, solid supports, rigid links, cuts and solid monitors:
+ * names, materials, the solids and nodes they name; a tied or slave node is a member node
+ * that no support fixes, tied or slaved once.
  */
 void validate_solids(const FrameDescription &d, const std::set<std::string> &used_nodes)
 {
@@ -378,6 +378,26 @@ void validate_solids(const FrameDescription &d, const std::set<std::string> &use
   }
   for (const auto &f : S.supports)
     require_known(solids, f.solid, "Solid supports", "a support", "solid", "Solids");
+  std::set<std::string> cut_names,
+      monitor_names(d.monitor_nodes.begin(), d.monitor_nodes.end());
+  for (const auto &c : S.cuts)
+  {
+    check_name(c.name, "Model/Frame/Solid cuts", "cut");
+    require_known(
+        solids, c.solid, "Solid cuts", "cut '" + c.name + "'", "solid", "Solids");
+    require(cut_names.insert(c.name).second,
+            "Solid cuts",
+            "cut '" + c.name + "' is defined twice");
+  }
+  for (const auto &m : S.monitors)
+  {
+    check_name(m.name, "Model/Frame/Monitor nodes", "monitor", NameKind::node);
+    require_known(
+        solids, m.solid, "Monitor nodes", "monitor '" + m.name + "'", "solid", "Solids");
+    require(monitor_names.insert(m.name).second,
+            "Monitor nodes",
+            "monitor '" + m.name + "' is listed twice");
+  }
   for (const auto &l : S.rigid_links)
   {
     check_name(l.name, "Model/Frame/Rigid links", "rigid link");
@@ -434,5 +454,10 @@ void FrameDescription::validate() const
   for (const auto &m : section_force_members)
     require(
         member_names.count(m), "Section force members", "no member named '" + m + "'");
+  for (const auto &c : solids.cuts)
+    require(!member_names.count(c.name),
+            "Solid cuts",
+            "cut '" + c.name +
+                "' has the name of a member (section_forces.csv names both by it)");
 }
 } // namespace hati

@@ -108,19 +108,16 @@ void Frame::add_loads(const CommonModelParameters &common, DiscreteSystem &syste
 
 void Frame::add_monitors(DiscreteSystem &system) const
 {
-  for (const auto &node : frame.monitor_nodes)
+  // a tied node, the slave of a rigid link, a supported solid node: its
+  // values from the free DoFs
+  const auto add = [&](MonitorPoint &m)
   {
-    MonitorPoint m;
-    m.name = node;
     bool eliminated = false;
-    for (unsigned int c = 0; c < 6; ++c)
+    for (const auto dof : m.dofs)
     {
-      m.labels.push_back(component_labels[c]);
-      m.dofs.push_back(node_dofs.at(node)[c]);
-      const auto *entries = constraints.get_constraint_entries(m.dofs[c]);
+      const auto *entries = constraints.get_constraint_entries(dof);
       eliminated = eliminated || (entries != nullptr && !entries->empty());
     }
-    // a tied node or the slave of a rigid link: its values from the free DoFs
     if (eliminated)
       for (const auto dof : m.dofs)
       {
@@ -140,6 +137,30 @@ void Frame::add_monitors(DiscreteSystem &system) const
         m.rows.push_back(row);
       }
     system.monitors.push_back(m);
+  };
+  for (const auto &node : frame.monitor_nodes)
+  {
+    MonitorPoint m;
+    m.name = node;
+    for (unsigned int c = 0; c < 6; ++c)
+    {
+      m.labels.push_back(component_labels[c]);
+      m.dofs.push_back(node_dofs.at(node)[c]);
+    }
+    add(m);
   }
+  // the solid monitors: the translations of the nearest solid node
+  if (solids)
+    for (const auto &node : solids->monitor_nodes())
+    {
+      MonitorPoint m;
+      m.name = node.name;
+      for (unsigned int c = 0; c < 3; ++c)
+      {
+        m.labels.push_back(component_labels[c]);
+        m.dofs.push_back(node.dofs[c]);
+      }
+      add(m);
+    }
 }
 } // namespace hati

@@ -153,7 +153,10 @@ void FrameParameters::declare_parameters(ParameterHandler &prm)
                     "",
                     Patterns::Anything(),
                     "Nodes written to history.csv, 'node, node, ...' (columns "
-                    "NODE.ux ... NODE.urz, NODE.vx ... NODE.vrz).");
+                    "NODE.ux ... NODE.urz, NODE.vx ... NODE.vrz); items 'name: solid, "
+                    "x, y, z' (m), separated by ';' from the node names and each "
+                    "other, add the solid's node nearest to that point (columns "
+                    "name.ux ... name.uz, name.vx ... name.vz: translations only).");
   prm.declare_entry("Section force members",
                     "",
                     Patterns::Anything(),
@@ -573,7 +576,7 @@ void FrameParameters::parse_parameters(ParameterHandler &prm)
   parse_point_masses(prm, d);
   parse_supports(prm, d);
   d.hinged_joints = names(prm.get("Hinged joints"));
-  d.monitor_nodes = names(prm.get("Monitor nodes"));
+  parse_monitor_entry(prm.get("Monitor nodes"), d.monitor_nodes, d.solids);
   d.section_force_members = names(prm.get("Section force members"));
   parse_nodal_loads(prm, d);
   for (const Item &it : parse_frame_items(prm.get("Contacts"), "Contacts"))

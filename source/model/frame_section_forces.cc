@@ -26,16 +26,41 @@ std::array<double, 12> frame_cell_section_forces(const FrameCell &cell,
 }
 
 FrameSectionForces::FrameSectionForces(const std::vector<std::string> &member_names,
-                                       const std::vector<std::string> &output_members)
-    : member_names(member_names), output_members(output_members)
+                                       const std::vector<std::string> &output_members,
+                                       const std::vector<std::string> &other_rows)
+    : member_names(member_names), output_members(output_members),
+      enabled(!output_members.empty() || !other_rows.empty())
 {
 }
 
 std::string FrameSectionForces::header() const
 {
-  if (output_members.empty())
+  if (!enabled)
     return "";
   return "time,member,element,x,N,Vy,Vz,T,My,Mz";
+}
+
+void FrameSectionForces::add_row(std::ostream *out,
+                                 const double time,
+                                 const std::string &name,
+                                 const unsigned int element,
+                                 const double x,
+                                 const std::array<double, 6> &s)
+{
+  // envelope of N, My, Mz (components 0, 4, 5)
+  const unsigned int component[3] = {0, 4, 5};
+  for (unsigned int e = 0; e < 3; ++e)
+  {
+    const double v = std::abs(s[component[e]]);
+    if (v > envelope[e].value)
+      envelope[e] = {v, x, time, name};
+  }
+  if (out == nullptr)
+    return;
+  *out << time << ',' << name << ',' << element << ',' << x;
+  for (unsigned int k = 0; k < 6; ++k)
+    *out << ',' << s[k] + 0.; // + 0.: no "-0" in the file
+  *out << '\n';
 }
 
 void FrameSectionForces::write(std::ostream *out,
@@ -50,29 +75,23 @@ void FrameSectionForces::write(std::ostream *out,
       {
         const auto s = frame_cell_section_forces(cell, U, gravity);
         for (unsigned int end = 0; end < 2; ++end)
-        {
-          // envelope of N, My, Mz (components 0, 4, 5 of each end)
-          const unsigned int component[3] = {0, 4, 5};
-          for (unsigned int e = 0; e < 3; ++e)
-          {
-            const double v = std::abs(s[6 * end + component[e]]);
-            if (v > envelope[e].value)
-              envelope[e] = {v, cell.position + end * cell.length, time, name};
-          }
-          if (out == nullptr)
-            continue;
-          *out << time << ',' << name << ',' << cell.element << ','
-               << cell.position + end * cell.length;
-          for (unsigned int k = 0; k < 6; ++k)
-            *out << ',' << s[6 * end + k] + 0.; // + 0.: no "-0" in the file
-          *out << '\n';
-        }
+          add_row(out,
+                  time,
+                  name,
+                  cell.element,
+                  cell.position + end * cell.length,
+                  {{s[6 * end],
+                    s[6 * end + 1],
+                    s[6 * end + 2],
+                    s[6 * end + 3],
+                    s[6 * end + 4],
+                    s[6 * end + 5]}});
       }
 }
 
 SummaryEntries FrameSectionForces::summary_entries() const
 {
-  if (output_members.empty())
+  if (!enabled)
     return {};
   SummaryValue result = SummaryValue::object();
   const char *names[3] = {"N", "My", "Mz"};
@@ -88,7 +107,7 @@ SummaryEntries FrameSectionForces::summary_entries() const
 
 std::string FrameSectionForces::results_table() const
 {
-  if (output_members.empty())
+  if (!enabled)
     return "";
   std::ostringstream s;
   const char *names[3] = {"max |N|  (N)  ", "max |My| (N m)", "max |Mz| (N m)"};

@@ -214,6 +214,21 @@ void declare_solid_entries(ParameterHandler &prm)
                     "every translation of the nodes of the solid's boundary face on "
                     "that plane (m), or of its faces whose centre lies within r (m) of "
                     "the face's centroid, is fixed.");
+  prm.declare_entry(
+      "Solid cuts",
+      "",
+      Patterns::Anything(),
+      "Cross-section cuts of solids, 'name: solid, <axis>=<value>; ...': the section "
+      "forces N, Vy, Vz, T, My, Mz (N, N m, about the centroid of the cut, in the "
+      "solid's local axes: a box girder's those of a frame member between its two "
+      "axis points, x along it; global for box and mesh; N along the cut's axis, "
+      "then the next two axes cyclically) of the plane axis = value (m, the "
+      "coordinate along that local axis from the global origin), the force of the "
+      "part at larger coordinate on the part at smaller coordinate (a beam's "
+      "convention), integrated from the stresses over the layer of cells at the "
+      "plane (doc/theory.md 11.4: exact in statics). Rows of section_forces.csv "
+      "(member = name, element 0, x = value) and the envelope, at the rows of the "
+      "Section force members.");
   prm.declare_entry("Rigid links",
                     "",
                     Patterns::Anything(),
@@ -255,6 +270,41 @@ void parse_solid_entries(ParameterHandler &prm, SolidDescription &d)
   {
     expect_frame_item_values(it, "Rigid links", {2}, "2 (master node, slave node)");
     d.rigid_links.push_back({it.name, it.values[0], it.values[1]});
+  }
+  for (const Item &it : parse_frame_items(prm.get("Solid cuts"), "Solid cuts"))
+  {
+    expect_frame_item_values(it, "Solid cuts", {2}, "2 (solid, <axis>=<value>)");
+    SolidDescription::Cut c;
+    c.name = it.name;
+    c.solid = it.values[0];
+    const SolidDescription::FacePlane plane = parse_plane(it, 1, "Solid cuts");
+    c.axis = plane.axis;
+    c.value = plane.value;
+    d.cuts.push_back(c);
+  }
+}
+
+void parse_monitor_entry(const std::string &text,
+                         std::vector<std::string> &nodes,
+                         SolidDescription &solids)
+{
+  // plain node names (no ':') keep their comma-separated list
+  for (const auto &part : Utilities::split_string_list(text, ';'))
+  {
+    if (part.find(':') == std::string::npos)
+    {
+      for (const auto &n : Utilities::split_string_list(part, ','))
+        if (!Utilities::trim(n).empty())
+          nodes.push_back(Utilities::trim(n));
+      continue;
+    }
+    for (const Item &it : parse_frame_items(part, "Monitor nodes"))
+    {
+      expect_frame_item_values(
+          it, "Monitor nodes", {4}, "4 (solid, x, y, z) or plain node names");
+      solids.monitors.push_back(
+          {it.name, it.values[0], to_point(it, 1, "Monitor nodes")});
+    }
   }
 }
 } // namespace hati

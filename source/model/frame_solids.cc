@@ -5,11 +5,13 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <hati/model/frame_solids.h>
+#include <hati/model/solid_cuts.h>
 #include <hati/model/solid_mesh.h>
 #include <hati/model/solid_stress_output.h>
 #include <hati/model/solid_tie.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -42,6 +44,45 @@ std::vector<long long> shape_key(const DoFHandler<3>::active_cell_iterator &cell
   return key;
 }
 
+/**
+ * The node of solid @p solid (material id) nearest to @p point among the
+ * support points of @p dof_handler's cells: its translations' DoFs (plus
+ * @p offset) and its place.
+ */
+FrameSolids::MonitorNode nearest_node(const DoFHandler<3> &dof_handler,
+                                      const unsigned int solid,
+                                      const Point<3> &point,
+                                      const types::global_dof_index offset)
+{
+  const auto &fe = dof_handler.get_fe();
+  const auto &unit = fe.base_element(0).get_unit_support_points();
+  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+  FrameSolids::MonitorNode best;
+  best.distance = std::numeric_limits<double>::max();
+  for (const auto &cell : dof_handler.active_cell_iterators())
+  {
+    if (cell->material_id() != solid)
+      continue;
+    cell->get_dof_indices(dofs);
+    for (unsigned int k = 0; k < unit.size(); ++k)
+    {
+      // the cells are mapped by their vertices (MappingQ1)
+      Point<3> x;
+      for (const unsigned int v : cell->vertex_indices())
+        x += GeometryInfo<3>::d_linear_shape_function(unit[k], v) * cell->vertex(v);
+      const double d = x.distance(point);
+      if (d < best.distance)
+      {
+        best.distance = d;
+        best.node = x;
+        for (unsigned int c = 0; c < 3; ++c)
+          best.dofs[c] = dofs[fe.component_to_system_index(c, k)] + offset;
+      }
+    }
+  }
+  return best;
+}
+
 /** The index of every solid by name. */
 std::map<std::string, unsigned int> solid_index(const SolidDescription &d)
 {
@@ -65,7 +106,14 @@ FrameSolids::FrameSolids(const FrameDescription &frame,
   create_solid_mesh(frame.solids, triangulation);
   dof_handler.reinit(triangulation);
   dof_handler.distribute_dofs(fe);
+  const auto index = solid_index(frame.solids);
+  for (const auto &m : frame.solids.monitors)
+  {
+    monitors.push_back(nearest_node(dof_handler, index.at(m.solid), m.point, offset));
+    monitors.back().name = m.name;
+  }
   output = std::make_unique<SolidStressOutput>(*this);
+  cut_output = std::make_unique<SolidCuts>(*this, frame.solids);
 }
 
 FrameSolids::~FrameSolids() = default;
@@ -278,6 +326,14 @@ std::string FrameSolids::description() const
     << (frame.solids.solids.size() == 1 ? " solid: " : " solids: ")
     << triangulation.n_active_cells() << " hexahedra of degree " << fe.degree << ", "
     << dof_handler.n_dofs() << " DoFs";
+  for (unsigned int k = 0; k < monitors.size(); ++k)
+  {
+    const auto &m = monitors[k];
+    s << ", monitor '" << m.name << "' at the node (" << m.node[0] << ", " << m.node[1]
+      << ", " << m.node[2] << ") m, " << m.distance << " m from ("
+      << frame.solids.monitors[k].point[0] << ", " << frame.solids.monitors[k].point[1]
+      << ", " << frame.solids.monitors[k].point[2] << ")";
+  }
   return s.str();
 }
 } // namespace hati

@@ -136,13 +136,7 @@ void create_box_girder(const Solid &s, Triangulation<3> &t)
   }
   GridGenerator::create_triangulation_with_removed_cells(block, removed, t);
   // to the member's local axes: x = x0 + R^T p
-  // the default section orientation of a frame member (global Y, or X for
-  // a member along Y)
-  const Tensor<1, 3> axis = s.x1 - s.x0;
-  Tensor<1, 3> y_reference({0., 1., 0.});
-  if (std::abs(axis[1]) > (1. - 1e-9) * axis.norm())
-    y_reference = Tensor<1, 3>({1., 0., 0.});
-  const Tensor<2, 3> R = frame_rotation(s.x0, s.x1, y_reference);
+  const Tensor<2, 3> R = solid_local_axes(s);
   GridTools::transform(
       [&](const Point<3> &p)
       {
@@ -156,6 +150,24 @@ void create_box_girder(const Solid &s, Triangulation<3> &t)
 }
 
 } // namespace
+
+Tensor<2, 3> solid_local_axes(const Solid &s)
+{
+  if (s.kind != "box girder")
+  {
+    Tensor<2, 3> identity;
+    for (unsigned int d = 0; d < 3; ++d)
+      identity[d][d] = 1.;
+    return identity;
+  }
+  // the default section orientation of a frame member (global Y, or X for
+  // a member along Y)
+  const Tensor<1, 3> axis = s.x1 - s.x0;
+  Tensor<1, 3> y_reference({0., 1., 0.});
+  if (std::abs(axis[1]) > (1. - 1e-9) * axis.norm())
+    y_reference = Tensor<1, 3>({1., 0., 0.});
+  return frame_rotation(s.x0, s.x1, y_reference);
+}
 
 void create_solid_mesh(const SolidDescription &description,
                        Triangulation<3> &triangulation)

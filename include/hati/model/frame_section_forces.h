@@ -51,21 +51,41 @@ std::array<double, 12> frame_cell_section_forces(const FrameCell &cell,
  * The post-processor of a frame's section forces: the rows of
  * `section_forces.csv` for the `Section force members` (both ends of each of
  * their elements) and the envelope of the values written, in summary.json
- * (`section_force_envelope`) and in the results table. Without section force
- * members it writes nothing.
+ * (`section_force_envelope`) and in the results table; rows of other
+ * origins (the cuts of solids) join them through add_row(). Without section
+ * force members and other rows it writes nothing.
  */
 class FrameSectionForces
 {
 public:
   /**
    * @p member_names: the name of every member of the frame (in the order
-   * of FrameCell::member); @p output_members: the members to write.
+   * of FrameCell::member); @p output_members: the members to write;
+   * @p other_rows: the names of further rows given by add_row() (the cuts
+   * of solids, SolidCuts).
    */
   FrameSectionForces(const std::vector<std::string> &member_names,
-                     const std::vector<std::string> &output_members);
+                     const std::vector<std::string> &output_members,
+                     const std::vector<std::string> &other_rows = {});
 
-  /** Header of `section_forces.csv`; empty without section force members. */
+  /**
+   * Header of `section_forces.csv`; empty without section force members
+   * and other rows.
+   */
   std::string header() const;
+
+  /**
+   * One row of `section_forces.csv` at time @p time (s) for @p name, its
+   * element @p element and position @p x (m), the section forces @p s (N,
+   * Vy, Vz in N; T, My, Mz in N m), to @p out unless it is null; the
+   * envelope is updated.
+   */
+  void add_row(std::ostream *out,
+               const double time,
+               const std::string &name,
+               const unsigned int element,
+               const double x,
+               const std::array<double, 6> &s);
 
   /**
    * The rows at time @p time (s) for the displacement @p U (constraints
@@ -99,6 +119,8 @@ private:
   std::array<EnvelopeEntry, 3> envelope;
   const std::vector<std::string> member_names;
   const std::vector<std::string> output_members;
+  /** Whether any row is written (members or other rows). */
+  const bool enabled;
 };
 } // namespace hati
 

@@ -11,8 +11,9 @@ using namespace dealii;
 
 /**
  * Declare the `Model/Frame` entries of solids and their links to the beams:
- * `Solids`, `Solid element degree`, `Ties`, `Solid supports`, `Rigid links`
- * (doc/user_guide.md "Solids and ties"); the caller enters the subsection.
+ * `Solids`, `Solid element degree`, `Ties`, `Solid supports`, `Rigid links`,
+ * `Solid cuts` (doc/user_guide.md "Solids and ties"); the caller enters the
+ * subsection.
  */
 void declare_solid_entries(ParameterHandler &prm);
 
@@ -22,6 +23,17 @@ void declare_solid_entries(ParameterHandler &prm);
  * checked against the rest of the frame by FrameDescription::validate().
  */
 void parse_solid_entries(ParameterHandler &prm, SolidDescription &solids);
+
+/**
+ * The `Model/Frame/Monitor nodes` entry @p text: items separated by `;`,
+ * each either plain node names `node, node, ...` (into @p nodes) or a solid
+ * monitor `name: solid, x, y, z` (m, global axes; into @p solids.monitors,
+ * the solid's node nearest to that point). Throws one-line errors naming the
+ * entry and the item.
+ */
+void parse_monitor_entry(const std::string &text,
+                         std::vector<std::string> &nodes,
+                         SolidDescription &solids);
 } // namespace hati
 
 #endif

@@ -22,6 +22,7 @@ namespace hati
 {
 using namespace dealii;
 
+class SolidCuts;
 class SolidStressOutput;
 
 /**
@@ -33,7 +34,8 @@ class SolidStressOutput;
  * (positive for FE_Q(p)); the supports of solid faces and the ties of beam
  * nodes to solid faces (B1) as lines of the frame's AffineConstraints.
  * Its SolidStressOutput writes the stresses (`solids.pvd`,
- * `stress_envelope.vtu`, summary.json `solids`).
+ * `stress_envelope.vtu`, summary.json `solids`), its SolidCuts the section
+ * forces of the cuts; it finds the nodes of the solid monitors.
  */
 class FrameSolids
 {
@@ -110,6 +112,9 @@ public:
     return m.lambda * trace(strain) * unit_symmetric_tensor<3>() + 2. * m.mu * strain;
   }
 
+  /** The density (kg/m^3) of the solid of index @p solid. */
+  double density(const unsigned int solid) const { return materials[solid].rho; }
+
   /** Number of solids; the name of the solid of index @p solid. */
   unsigned int n_solids() const { return materials.size(); }
   const std::string &solid_name(const unsigned int solid) const
@@ -123,9 +128,32 @@ public:
    */
   SolidStressOutput &stress_output() const { return *output; }
 
+  /** The section forces of the cuts of the solids (`Solid cuts`). */
+  const SolidCuts &cuts() const { return *cut_output; }
+
+  /**
+   * A monitor point at a solid's node (`Monitor nodes` item `name: solid,
+   * x, y, z`): the node of the solid nearest to the requested point.
+   */
+  struct MonitorNode
+  {
+    std::string name;
+    /** The global DoFs of its translations x, y, z. */
+    std::array<types::global_dof_index, 3> dofs;
+    /** The node (m) and its distance from the requested point (m). */
+    Point<3> node;
+    double distance = 0.;
+  };
+  /** The monitor points at solid nodes, in the order of `Monitor nodes`. */
+  const std::vector<MonitorNode> &monitor_nodes() const { return monitors; }
+
   /** The diagonal of the box around the solids' vertices (m). */
   double size() const;
-  /** Number of cells and of DoFs, e.g. "2 solids: 640 hexahedra of degree 2". */
+  /**
+   * Number of cells and of DoFs, e.g. "2 solids: 640 hexahedra of degree
+   * 2"; the node of every solid monitor and its distance from the point
+   * given.
+   */
   std::string description() const;
   const DoFHandler<3> &dofs() const { return dof_handler; }
 
@@ -142,8 +170,10 @@ private:
   FESystem<3> fe;
   DoFHandler<3> dof_handler;
   types::global_dof_index first_dof = 0;
-  /** Created last: it reads the DoFHandler. */
+  std::vector<MonitorNode> monitors;
+  /** Created last: they read the DoFHandler. */
   std::unique_ptr<SolidStressOutput> output;
+  std::unique_ptr<SolidCuts> cut_output;
 };
 } // namespace hati
 

@@ -14,9 +14,10 @@ using namespace dealii;
 /**
  * The 3D solids of a frame model and how they hold to the beams, as plain
  * data (doc/user_guide.md "Solids and ties"): the `Model/Frame` entries
- * `Solids`, `Solid element degree`, `Ties`, `Solid supports` and `Rigid
- * links`. FrameDescription holds one of these; FrameSolids builds the
- * meshes and the constraints from it.
+ * `Solids`, `Solid element degree`, `Ties`, `Solid supports`, `Rigid
+ * links`, `Solid cuts` and the solid items of `Monitor nodes`.
+ * FrameDescription holds one of these; FrameSolids builds the meshes, the
+ * constraints, the cuts and the monitors from it.
  */
 struct SolidDescription
 {
@@ -73,6 +74,28 @@ struct SolidDescription
     std::string name, master, slave;
   };
 
+  /**
+   * A cross-section cut of a solid, the plane `axis = value` in the solid's
+   * local axes (solid_local_axes()), whose section forces are written to
+   * `section_forces.csv` (SolidCuts, doc/theory.md 11.5).
+   */
+  struct Cut
+  {
+    std::string name, solid;
+    /** 0, 1, 2 for x, y, z (the solid's local axes). */
+    unsigned int axis = 0;
+    /** The plane's coordinate along that local axis (m, from the global origin). */
+    double value = 0.;
+  };
+
+  /** A monitor point of history.csv at the solid's node nearest to @p point. */
+  struct Monitor
+  {
+    std::string name, solid;
+    /** The requested point (m, global axes). */
+    Point<3> point;
+  };
+
   std::vector<Solid> solids;
   /** Degree p of the solid elements FE_Q(p)^3 (1 ... 4). */
   unsigned int degree = 2;
@@ -80,6 +103,10 @@ struct SolidDescription
   /** Faces whose every translation is fixed. */
   std::vector<FacePlane> supports;
   std::vector<RigidLink> rigid_links;
+  /** `Solid cuts`: cross-sections whose section forces are output. */
+  std::vector<Cut> cuts;
+  /** `Monitor nodes` items `name: solid, x, y, z`. */
+  std::vector<Monitor> monitors;
 
   /** Whether any solid is given. */
   bool empty() const { return solids.empty(); }

@@ -1,6 +1,7 @@
 #ifndef hati_model_solid_mesh_h
 #define hati_model_solid_mesh_h
 
+#include <deal.II/base/tensor.h>
 #include <deal.II/grid/tria.h>
 
 #include <hati/model/solid_description.h>
@@ -22,6 +23,15 @@ using namespace dealii;
  */
 void create_solid_mesh(const SolidDescription &description,
                        Triangulation<3> &triangulation);
+
+/**
+ * The rotation R from global to the local axes of the solid @p solid (rows:
+ * the local axes in global components): for a `box girder`, those of a
+ * frame member between its two axis points with the default section
+ * orientation (x along the girder, y its width, z its height); the identity
+ * for a `box` or a `mesh`.
+ */
+Tensor<2, 3> solid_local_axes(const SolidDescription::Solid &solid);
 } // namespace hati
 
 #endif
