@@ -25,7 +25,7 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
     : system(system), dt(dt), a0(damping.a0), a1(damping.a1),
       c1((1. - 0.5 * damping.a0 * dt) / (1. + 0.5 * damping.a0 * dt)),
       c2(1. / (1. + 0.5 * damping.a0 * dt)), branches(maxwell, dt, system.n_dofs()),
-      rope_forces(system.ropes), frictional_contacts(system.contacts)
+      laws(make_force_laws(system)), frictional_contacts(system.contacts)
 {
   const unsigned int n = system.n_dofs();
   AssertThrow(system.lumped_mass_refusal.empty(), ExcMessage(system.lumped_mass_refusal));
@@ -69,7 +69,14 @@ void CDLagrange::check_time_step(const double safety_factor)
   // and decreases with omega, so the bound omega_max gives a safe step.
   // With frequency-range damping (A8) the branches act as springs
   // (sum alpha) K at high frequency: dt_crit = (2/omega_max)/sqrt(1 + sum alpha).
-  const double omega_max = system.highest_frequency_bound();
+  // The force laws whose stiffness the model's bound leaves out add their
+  // omega^2 bounds (ForceLaw::omega_squared_bound()).
+  double omega_max = system.highest_frequency_bound();
+  double law_omega_squared = 0.;
+  for (const auto &law : laws)
+    law_omega_squared += law->omega_squared_bound();
+  if (law_omega_squared > 0.)
+    omega_max = std::sqrt(omega_max * omega_max + law_omega_squared);
   const double xi = 0.5 * a1 * omega_max;
   const double alpha_sum = branches.alpha_sum();
   dt_crit = omega_max > 0. ? 2. / (omega_max * (std::sqrt(1. + xi * xi) + xi))
@@ -94,6 +101,15 @@ void CDLagrange::check_time_step(const double safety_factor)
         << " rad/s";
     else
       s << ": dt_crit = 2/omega_max = " << dt_crit << " s";
+    if (law_omega_squared > 0.)
+    {
+      s << " (omega_max = " << omega_max << " rad/s includes " << law_omega_squared
+        << " rad^2/s^2 of the force laws";
+      for (const auto &law : laws)
+        if (law->omega_squared_bound() > 0.)
+          s << " '" << law->name() << "'";
+      s << ")";
+    }
     s << " (safety factor " << safety_factor
       << ", so dt must be <= " << safety_factor * dt_crit
       << " s). Reduce 'Time integration/Time step'";
@@ -180,8 +196,8 @@ void CDLagrange::initial_state()
   Vector<double> f(force), ku(n), v0(n), kv(n);
   for (unsigned int l = 0; l < load_shapes.size(); ++l)
     f.add(system.time_dependent_loads[l].amplitude(0.), load_shapes[l]);
-  if (rope_forces.active()) // (R1) the rope forces at U_0
-    rope_forces.start(U, f);
+  for (const auto &law : laws) // e.g. (R1) the rope forces at U_0
+    law->start(U, f);
   // a static start: the closed contacts carry their static forces from t = 0
   // (doc/theory.md 1.1)
   if (system.initial_contact_reaction.size() == n)
@@ -291,16 +307,17 @@ void CDLagrange::free_velocity(const bool with_loads)
     a = load_step_force();
   const bool damped = this->damped();
   const unsigned int n = U.size();
-  if (with_loads && rope_forces.active())
+  if (with_loads && !laws.empty())
   {
-    // (R1) the rope forces at U_{n+1} with the external force
+    // the force laws' forces at U_{n+1} (e.g. R1) with the external force
     if (a != step_force.data())
     {
       if (step_force.size() != n)
         step_force.reinit(n);
       std::copy(a, a + n, step_force.begin());
     }
-    rope_forces.step(U, *V, dt_minv, dt, step_force.data());
+    for (const auto &law : laws)
+      law->step(U, *V, dt_minv, dt, step_force.data());
     a = step_force.data();
   }
   const unsigned int *const col = column.data();
@@ -471,7 +488,9 @@ void CDLagrange::save(Snapshot &s) const
   s.contact_work = contact_work;
   s.time_dependent_work = time_dependent_work;
   s.dissipated = dissipated;
-  s.ropes = rope_forces.state();
+  s.laws.resize(laws.size());
+  for (unsigned int l = 0; l < laws.size(); ++l)
+    laws[l]->save(s.laws[l]);
   frictional_contacts.save(s.friction);
 }
 
@@ -491,8 +510,8 @@ void CDLagrange::restore(const Snapshot &s)
   contact_work = s.contact_work;
   time_dependent_work = s.time_dependent_work;
   dissipated = s.dissipated;
-  if (rope_forces.active())
-    rope_forces.set_state(s.ropes);
+  for (unsigned int l = 0; l < laws.size(); ++l)
+    laws[l]->restore(s.laws[l]);
   frictional_contacts.restore(s.friction);
 }
 
@@ -636,8 +655,8 @@ Energies CDLagrange::energies() const
     e.kinetic += 0.5 * (*V_prev)[i] * system.lumped_mass[i] * (*V)[i];
   if (system.has_stiffness())
     e.internal = 0.5 * system.stiffness.matrix_norm_square(U);
-  if (rope_forces.active())
-    e.internal += rope_forces.stored_energy();
+  for (const auto &law : laws)
+    e.internal += law->stored_energy();
   Vector<double> du(U);
   du -= U0;
   e.external_work = force * du + time_dependent_work;

@@ -6,14 +6,15 @@
 #include <hati/base/wall_clock.h>
 #include <hati/model/discrete_system.h>
 #include <hati/time/energies.h>
+#include <hati/time/force_law.h>
 #include <hati/time/frictional_contacts.h>
 #include <hati/time/maxwell_memory.h>
 #include <hati/time/rayleigh_damping.h>
-#include <hati/time/rope_forces.h>
 
+#include <any>
 #include <array>
 #include <limits>
-
+#include <memory>
 #include <vector>
 
 namespace hati
@@ -42,7 +43,9 @@ using namespace dealii;
  * undamped loop is unchanged. With frequency-range damping (A8) the memory
  * variables (MaxwellMemory) are updated after (A1) and a third kernel
  * computes `V_free = V + dt M^-1 (F_ext - K (U + S))`, still one pass over
- * the rows of K.
+ * the rows of K. The force laws of the system (ForceLaw, e.g. the ropes
+ * of R1) add their forces to the external force of the update, in
+ * registration order (force_law_registry()).
  */
 class CDLagrange
 {
@@ -60,6 +63,8 @@ public:
    * With Maxwell branches @p branches (frequency-range damping, A8; not
    * combined with Rayleigh damping) the memory variables start at zero and
    * the critical step is `dt_crit = (2 / omega_max) / sqrt(1 + sum alpha)`.
+   * The force laws' shares of `omega_max^2` (ForceLaw::omega_squared_bound())
+   * are added to the model's.
    */
   CDLagrange(const DiscreteSystem &system,
              const double dt,
@@ -101,8 +106,8 @@ public:
     std::vector<double> gap, lambda;
     std::vector<bool> is_active;
     double contact_work = 0., time_dependent_work = 0., dissipated = 0.;
-    /** The ropes' forces, work and tension statistics (R1). */
-    RopeForces::State ropes;
+    /** The state of each force law (ForceLaw::save(), e.g. the ropes' of R1). */
+    std::vector<std::any> laws;
     /** Tangential impulses and friction work (A9). */
     FrictionalContacts::Record friction;
   };
@@ -169,12 +174,15 @@ public:
 
   /**
    * Discrete energies at t_n (computes K U_n: call at output times); the
-   * internal energy includes the ropes' (RopeForces::stored_energy()).
+   * internal energy includes the force laws' (ForceLaw::stored_energy()).
    */
   Energies energies() const;
 
-  /** The ropes (R1): their tensions at t_n and statistics since t = 0. */
-  const RopeForces &ropes() const { return rope_forces; }
+  /**
+   * The force laws of the system (e.g. the ropes of R1), in registration
+   * order: their states at t_n, statistics and summaries.
+   */
+  const std::vector<std::unique_ptr<ForceLaw>> &force_laws() const { return laws; }
 
 private:
   /** (A1), then the memory update (A8); see CouplingView::predict(). */
@@ -276,8 +284,8 @@ private:
   std::vector<std::vector<bool>> lcp_bilateral;
   double contact_work = 0.;
   double time_dependent_work = 0.;
-  /** The ropes (R1), applied with the external loads. */
-  RopeForces rope_forces;
+  /** The force laws (e.g. the ropes of R1), applied with the external loads. */
+  std::vector<std::unique_ptr<ForceLaw>> laws;
   /** The clusters with friction (A9) and their record. */
   FrictionalContacts frictional_contacts;
 };
