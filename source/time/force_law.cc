@@ -1,13 +1,16 @@
 #include <hati/model/discrete_system.h>
 #include <hati/time/force_law.h>
 #include <hati/time/rope_forces.h>
+#include <hati/time/unilateral_contacts.h>
 
 namespace hati
 {
 Registry<ForceLawFactory> &force_law_registry()
 {
-  // one line per law: its registration (name, documentation, factory)
-  static Registry<ForceLawFactory> registry("force law", {RopeForces::registration()});
+  // one line per law: its registration (name, documentation, factory); the
+  // forces are summed and the rows resolved in this order
+  static Registry<ForceLawFactory> registry(
+      "force law", {RopeForces::registration(), UnilateralContacts::registration()});
   return registry;
 }
 

@@ -47,6 +47,8 @@ public:
 
   std::string name() const override { return "ropes"; }
 
+  bool adds_forces() const override { return true; }
+
   /**
    * At t = 0: the tensions at @p U (`U_0`), the statistics from them, the
    * strain energy `Phi(U_0)`, and the rope forces added to @p f (N).
