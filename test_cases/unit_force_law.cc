@@ -34,15 +34,30 @@
 //      bit for bit.
 //  (f) the law's summary entry, and no law made for a system without its
 //      data.
+//  (g) a law of rows (A4-A6) that no integrator names either: a bilateral
+//      row `u_0 = 0` on DoF 0 of a 2-DoF chain (spring k between the
+//      masses), its impulse `lambda = -W^-1 L V_free`, `W = L M^-1 L^T`,
+//      solved by the law. Started at rest at u = 0 with a velocity v0 on
+//      DoF 1 (G_0 = 0: the first half step needs no row), DoF 0 stays at 0
+//      to 1e-12 of the amplitude (the round-off of `V_free + M^-1 lambda`
+//      with `lambda = -m V_free`) and DoF 1 oscillates on the spring alone:
+//      against (v0/omega) sin(omega t), omega = sqrt(k/m_1), within 2e-4 of
+//      the amplitude over five periods at dt = T/1000 (the same error budget
+//      as (a)), against the scheme's closed form
+//      `v0 dt sin(Omega t_n) / sin(Omega dt)` to 1e-10 of it (round-off),
+//      and the row's impulse is the support reaction of the step,
+//      `lambda = -dt k u_1(t_{n+1})`, to 1e-12 of its largest value.
 // Every check prints value, reference and tolerance; returns non-zero on
 // failure.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/numbers.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
 
 #include "test_tools.h"
 
 #include <hati/base/mpi_environment.h>
+#include <hati/contact/sparse_rows.h>
 #include <hati/model/discrete_system.h>
 #include <hati/time/cd_lagrange.h>
 #include <hati/time/force_law.h>
@@ -143,6 +158,68 @@ private:
   const double mass;
   State state;
   double initial_energy = 0.;
+};
+
+/** What a model puts into DiscreteSystem::law_data["holding row"]. */
+struct HoldingRowData
+{
+  types::global_dof_index dof = 0;
+};
+
+/**
+ * A bilateral row `L = e_dof`, `L V = 0` after every step (A5 as an
+ * equality), solved by the law itself: `W = L M^-1 L^T`, `lambda = -W^-1 L
+ * V_free`, `V_{n+3/2} = V_free + M^-1 L^T lambda` (a test law).
+ */
+class HoldingRow : public ForceLaw
+{
+public:
+  explicit HoldingRow(const HoldingRowData &data)
+  {
+    row.dofs = {data.dof};
+    row.coefficients = {1.};
+  }
+
+  static Registry<ForceLawFactory>::Entry registration()
+  {
+    return {"holding row",
+            "a bilateral velocity-level row on one DoF (unit test)",
+            {},
+            [](const DiscreteSystem &system) -> std::unique_ptr<ForceLaw>
+            {
+              const auto it = system.law_data.find("holding row");
+              if (it == system.law_data.end())
+                return nullptr;
+              return std::make_unique<HoldingRow>(
+                  std::any_cast<const HoldingRowData &>(it->second));
+            }};
+  }
+
+  std::string name() const override { return "holding row"; }
+
+  bool has_rows() const override { return true; }
+
+  void apply_impulses(const Vector<double> &U,
+                      const Vector<double> &v_before,
+                      const Vector<double> &inverse_mass,
+                      Vector<double> &v) override
+  {
+    (void)U;
+    (void)v_before;
+    const FullMatrix<double> W = delassus<SparseRow>({&row}, inverse_mass);
+    impulse = -row.apply(v) / W(0, 0);
+    row.add_transpose(impulse, inverse_mass, v);
+  }
+
+  void save(std::any &state) const override { state = impulse; }
+  void restore(const std::any &state) override { impulse = std::any_cast<double>(state); }
+
+  /** The impulse of the last step (N s). */
+  double last_impulse() const { return impulse; }
+
+private:
+  SparseRow row;
+  double impulse = 0.;
 };
 
 /** A mass @p m (kg) on DoF 0 alone, with the ground spring @p k (N/m) as the law. */
@@ -323,6 +400,62 @@ void test_chain_and_snapshot()
     none = none && law->name() != "ground spring";
   expect(none, "(f) no ground spring for a system without its data");
 }
+void test_row_law()
+{
+  const double m0 = 1.5, m1 = 0.7, k = 1200., v0 = 0.3, omega = std::sqrt(k / m1),
+               T = 2. * numbers::PI / omega, dt = T / 1000.;
+  DiscreteSystem s;
+  s.reinit(2);
+  s.lumped_mass[0] = m0;
+  s.lumped_mass[1] = m1;
+  DynamicSparsityPattern dsp(2, 2);
+  for (unsigned int a = 0; a < 2; ++a)
+    for (unsigned int b = 0; b < 2; ++b)
+      dsp.add(a, b);
+  s.stiffness_pattern.copy_from(dsp);
+  s.stiffness.reinit(s.stiffness_pattern);
+  s.stiffness.set(0, 0, k);
+  s.stiffness.set(0, 1, -k);
+  s.stiffness.set(1, 0, -k);
+  s.stiffness.set(1, 1, k);
+  s.initial_velocity[1] = v0;
+  s.law_data["holding row"] = HoldingRowData{0};
+  CDLagrange cd(s, dt, 1.);
+  const auto *row = dynamic_cast<const HoldingRow *>(law_of(cd, "holding row"));
+  expect(row != nullptr, "(g) the integrator holds the registered law of rows");
+  if (!row)
+    return;
+  const double Omega = 2. / dt * std::asin(0.5 * omega * dt);
+  const double amplitude = v0 / omega;
+  double u0_max = 0., error_exact = 0., error_scheme = 0., reaction_error = 0.,
+         largest_impulse = 0.;
+  for (unsigned int n = 1; n <= 5000; ++n)
+  {
+    cd.step();
+    const double t = cd.time(), u1 = cd.displacement()[1];
+    u0_max = std::max(u0_max, std::abs(cd.displacement()[0]));
+    error_exact = std::max(error_exact, std::abs(u1 - amplitude * std::sin(omega * t)));
+    error_scheme =
+        std::max(error_scheme,
+                 std::abs(u1 - v0 * dt * std::sin(Omega * t) / std::sin(Omega * dt)));
+    reaction_error =
+        std::max(reaction_error, std::abs(row->last_impulse() + dt * k * u1));
+    largest_impulse = std::max(largest_impulse, std::abs(row->last_impulse()));
+  }
+  check("(g) max |u_0| (m), held by the row", u0_max, 0., 1e-12 * amplitude);
+  check("(g) max |u_1 - (v0/omega) sin(omega t)| (m) over five periods",
+        error_exact,
+        0.,
+        2e-4 * amplitude);
+  check("(g) max |u_1 - v0 dt sin(Omega t_n)/sin(Omega dt)| (m), the scheme's form",
+        error_scheme,
+        0.,
+        1e-10 * amplitude);
+  check("(g) max |lambda + dt k u_1| (N s), the support reaction",
+        reaction_error,
+        0.,
+        1e-12 * largest_impulse);
+}
 } // namespace
 
 int main(int argc, char **argv)
@@ -331,8 +464,10 @@ int main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   // the registration: one line, as for a law of the code (source/time/force_law.cc)
   force_law_registry().add(GroundSpring::registration());
+  force_law_registry().add(HoldingRow::registration());
   test_oscillator();
   test_critical_step();
   test_chain_and_snapshot();
+  test_row_law();
   return finish();
 }
