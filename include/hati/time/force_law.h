@@ -38,7 +38,11 @@ class DiscreteSystem;
  * restore()), its share of the critical step (A7, omega_squared_bound())
  * and its summary entries (add_summary()). The integrator holds one
  * instance per law its system holds (make_force_laws()) and calls them in
- * registration order.
+ * registration order: the forces are summed in that order, and the rows of
+ * different laws are resolved one law after the other (one sweep of a block
+ * Gauss-Seidel), never in one cluster, so rows that must be solved together
+ * with the contacts' (the tie and rigid-link rows, B1) belong to the
+ * contacts' law (UnilateralContacts).
  *
  * A law is a class deriving from this one and an entry of
  * force_law_registry() whose factory returns an instance when the system
