@@ -66,6 +66,11 @@ void extract_subsystem(const DiscreteSystem &full,
                        const std::vector<types::global_dof_index> &dofs,
                        DiscreteSystem &sub)
 {
+  // the data of other force laws has no renumbering (DiscreteSystem::law_data)
+  AssertThrow(full.law_data.empty(),
+              ExcMessage("Model/Decomposition: the force law '" +
+                         (full.law_data.empty() ? "" : full.law_data.begin()->first) +
+                         "' cannot be split into HATI's subdomains"));
   const unsigned int N = full.n_dofs(), n = dofs.size();
   std::vector<int> local(N, -1);
   for (unsigned int i = 0; i < n; ++i)

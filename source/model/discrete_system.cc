@@ -26,6 +26,7 @@ void DiscreteSystem::reinit(const unsigned int n)
   gravity = Tensor<1, 3>();
   contacts.clear();
   ropes.clear();
+  law_data.clear();
   monitors.clear();
 }
 

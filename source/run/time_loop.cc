@@ -181,8 +181,8 @@ private:
   void add_coupling_summary(SummaryEntries &summary) const;
   /** The contact statistics, their summary entries and contact_episodes.csv. */
   void add_contact_summary(SummaryEntries &summary);
-  /** `rope_tension` (R1): per rope the least and largest tension and the slack time. */
-  void add_rope_summary(SummaryEntries &summary) const;
+  /** The force laws' entries (ForceLaw::add_summary(), e.g. `rope_tension` of R1). */
+  void add_force_law_summary(SummaryEntries &summary) const;
 
   Integrator &integrator;
   Problem &problem;
@@ -469,29 +469,12 @@ void TimeLoop<Integrator>::add_contact_summary(SummaryEntries &summary)
 }
 
 template <class Integrator>
-void TimeLoop<Integrator>::add_rope_summary(SummaryEntries &summary) const
+void TimeLoop<Integrator>::add_force_law_summary(SummaryEntries &summary) const
 {
   if constexpr (!std::is_same_v<Integrator, Newmark>)
   {
-    const RopeForces &ropes = integrator.ropes();
-    if (!ropes.active())
-      return;
-    const RopeForces::State &s = ropes.state();
-    SummaryValue json = SummaryValue::object();
-    std::cout << "  rope tension (N): min, max, slack time (s)" << std::endl;
-    for (unsigned int r = 0; r < ropes.elements().size(); ++r)
-    {
-      SummaryValue entry = SummaryValue::object();
-      entry.set("min", s.min_tension[r]);
-      entry.set("max", s.max_tension[r]);
-      entry.set("slack_time", s.slack_time[r]);
-      json.set(ropes.elements()[r].name, entry);
-      std::cout << "    " << std::left << std::setw(20) << ropes.elements()[r].name
-                << std::right << std::setw(16) << std::setprecision(8) << s.min_tension[r]
-                << std::setw(16) << s.max_tension[r] << std::setw(12) << s.slack_time[r]
-                << std::endl;
-    }
-    summary.emplace_back("rope_tension", json);
+    for (const auto &law : integrator.force_laws())
+      law->add_summary(summary, std::cout);
   }
   else
     (void)summary;
@@ -531,7 +514,7 @@ void TimeLoop<Integrator>::finish(TimerOutput &timer, SummaryEntries summary)
        {"energy_balance_relative", scale > 0. ? drift / scale : 0.}});
   add_coupling_summary(summary);
   add_contact_summary(summary);
-  add_rope_summary(summary);
+  add_force_law_summary(summary);
   std::cout << problem.model->results_table();
   for (const auto &p : postprocessors)
     p->finish(summary, std::cout);

@@ -1,7 +1,6 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/full_matrix.h>
 
-#include <hati/contact/lcp_solver.h>
 #include <hati/time/cd_lagrange.h>
 #include <hati/time/cd_lagrange_kernels.h>
 
@@ -25,8 +24,16 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
     : system(system), dt(dt), a0(damping.a0), a1(damping.a1),
       c1((1. - 0.5 * damping.a0 * dt) / (1. + 0.5 * damping.a0 * dt)),
       c2(1. / (1. + 0.5 * damping.a0 * dt)), branches(maxwell, dt, system.n_dofs()),
-      rope_forces(system.ropes), frictional_contacts(system.contacts)
+      laws(make_force_laws(system))
 {
+  for (const auto &law : laws)
+  {
+    if (law->adds_forces())
+      forcing_laws.push_back(law.get());
+    if (auto *c = dynamic_cast<UnilateralContacts *>(law.get()))
+      contacts = c;
+  }
+  AssertThrow(contacts, ExcInternalError());
   const unsigned int n = system.n_dofs();
   AssertThrow(system.lumped_mass_refusal.empty(), ExcMessage(system.lumped_mass_refusal));
   AssertThrow(dt > 0. && std::isfinite(dt),
@@ -57,7 +64,13 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
   build_stiffness_operator();
   build_loads();
   initial_state();
-  build_contacts();
+  // the laws' rows at U_0 (e.g. the contacts' A5 clusters)
+  for (const auto &law : laws)
+    if (law->has_rows())
+    {
+      law->start_rows(U, dt_minv);
+      row_laws.push_back(law.get());
+    }
 }
 
 void CDLagrange::check_time_step(const double safety_factor)
@@ -69,7 +82,14 @@ void CDLagrange::check_time_step(const double safety_factor)
   // and decreases with omega, so the bound omega_max gives a safe step.
   // With frequency-range damping (A8) the branches act as springs
   // (sum alpha) K at high frequency: dt_crit = (2/omega_max)/sqrt(1 + sum alpha).
-  const double omega_max = system.highest_frequency_bound();
+  // The force laws whose stiffness the model's bound leaves out add their
+  // omega^2 bounds (ForceLaw::omega_squared_bound()).
+  double omega_max = system.highest_frequency_bound();
+  double law_omega_squared = 0.;
+  for (const auto &law : laws)
+    law_omega_squared += law->omega_squared_bound();
+  if (law_omega_squared > 0.)
+    omega_max = std::sqrt(omega_max * omega_max + law_omega_squared);
   const double xi = 0.5 * a1 * omega_max;
   const double alpha_sum = branches.alpha_sum();
   dt_crit = omega_max > 0. ? 2. / (omega_max * (std::sqrt(1. + xi * xi) + xi))
@@ -94,6 +114,15 @@ void CDLagrange::check_time_step(const double safety_factor)
         << " rad/s";
     else
       s << ": dt_crit = 2/omega_max = " << dt_crit << " s";
+    if (law_omega_squared > 0.)
+    {
+      s << " (omega_max = " << omega_max << " rad/s includes " << law_omega_squared
+        << " rad^2/s^2 of the force laws";
+      for (const auto &law : laws)
+        if (law->omega_squared_bound() > 0.)
+          s << " '" << law->name() << "'";
+      s << ")";
+    }
     s << " (safety factor " << safety_factor
       << ", so dt must be <= " << safety_factor * dt_crit
       << " s). Reduce 'Time integration/Time step'";
@@ -180,8 +209,8 @@ void CDLagrange::initial_state()
   Vector<double> f(force), ku(n), v0(n), kv(n);
   for (unsigned int l = 0; l < load_shapes.size(); ++l)
     f.add(system.time_dependent_loads[l].amplitude(0.), load_shapes[l]);
-  if (rope_forces.active()) // (R1) the rope forces at U_0
-    rope_forces.start(U, f);
+  for (ForceLaw *law : forcing_laws) // e.g. (R1) the rope forces at U_0
+    law->start(U, f);
   // a static start: the closed contacts carry their static forces from t = 0
   // (doc/theory.md 1.1)
   if (system.initial_contact_reaction.size() == n)
@@ -202,60 +231,6 @@ void CDLagrange::initial_state()
     (*V)[i] = v0[i] + 0.5 * g;
     (*V_prev)[i] = (*V)[i] - g; // stands for V_{-1/2}
   }
-}
-
-void CDLagrange::build_contacts()
-{
-  // contacts: which contacts are coupled through a common free DoF
-  const unsigned int nc = system.contacts.size();
-  gap.resize(nc);
-  lambda.assign(nc, 0.);
-  is_active.assign(nc, false);
-  coupled_with.resize(nc);
-  for (unsigned int k = 0; k < nc; ++k)
-  {
-    const auto &c = system.contacts[k];
-    double w = 0.;
-    for (unsigned int a = 0; a < c.dofs.size(); ++a)
-      w += c.coefficients[a] * c.coefficients[a] * dt_minv[c.dofs[a]];
-    AssertThrow(w > 0.,
-                ExcMessage("contact '" + c.name +
-                           "' acts only on fixed or massless degrees of freedom"));
-    gap[k] = c.initial_gap + c.apply(U);
-  }
-  // the DoFs a contact's impulse acts on: its row, and its tangent rows
-  // with friction (A9)
-  auto shares_dof = [&](const SparseRow &a, const SparseRow &b)
-  {
-    bool shared = false;
-    for (const auto d : a.dofs)
-      if (!system.fixed[d])
-        for (const auto e : b.dofs)
-          shared = shared || (d == e);
-    return shared;
-  };
-  for (unsigned int k = 0; k < nc; ++k)
-    for (unsigned int l = k + 1; l < nc; ++l)
-    {
-      bool shared = shares_dof(system.contacts[k], system.contacts[l]);
-      if (frictional_contacts.any())
-      {
-        std::vector<const SparseRow *> rows_k{&system.contacts[k]},
-            rows_l{&system.contacts[l]};
-        for (const auto &t : system.contacts[k].tangents)
-          rows_k.push_back(&t);
-        for (const auto &t : system.contacts[l].tangents)
-          rows_l.push_back(&t);
-        for (const auto *a : rows_k)
-          for (const auto *b : rows_l)
-            shared = shared || shares_dof(*a, *b);
-      }
-      if (shared)
-      {
-        coupled_with[k].push_back(l);
-        coupled_with[l].push_back(k);
-      }
-    }
 }
 
 void CDLagrange::step()
@@ -291,16 +266,17 @@ void CDLagrange::free_velocity(const bool with_loads)
     a = load_step_force();
   const bool damped = this->damped();
   const unsigned int n = U.size();
-  if (with_loads && rope_forces.active())
+  if (with_loads && !forcing_laws.empty())
   {
-    // (R1) the rope forces at U_{n+1} with the external force
+    // the force laws' forces at U_{n+1} (e.g. R1) with the external force
     if (a != step_force.data())
     {
       if (step_force.size() != n)
         step_force.reinit(n);
       std::copy(a, a + n, step_force.begin());
     }
-    rope_forces.step(U, *V, dt_minv, dt, step_force.data());
+    for (ForceLaw *law : forcing_laws)
+      law->step(U, *V, dt_minv, dt, step_force.data());
     a = step_force.data();
   }
   const unsigned int *const col = column.data();
@@ -448,10 +424,12 @@ const double *CDLagrange::load_step_force()
 void CDLagrange::finish_step(const bool with_contacts)
 {
   std::swap(V, V_prev); // V = V_free, V_prev = V_{n+1/2}
-  if (with_contacts && !system.contacts.empty())
+  // (A4)-(A6) the impulses of the laws with rows (e.g. the contacts)
+  if (with_contacts && !row_laws.empty())
   {
     const WallClock::Scope scope(contact_clock);
-    apply_contacts();
+    for (ForceLaw *law : row_laws)
+      law->apply_impulses(U, *V_prev, minv, *V);
   }
 }
 
@@ -465,14 +443,11 @@ void CDLagrange::save(Snapshot &s) const
   s.branch_work = branches.work();
   s.t = t;
   s.n_steps = n_steps;
-  s.gap = gap;
-  s.lambda = lambda;
-  s.is_active = is_active;
-  s.contact_work = contact_work;
   s.time_dependent_work = time_dependent_work;
   s.dissipated = dissipated;
-  s.ropes = rope_forces.state();
-  frictional_contacts.save(s.friction);
+  s.laws.resize(laws.size());
+  for (unsigned int l = 0; l < laws.size(); ++l)
+    laws[l]->save(s.laws[l]);
 }
 
 void CDLagrange::restore(const Snapshot &s)
@@ -485,132 +460,10 @@ void CDLagrange::restore(const Snapshot &s)
     branches.set_memory(s.q, s.branch_work);
   t = s.t;
   n_steps = s.n_steps;
-  gap = s.gap;
-  lambda = s.lambda;
-  is_active = s.is_active;
-  contact_work = s.contact_work;
   time_dependent_work = s.time_dependent_work;
   dissipated = s.dissipated;
-  if (rope_forces.active())
-    rope_forces.set_state(s.ropes);
-  frictional_contacts.restore(s.friction);
-}
-
-void CDLagrange::apply_contacts()
-{
-  const unsigned int nc = system.contacts.size();
-  Vector<double> &v = *V;
-
-  // contact work, first half: 1/2 (L V_{n+1/2}) lambda_n (doc/theory.md E1)
-  for (unsigned int k = 0; k < nc; ++k)
-    if (lambda[k] != 0.)
-      contact_work += 0.5 * system.contacts[k].apply(*V_prev) * lambda[k];
-  if (frictional_contacts.any())
-    frictional_contacts.begin_step(*V_prev);
-
-  // (A4) active set from the position-level gap (or the prescribed one),
-  // round-off gaps closed (closed_gap_tolerance)
-  active_list.clear();
-  for (unsigned int k = 0; k < nc; ++k)
-  {
-    const auto &c = system.contacts[k];
-    gap[k] = c.initial_gap + c.apply(U);
-    is_active[k] = c.bilateral || (prescribed ? bool((*prescribed)[k])
-                                              : (gap[k] <= closed_gap_tolerance));
-    lambda[k] = 0.;
-    if (is_active[k])
-      active_list.push_back(k);
-  }
-  if (active_list.empty())
-    return;
-
-  // (A5) clusters of coupled active contacts, each an LCP w = W lambda + q
-  clustered.assign(nc, false);
-  for (const unsigned int k0 : active_list)
-  {
-    if (clustered[k0])
-      continue;
-    cluster.assign(1, k0);
-    clustered[k0] = true;
-    for (unsigned int c = 0; c < cluster.size(); ++c)
-      for (const unsigned int l : coupled_with[cluster[c]])
-        if (is_active[l] && !clustered[l])
-        {
-          clustered[l] = true;
-          cluster.push_back(l);
-        }
-
-    const unsigned int m = cluster.size();
-    // (A9) a cluster with friction: nonsmooth Gauss-Seidel over its contacts
-    if (frictional_contacts.any() && frictional_contacts.frictional(cluster))
-    {
-      frictional_contacts.solve(cluster, minv, *V_prev, prescribed != nullptr, v, lambda);
-      continue;
-    }
-    if (m == 1)
-    {
-      // a single contact: lambda = max(0, -q / W) (bilateral: -q / W)
-      const auto &c = system.contacts[k0];
-      const double q = c.apply(v) + c.restitution * c.apply(*V_prev);
-      double w = 0.;
-      for (unsigned int i = 0; i < c.dofs.size(); ++i)
-        w += c.coefficients[i] * c.coefficients[i] * minv[c.dofs[i]];
-      AssertThrow(w > 0.,
-                  ExcMessage("contact LCP: a contact acts on degrees of freedom without "
-                             "mass (fixed or massless); its Delassus entry is zero."));
-      const double l = (prescribed || c.bilateral) ? -q / w : std::max(0., -q / w);
-      lambda[k0] = l;
-      if (l != 0.)
-        c.add_transpose(l, minv, v);
-      continue;
-    }
-    cluster_rows.resize(m);
-    // work vectors per cluster size (no allocation once a size was seen)
-    if (lcp_q.size() <= m)
-    {
-      lcp_q.resize(m + 1);
-      lcp_lambda.resize(m + 1);
-      lcp_W.resize(m + 1);
-      lcp_bilateral.resize(m + 1);
-    }
-    Vector<double> &q = lcp_q[m];
-    std::vector<bool> &bilateral = lcp_bilateral[m];
-    if (q.size() != m)
-    {
-      q.reinit(m);
-      bilateral.resize(m);
-    }
-    for (unsigned int a = 0; a < m; ++a)
-    {
-      cluster_rows[a] = &system.contacts[cluster[a]];
-      bilateral[a] = cluster_rows[a]->bilateral;
-      // q = L V_free + e L V_{n+1/2}
-      q[a] = cluster_rows[a]->apply(v) +
-             cluster_rows[a]->restitution * cluster_rows[a]->apply(*V_prev);
-    }
-    FullMatrix<double> &W = lcp_W[m];
-    delassus(cluster_rows, minv, W);
-    Vector<double> &l = lcp_lambda[m];
-    if (prescribed)
-      solve_equalities(W, q, l); // W lambda = -q on the prescribed active set
-    else
-      solve_lcp(W, q, bilateral, l);
-
-    // V_{n+3/2} = V_free + M^-1 L^T lambda  (A5); lambda is an impulse (A6)
-    for (unsigned int a = 0; a < m; ++a)
-    {
-      const auto &c = system.contacts[cluster[a]];
-      lambda[cluster[a]] = l[a];
-      c.add_transpose(l[a], minv, v);
-    }
-  }
-
-  // contact work, second half: 1/2 (L V_{n+1/2}) lambda_{n+1}
-  for (const unsigned int k : active_list)
-    if (lambda[k] != 0.)
-      contact_work += 0.5 * system.contacts[k].apply(*V_prev) * lambda[k];
-  if (frictional_contacts.any())
-    frictional_contacts.end_step(*V_prev);
+  for (unsigned int l = 0; l < laws.size(); ++l)
+    laws[l]->restore(s.laws[l]);
 }
 
 std::vector<double> CDLagrange::normal_velocities() const
@@ -636,14 +489,12 @@ Energies CDLagrange::energies() const
     e.kinetic += 0.5 * (*V_prev)[i] * system.lumped_mass[i] * (*V)[i];
   if (system.has_stiffness())
     e.internal = 0.5 * system.stiffness.matrix_norm_square(U);
-  if (rope_forces.active())
-    e.internal += rope_forces.stored_energy();
+  for (const auto &law : laws) // e.g. the ropes' energy, the contact work
+    law->add_energies(e);
   Vector<double> du(U);
   du -= U0;
   e.external_work = force * du + time_dependent_work;
-  e.contact_work = contact_work;
   e.dissipated = dissipated;
-  e.friction_dissipated = -frictional_contacts.work();
   branches.add_energies(e, system.stiffness);
   e.kinetic_explicit = e.kinetic;
   e.internal_explicit = e.internal;

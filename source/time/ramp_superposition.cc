@@ -219,13 +219,17 @@ void RampSuperposition::compute_ramp(const std::vector<bool> &active_set,
   r.increment_weighted = SparseColumns(increment_weighted);
   r.H_E = SparseColumns(H_E);
   interface.invert(H_E, r.H_inverse);
-  // (R1) whether the response moves a rope's DoFs (then it is not superposed)
-  r.moves_ropes = false;
-  for (const auto &columns : r.state)
-    for (const auto i : columns.rows())
-      for (const Rope &rope : system.ropes)
-        for (const auto dof : rope.dofs())
-          r.moves_ropes = r.moves_ropes || dof == i;
+  // whether the response moves a DoF of a nonlinear force law (e.g. a rope's,
+  // R1): then it is not superposed
+  r.moves_nonlinear_law = false;
+  for (const auto &law : integrator.force_laws())
+  {
+    const auto dofs = law->nonlinear_dofs();
+    for (const auto &columns : r.state)
+      for (const auto i : columns.rows())
+        for (const auto dof : dofs)
+          r.moves_nonlinear_law = r.moves_nonlinear_law || dof == i;
+  }
 }
 
 void RampSuperposition::store_dissipation(
@@ -290,7 +294,7 @@ RampSuperposition::ramp_for(const std::vector<bool> &active_set)
 const RampSuperposition::Response &
 RampSuperposition::response_for_pass(bool &same_active_set)
 {
-  same_active_set = !open_ramp.moves_ropes;
+  same_active_set = !open_ramp.moves_nonlinear_law;
   if (!contacts_in_reach())
     return open_ramp;
   same_active_set = true;
@@ -317,7 +321,7 @@ RampSuperposition::response_for_pass(bool &same_active_set)
   if (!same_active_set)
     return open_ramp;
   const Response &r = ramp_for(pattern);
-  same_active_set = !r.moves_ropes;
+  same_active_set = !r.moves_nonlinear_law;
   return same_active_set ? r : open_ramp;
 }
 

@@ -1,9 +1,24 @@
+#include <hati/model/discrete_system.h>
 #include <hati/time/rope_forces.h>
 
 #include <algorithm>
+#include <iomanip>
 
 namespace hati
 {
+Registry<ForceLawFactory>::Entry RopeForces::registration()
+{
+  return {"ropes",
+          "ropes (R1): tension-only bars between two nodes",
+          {},
+          [](const DiscreteSystem &system) -> std::unique_ptr<ForceLaw>
+          {
+            if (system.ropes.empty())
+              return nullptr;
+            return std::make_unique<RopeForces>(system.ropes);
+          }};
+}
+
 double RopeForces::force_of(const unsigned int r,
                             const Vector<double> &U,
                             std::array<double, 6> &force) const
@@ -68,5 +83,47 @@ void RopeForces::step(const Vector<double> &U,
     if (T == 0.)
       current.slack_time[r] += dt;
   }
+}
+
+std::vector<types::global_dof_index> RopeForces::nonlinear_dofs() const
+{
+  std::vector<types::global_dof_index> dofs;
+  for (const Rope &rope : ropes)
+    for (const auto dof : rope.dofs())
+      dofs.push_back(dof);
+  return dofs;
+}
+
+void RopeForces::save(std::any &state) const
+{
+  // copied into the State a previous save left there (no allocation)
+  if (State *s = std::any_cast<State>(&state))
+    *s = current;
+  else
+    state = current;
+}
+
+void RopeForces::restore(const std::any &state)
+{
+  current = std::any_cast<const State &>(state);
+}
+
+void RopeForces::add_summary(SummaryEntries &summary, std::ostream &out) const
+{
+  SummaryValue json = SummaryValue::object();
+  out << "  rope tension (N): min, max, slack time (s)" << std::endl;
+  for (unsigned int r = 0; r < ropes.size(); ++r)
+  {
+    SummaryValue entry = SummaryValue::object();
+    entry.set("min", current.min_tension[r]);
+    entry.set("max", current.max_tension[r]);
+    entry.set("slack_time", current.slack_time[r]);
+    json.set(ropes[r].name, entry);
+    out << "    " << std::left << std::setw(20) << ropes[r].name << std::right
+        << std::setw(16) << std::setprecision(8) << current.min_tension[r]
+        << std::setw(16) << current.max_tension[r] << std::setw(12)
+        << current.slack_time[r] << std::endl;
+  }
+  summary.emplace_back("rope_tension", json);
 }
 } // namespace hati

@@ -10,8 +10,10 @@
 #include <hati/contact/sparse_rows.h>
 #include <hati/model/rope.h>
 
+#include <any>
 #include <array>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -249,6 +251,14 @@ public:
    * couplings).
    */
   std::vector<Rope> ropes;
+  /**
+   * The data of force laws that have no member here, under the name of the
+   * law's registration (force_law_registry(), doc/architecture.md "Force
+   * laws"): the law's factory reads it, the integrators never do. A new law
+   * needs no change of this class. The decomposition into HATI's subdomains
+   * cannot renumber it and refuses a system that has some.
+   */
+  std::map<std::string, std::any> law_data;
   std::vector<MonitorPoint> monitors;
 
   Vector<double> initial_displacement;

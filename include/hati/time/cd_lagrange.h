@@ -6,14 +6,15 @@
 #include <hati/base/wall_clock.h>
 #include <hati/model/discrete_system.h>
 #include <hati/time/energies.h>
-#include <hati/time/frictional_contacts.h>
+#include <hati/time/force_law.h>
 #include <hati/time/maxwell_memory.h>
 #include <hati/time/rayleigh_damping.h>
-#include <hati/time/rope_forces.h>
+#include <hati/time/unilateral_contacts.h>
 
+#include <any>
 #include <array>
 #include <limits>
-
+#include <memory>
 #include <vector>
 
 namespace hati
@@ -42,7 +43,9 @@ using namespace dealii;
  * undamped loop is unchanged. With frequency-range damping (A8) the memory
  * variables (MaxwellMemory) are updated after (A1) and a third kernel
  * computes `V_free = V + dt M^-1 (F_ext - K (U + S))`, still one pass over
- * the rows of K.
+ * the rows of K. The force laws of the system (ForceLaw, e.g. the ropes
+ * of R1) add their forces to the external force of the update, in
+ * registration order (force_law_registry()).
  */
 class CDLagrange
 {
@@ -60,6 +63,8 @@ public:
    * With Maxwell branches @p branches (frequency-range damping, A8; not
    * combined with Rayleigh damping) the memory variables start at zero and
    * the critical step is `dt_crit = (2 / omega_max) / sqrt(1 + sum alpha)`.
+   * The force laws' shares of `omega_max^2` (ForceLaw::omega_squared_bound())
+   * are added to the model's.
    */
   CDLagrange(const DiscreteSystem &system,
              const double dt,
@@ -98,13 +103,9 @@ public:
     double branch_work = 0.;
     double t = 0.;
     unsigned long n_steps = 0;
-    std::vector<double> gap, lambda;
-    std::vector<bool> is_active;
-    double contact_work = 0., time_dependent_work = 0., dissipated = 0.;
-    /** The ropes' forces, work and tension statistics (R1). */
-    RopeForces::State ropes;
-    /** Tangential impulses and friction work (A9). */
-    FrictionalContacts::Record friction;
+    double time_dependent_work = 0., dissipated = 0.;
+    /** The state of each force law (ForceLaw::save(), e.g. the ropes' of R1). */
+    std::vector<std::any> laws;
   };
   void save(Snapshot &snapshot) const;
   void restore(const Snapshot &snapshot);
@@ -134,18 +135,18 @@ public:
   const Vector<double> &velocity() const { return *V; }
 
   /** Contact gaps g_k(U_n) (m), the same order as system.contacts. */
-  const std::vector<double> &gaps() const { return gap; }
+  const std::vector<double> &gaps() const { return contacts->gaps(); }
   /** Normal velocities L_k V_{n+1/2} (m/s). */
   std::vector<double> normal_velocities() const;
   /** Impulses lambda_k of the last step (N s); zero for inactive contacts. */
-  const std::vector<double> &impulses() const { return lambda; }
+  const std::vector<double> &impulses() const { return contacts->impulses(); }
   /** Whether contact k was active (g_k <= 0) in the last step (A4). */
-  const std::vector<bool> &active() const { return is_active; }
+  const std::vector<bool> &active() const { return contacts->active(); }
   /**
    * Coulomb friction (A9): tangential impulses and states of the last
    * step, friction work, the Gauss-Seidel counts.
    */
-  const FrictionalContacts &friction() const { return frictional_contacts; }
+  const FrictionalContacts &friction() const { return contacts->friction(); }
 
   /** Mass-proportional Rayleigh coefficient a0 (1/s). */
   double mass_damping_coefficient() const { return a0; }
@@ -169,12 +170,15 @@ public:
 
   /**
    * Discrete energies at t_n (computes K U_n: call at output times); the
-   * internal energy includes the ropes' (RopeForces::stored_energy()).
+   * internal energy includes the force laws' (ForceLaw::stored_energy()).
    */
   Energies energies() const;
 
-  /** The ropes (R1): their tensions at t_n and statistics since t = 0. */
-  const RopeForces &ropes() const { return rope_forces; }
+  /**
+   * The force laws of the system (e.g. the ropes of R1), in registration
+   * order: their states at t_n, statistics and summaries.
+   */
+  const std::vector<std::unique_ptr<ForceLaw>> &force_laws() const { return laws; }
 
 private:
   /** (A1), then the memory update (A8); see CouplingView::predict(). */
@@ -191,9 +195,6 @@ private:
   void build_loads();
   /** V_{1/2}, V_{-1/2} and d_0 from the initial state (A7, doc/theory.md 1.1). */
   void initial_state();
-  /** Initial gaps and which contacts share a free DoF (A5 clusters). */
-  void build_contacts();
-  void apply_contacts();
   /**
    * `dt M^-1 F_ext(t_{n+1})` with the time-dependent loads, in one pass
    * that also books their work on the step (A2-A3); returns step_force.
@@ -260,26 +261,21 @@ private:
   /** Memory variables of frequency-range damping (A8). */
   MaxwellMemory branches;
 
-  // contacts
-  std::vector<double> gap, lambda;
-  std::vector<bool> is_active;
-  std::vector<std::vector<unsigned int>> coupled_with;
-  /** Active set imposed by prescribe_active_set() (nullptr: from the gaps). */
-  const std::vector<bool> *prescribed = nullptr;
-  /** Work space of apply_contacts(), reused from step to step. */
-  std::vector<unsigned int> active_list, cluster;
-  std::vector<bool> clustered;
-  std::vector<const ContactRow *> cluster_rows;
-  // the LCP of a cluster of each size: q, lambda, W, bilateral flags
-  std::vector<Vector<double>> lcp_q, lcp_lambda;
-  std::vector<FullMatrix<double>> lcp_W;
-  std::vector<std::vector<bool>> lcp_bilateral;
-  double contact_work = 0.;
   double time_dependent_work = 0.;
-  /** The ropes (R1), applied with the external loads. */
-  RopeForces rope_forces;
-  /** The clusters with friction (A9) and their record. */
-  FrictionalContacts frictional_contacts;
+  /**
+   * The force laws in registration order (force_law_registry()): their
+   * forces join the external loads (A2-A3), their rows' impulses follow
+   * the free velocity (A4-A6).
+   */
+  std::vector<std::unique_ptr<ForceLaw>> laws;
+  /** The laws that add forces, and those with rows. */
+  std::vector<ForceLaw *> forcing_laws, row_laws;
+  /**
+   * The contacts' law among them (always there, possibly without rows):
+   * the gaps, impulses and friction record that the outputs and the
+   * coupling's superposition read and write.
+   */
+  UnilateralContacts *contacts = nullptr;
 };
 /**
  * The explicit integrator as the HATI coupling drives it (G2-G3',
@@ -391,7 +387,7 @@ public:
    */
   void prescribe_active_set(const std::vector<bool> *pattern)
   {
-    integrator->prescribed = pattern;
+    integrator->contacts->prescribe_active_set(pattern);
   }
 
   /** @name What the superposition (G3') adds to the integrator's record */
@@ -399,13 +395,12 @@ public:
   /** Set the gap (m) and impulse (N s) of contact @p k. */
   void set_contact_state(const unsigned int k, const double gap_k, const double impulse)
   {
-    integrator->gap[k] = gap_k;
-    integrator->lambda[k] = impulse;
+    integrator->contacts->set_state(k, gap_k, impulse);
   }
   /** Add @p work (J) to the contact work. */
-  void add_contact_work(const double work) { integrator->contact_work += work; }
+  void add_contact_work(const double work) { integrator->contacts->add_work(work); }
   /** The friction record (A9), which a redone pass replaces. */
-  FrictionalContacts &friction() { return integrator->frictional_contacts; }
+  FrictionalContacts &friction() { return integrator->contacts->friction(); }
   /** Add @p work (J) to the external work. */
   void add_external_work(const double work) { integrator->time_dependent_work += work; }
   /** Add @p energy (J) to the dissipated energy. */

@@ -136,8 +136,11 @@ public:
     return explicit_integrator.normal_velocities();
   }
   const std::vector<double> &impulses() const { return explicit_integrator.impulses(); }
-  /** The ropes of the explicit subdomain (R1): tensions and statistics. */
-  const RopeForces &ropes() const { return explicit_integrator.ropes(); }
+  /** The force laws of the explicit subdomain (e.g. the ropes of R1). */
+  const std::vector<std::unique_ptr<ForceLaw>> &force_laws() const
+  {
+    return explicit_integrator.force_laws();
+  }
   const std::vector<bool> &active() const { return explicit_integrator.active(); }
 
   /** Energies of both subdomains and the interface work (G5). */

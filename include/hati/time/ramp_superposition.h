@@ -156,20 +156,24 @@ public:
     /** H^-1 (inverted once, one product per solve). */
     DenseColumns H_inverse;
     /**
-     * Whether the response moves a DoF of a rope (R1): the rope forces of
-     * the pass would change with the correction, so the superposition
-     * does not hold and the micro steps are redone.
+     * Whether the response moves a DoF of a nonlinear force law
+     * (ForceLaw::nonlinear_dofs(), e.g. a rope's, R1): the law's forces of
+     * the pass would change with the correction, so the superposition does
+     * not hold and the micro steps are redone.
      */
-    bool moves_ropes = false;
+    bool moves_nonlinear_law = false;
   };
 
   /** Whether contacts are within reach of the ramp response. */
   bool contacts_in_reach() const { return !reach_contacts.empty(); }
   /**
    * Whether the pass must keep its start to redo the micro steps: contacts
-   * or ropes (R1) within reach of the ramp response.
+   * or nonlinear force laws (e.g. ropes, R1) within reach of the ramp response.
    */
-  bool nonlinear_in_reach() const { return contacts_in_reach() || open_ramp.moves_ropes; }
+  bool nonlinear_in_reach() const
+  {
+    return contacts_in_reach() || open_ramp.moves_nonlinear_law;
+  }
   /**
    * Whether a contact with friction (A9) lies within reach: its response is
    * not linear in the multiplier, so the coupling redoes the micro steps

@@ -4,6 +4,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <hati/model/rope.h>
+#include <hati/time/force_law.h>
 
 #include <array>
 #include <vector>
@@ -19,9 +20,10 @@ using namespace dealii;
  * `1/2 (U_{n+1} - U_n) . (F_r,n + F_r,n+1)` (so that the energy balance E1
  * closes to round-off; the rope energy is booked in the internal energy as
  * `Phi(U_0) - work`), and the tension statistics of every rope are kept
- * (minimum, maximum, time slack).
+ * (minimum, maximum, time slack). A ForceLaw, registered as `ropes`
+ * (summary.json `rope_tension`).
  */
-class RopeForces
+class RopeForces : public ForceLaw
 {
 public:
   /** What a step changes (CDLagrange::Snapshot). */
@@ -40,14 +42,18 @@ public:
   /** The ropes of the system (they must outlive this object). */
   explicit RopeForces(const std::vector<Rope> &ropes) : ropes(ropes) {}
 
-  /** Whether there is a rope. */
-  bool active() const { return !ropes.empty(); }
+  /** The registration: an instance for a system with ropes. */
+  static Registry<ForceLawFactory>::Entry registration();
+
+  std::string name() const override { return "ropes"; }
+
+  bool adds_forces() const override { return true; }
 
   /**
    * At t = 0: the tensions at @p U (`U_0`), the statistics from them, the
    * strain energy `Phi(U_0)`, and the rope forces added to @p f (N).
    */
-  void start(const Vector<double> &U, Vector<double> &f);
+  void start(const Vector<double> &U, Vector<double> &f) override;
 
   /**
    * One step: the tensions at @p U (`U_{n+1}`), `dt M^-1 F_r,n+1` added to
@@ -58,10 +64,28 @@ public:
             const Vector<double> &V,
             const Vector<double> &dt_minv,
             const double dt,
-            double *a);
+            double *a) override;
 
   /** The rope strain energy as the balance books it, `Phi(U_0) - work` (J). */
-  double stored_energy() const { return initial_energy - current.work; }
+  double stored_energy() const override { return initial_energy - current.work; }
+
+  /** The translations of both ends of every rope (R1 is nonlinear in them). */
+  std::vector<types::global_dof_index> nonlinear_dofs() const override;
+
+  /**
+   * 0: the ropes' bound `k (1/m_a + 1/m_b)` is part of the model's
+   * `omega_max` bound already (rope_omega_squared_bound()).
+   */
+  double omega_squared_bound() const override { return 0.; }
+
+  void save(std::any &state) const override;
+  void restore(const std::any &state) override;
+
+  /**
+   * `rope_tension`: per rope its least and largest tension (N) and the time
+   * it was slack (s), and the same as a table on @p out.
+   */
+  void add_summary(SummaryEntries &summary, std::ostream &out) const override;
 
   const State &state() const { return current; }
   void set_state(const State &state) { current = state; }

@@ -1,0 +1,198 @@
+#ifndef hati_time_force_law_h
+#define hati_time_force_law_h
+
+#include <deal.II/base/types.h>
+#include <deal.II/lac/vector.h>
+
+#include <hati/base/registry.h>
+#include <hati/base/summary_value.h>
+#include <hati/time/energies.h>
+
+#include <any>
+#include <functional>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace hati
+{
+using namespace dealii;
+
+class DiscreteSystem;
+
+/**
+ * One force law of a DiscreteSystem as the explicit integrator (CD-Lagrange,
+ * and through it HATI's explicit part) and the outputs see it
+ * (doc/architecture.md, "Force laws"). A law is one or both of
+ *  - a force: a nonlinear force that joins the external force of the
+ *    update (A2-A3, e.g. the ropes of R1; adds_forces(), start(), step()),
+ *  - rows: sparse rows of the velocity-level operator `L` whose impulses
+ *    the integrator applies after the free velocity (A4-A6, e.g. the
+ *    unilateral contacts with their friction, A9, and the constraint rows
+ *    of ties and rigid links, B1; has_rows(), start_rows(),
+ *    apply_impulses(): the law forms its Delassus blocks `L M^-1 L^T`
+ *    itself),
+ * with its work and stored energy for the balance (E1, add_energies()),
+ * the state a step changes (the coupling redoes steps, G3'; save(),
+ * restore()), its share of the critical step (A7, omega_squared_bound())
+ * and its summary entries (add_summary()). The integrator holds one
+ * instance per law its system holds (make_force_laws()) and calls them in
+ * registration order: the forces are summed in that order, and the rows of
+ * different laws are resolved one law after the other (one sweep of a block
+ * Gauss-Seidel), never in one cluster, so rows that must be solved together
+ * with the contacts' (the tie and rigid-link rows, B1) belong to the
+ * contacts' law (UnilateralContacts).
+ *
+ * A law is a class deriving from this one and an entry of
+ * force_law_registry() whose factory returns an instance when the system
+ * holds data of the law (its own member of DiscreteSystem, e.g. `ropes`,
+ * or DiscreteSystem::law_data under the law's name) and nullptr otherwise.
+ */
+class ForceLaw
+{
+public:
+  virtual ~ForceLaw() = default;
+
+  /** The law's registered name (force_law_registry()), e.g. `ropes`. */
+  virtual std::string name() const = 0;
+
+  /** @name A force (R1, A2-A3) */
+  /** @{ */
+  /** Whether the law adds a force to the update (start(), step()). */
+  virtual bool adds_forces() const { return false; }
+
+  /**
+   * At t = 0: the law's state at @p U (`U_0`) and its force added to @p f
+   * (N; the `G_0` of the initial half step, doc/theory.md 1.1).
+   */
+  virtual void start(const Vector<double> &U, Vector<double> &f)
+  {
+    (void)U;
+    (void)f;
+  }
+
+  /**
+   * One step of (A2)-(A3): the force at @p U (`U_{n+1}`) added to @p a as
+   * `dt M^-1 F` (with @p dt_minv = `dt M^-1`, zero on fixed DoFs), its work
+   * on the step booked with the step's velocity @p V (`V_{n+1/2}`) and time
+   * step @p dt (trapezoidal, so that E1 closes), the law's statistics.
+   */
+  virtual void step(const Vector<double> &U,
+                    const Vector<double> &V,
+                    const Vector<double> &dt_minv,
+                    const double dt,
+                    double *a)
+  {
+    (void)U;
+    (void)V;
+    (void)dt_minv;
+    (void)dt;
+    (void)a;
+  }
+
+  /**
+   * The energy the law's force stores as the balance books it (J),
+   * `Phi(U_0) - work`; add_energies() adds it to the internal energy (E1).
+   */
+  virtual double stored_energy() const { return 0.; }
+
+  /**
+   * The DoFs on which the law's force depends nonlinearly: HATI does not
+   * superpose a unit ramp response that moves one of them (G3', the
+   * responses are linear), it integrates the step instead.
+   */
+  virtual std::vector<types::global_dof_index> nonlinear_dofs() const { return {}; }
+  /** @} */
+
+  /** @name Rows of the velocity-level operator (A4-A6) */
+  /** @{ */
+  /** Whether the law has rows whose impulses apply_impulses() adds. */
+  virtual bool has_rows() const { return false; }
+
+  /**
+   * At t = 0, after the initial half step: the rows at @p U (`U_0`), with
+   * @p dt_minv = `dt M^-1` (e.g. the clusters of rows that share a DoF).
+   */
+  virtual void start_rows(const Vector<double> &U, const Vector<double> &dt_minv)
+  {
+    (void)U;
+    (void)dt_minv;
+  }
+
+  /**
+   * (A4)-(A6) after (A2)-(A3): the impulses of the step at @p U
+   * (`U_{n+1}`) with @p v_before (`V_{n+1/2}`, e.g. for Newton's
+   * restitution) and @p inverse_mass (`M^-1`, zero on fixed DoFs): @p v,
+   * the free velocity, becomes `V_{n+3/2} = V_free + M^-1 L^T lambda`; the
+   * impulses' work is booked (E1).
+   */
+  virtual void apply_impulses(const Vector<double> &U,
+                              const Vector<double> &v_before,
+                              const Vector<double> &inverse_mass,
+                              Vector<double> &v)
+  {
+    (void)U;
+    (void)v_before;
+    (void)inverse_mass;
+    (void)v;
+  }
+  /** @} */
+
+  /**
+   * The law's terms of the energy balance (E1) added to @p e: by default
+   * stored_energy() to the internal energy; the contacts set the contact
+   * work and the friction dissipation.
+   */
+  virtual void add_energies(Energies &e) const { e.internal += stored_energy(); }
+
+  /**
+   * The critical step the law imposes, as its share of `omega_max^2`
+   * (rad^2/s^2): a bound of the largest eigenvalue of `M^-1 K_law`, with
+   * `K_law` the law's tangent stiffness, for a law whose stiffness the
+   * model's bound (DiscreteSystem::highest_frequency_bound()) leaves out.
+   * CD-Lagrange takes `omega_max^2 = omega_K^2 + sum omega_law^2` into its
+   * `dt_crit` (A7): a bound of the sum (Weyl's inequality for the symmetric
+   * `M^-1/2 (K + K_law) M^-1/2`), where the smaller of separate critical
+   * steps would not be one. 0 (the default): none (a law of rows imposes
+   * none: its impulses are solved exactly, A5).
+   */
+  virtual double omega_squared_bound() const { return 0.; }
+
+  /**
+   * Save everything a step changes into @p state (CDLagrange::Snapshot:
+   * the coupling redoes steps). Reuses the storage @p state holds from a
+   * previous save of the same law.
+   */
+  virtual void save(std::any &state) const = 0;
+  /** Set the state saved by save(). */
+  virtual void restore(const std::any &state) = 0;
+
+  /**
+   * After a transient run: the law's summary.json entries added to
+   * @p summary and its lines of the terminal summary printed on @p out
+   * (none by default).
+   */
+  virtual void add_summary(SummaryEntries &summary, std::ostream &out) const
+  {
+    (void)summary;
+    (void)out;
+  }
+};
+
+/** Makes the law for @p system, or nullptr if the system has no data of it. */
+using ForceLawFactory =
+    std::function<std::unique_ptr<ForceLaw>(const DiscreteSystem &system)>;
+
+/**
+ * The force laws, in the order the integrator applies them (their forces
+ * are summed in this order), registered in source/time/force_law.cc; a
+ * test or a plugin may add() its own before the integrators are built.
+ */
+Registry<ForceLawFactory> &force_law_registry();
+
+/** An instance of every registered law that @p system holds, in registration order. */
+std::vector<std::unique_ptr<ForceLaw>> make_force_laws(const DiscreteSystem &system);
+} // namespace hati
+
+#endif

@@ -1,0 +1,130 @@
+#ifndef hati_time_unilateral_contacts_h
+#define hati_time_unilateral_contacts_h
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <hati/model/discrete_system.h>
+#include <hati/time/force_law.h>
+#include <hati/time/frictional_contacts.h>
+
+#include <vector>
+
+namespace hati
+{
+using namespace dealii;
+
+/**
+ * The contact rows of a system as CD-Lagrange resolves them, a ForceLaw
+ * registered as `contacts`: the unilateral contacts (A4-A6: the active set
+ * from the position-level gaps, the clusters of active rows that share a
+ * free DoF, one LCP `w = W lambda + q` per cluster with the Delassus matrix
+ * `W = L M^-1 L^T`, Newton's restitution in `q`), their Coulomb friction
+ * (A9: a cluster holding a frictional contact goes to FrictionalContacts'
+ * nonsmooth Gauss-Seidel), the bilateral rows (A5 as an equality) and the
+ * constraint rows of ties and rigid links (B1, ContactRow::constraint),
+ * which the models append after the contacts and which share their
+ * clusters (separate clusters would change the order of the sums). Holds
+ * the gaps, impulses, active flags, the contact work (E1) and the friction
+ * record.
+ *
+ * One instance per CD-Lagrange, also for a system without contact rows
+ * (then it does nothing), so that the integrator's contact accessors always
+ * have one to read.
+ */
+class UnilateralContacts : public ForceLaw
+{
+public:
+  /** The registration: an instance for every system. */
+  static Registry<ForceLawFactory>::Entry registration();
+
+  /** The rows of @p system (kept by reference, with its fixed flags). */
+  explicit UnilateralContacts(const DiscreteSystem &system);
+
+  std::string name() const override { return "contacts"; }
+
+  bool has_rows() const override { return !contacts.empty(); }
+
+  /**
+   * The gaps at @p U (`U_0`), the check that every row acts on a DoF with
+   * mass (@p dt_minv = `dt M^-1`) and which rows share a free DoF (their
+   * tangent rows included with friction): the A5 clusters.
+   */
+  void start_rows(const Vector<double> &U, const Vector<double> &dt_minv) override;
+
+  /**
+   * (A4)-(A6), A9: the active set from the gaps at @p U (`U_{n+1}`) or the
+   * prescribed one, the clusters' LCPs or Gauss-Seidel with @p inverse_mass,
+   * `q = L V_free + e L V_{n+1/2}` (@p v_before = `V_{n+1/2}`); @p v
+   * (`V_free`) becomes `V_{n+3/2} = V_free + M^-1 L^T lambda`; the contact
+   * and friction work (E1).
+   */
+  void apply_impulses(const Vector<double> &U,
+                      const Vector<double> &v_before,
+                      const Vector<double> &inverse_mass,
+                      Vector<double> &v) override;
+
+  /** The contact work and the friction dissipation (E1, A9). */
+  void add_energies(Energies &e) const override;
+
+  /** Gaps, impulses, active flags, contact work and the friction record. */
+  void save(std::any &state) const override;
+  void restore(const std::any &state) override;
+
+  /** Contact gaps g_k(U_n) (m), the order of system.contacts. */
+  const std::vector<double> &gaps() const { return gap; }
+  /** Impulses lambda_k of the last step (N s); zero for inactive contacts. */
+  const std::vector<double> &impulses() const { return lambda; }
+  /** Whether contact k was active in the last step (A4). */
+  const std::vector<bool> &active() const { return is_active; }
+  /** Coulomb friction (A9): the tangential impulses, states and counts. */
+  const FrictionalContacts &friction() const { return frictional_contacts; }
+  FrictionalContacts &friction() { return frictional_contacts; }
+
+  /**
+   * With a non-null @p pattern (one flag per contact), the flagged
+   * contacts are active whatever their gap and (A5) is solved as
+   * equalities (CDLagrange::CouplingView::prescribe_active_set()).
+   */
+  void prescribe_active_set(const std::vector<bool> *pattern) { prescribed = pattern; }
+  /** Set the gap (m) and impulse (N s) of contact @p k (the superposition, G3'). */
+  void set_state(const unsigned int k, const double gap_k, const double impulse)
+  {
+    gap[k] = gap_k;
+    lambda[k] = impulse;
+  }
+  /** Add @p work (J) to the contact work. */
+  void add_work(const double work) { contact_work += work; }
+
+private:
+  /** What save() keeps. */
+  struct State
+  {
+    std::vector<double> gap, lambda;
+    std::vector<bool> is_active;
+    double contact_work = 0.;
+    FrictionalContacts::Record friction;
+  };
+
+  const DiscreteSystem &system;
+  const std::vector<ContactRow> &contacts;
+  std::vector<double> gap, lambda;
+  std::vector<bool> is_active;
+  std::vector<std::vector<unsigned int>> coupled_with;
+  /** Active set imposed by prescribe_active_set() (nullptr: from the gaps). */
+  const std::vector<bool> *prescribed = nullptr;
+  /** Work space of apply_impulses(), reused from step to step. */
+  std::vector<unsigned int> active_list, cluster;
+  std::vector<bool> clustered;
+  std::vector<const ContactRow *> cluster_rows;
+  // the LCP of a cluster of each size: q, lambda, W, bilateral flags
+  std::vector<Vector<double>> lcp_q, lcp_lambda;
+  std::vector<FullMatrix<double>> lcp_W;
+  std::vector<std::vector<bool>> lcp_bilateral;
+  double contact_work = 0.;
+  /** The clusters with friction (A9) and their record. */
+  FrictionalContacts frictional_contacts;
+};
+} // namespace hati
+
+#endif

@@ -1,0 +1,25 @@
+#include <hati/model/discrete_system.h>
+#include <hati/time/force_law.h>
+#include <hati/time/rope_forces.h>
+#include <hati/time/unilateral_contacts.h>
+
+namespace hati
+{
+Registry<ForceLawFactory> &force_law_registry()
+{
+  // one line per law: its registration (name, documentation, factory); the
+  // forces are summed and the rows resolved in this order
+  static Registry<ForceLawFactory> registry(
+      "force law", {RopeForces::registration(), UnilateralContacts::registration()});
+  return registry;
+}
+
+std::vector<std::unique_ptr<ForceLaw>> make_force_laws(const DiscreteSystem &system)
+{
+  std::vector<std::unique_ptr<ForceLaw>> laws;
+  for (const auto &entry : force_law_registry().entries())
+    if (auto law = entry.create(system))
+      laws.push_back(std::move(law));
+  return laws;
+}
+} // namespace hati

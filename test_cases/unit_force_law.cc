@@ -1,0 +1,473 @@
+// Unit test of the force-law interface (ForceLaw, force_law_registry(),
+// doc/architecture.md "Force laws"): a law that no integrator names, a
+// linear spring to the ground `F = -k u` on one DoF, is registered here and
+// put into DiscreteSystem::law_data; CD-Lagrange applies it with the
+// external force (A2-A3) and takes its omega^2 bound into dt_crit (A7).
+//  (a) a 1-DoF mass on the law alone, released from u = A at rest, five
+//      periods at dt = T/1000, against the analytical oscillation
+//      A cos(omega t): the period (zero crossings, interpolated linearly)
+//      within 1e-5 relative (the scheme's period error is
+//      (omega dt)^2/24 = 1.6e-6, the interpolation's 1e-7 or less), the
+//      amplitude (largest |u| of the last period) within 1e-5 relative (the
+//      samples miss the peak by at most 1 - cos(pi/1000) = 5e-6), and the
+//      whole history within 2e-4 A of A cos(omega t) (the phase drift of the
+//      period error over five periods, 5 * 2 pi * 1.6e-6 = 5e-5, and the
+//      scheme's amplitude error). Against the scheme's own closed form
+//      `A cos(Omega t_n)`, `sin(Omega dt / 2) = omega dt / 2` (the start
+//      V_1/2 of doc/theory.md 1.1 makes it exact), to 1e-10 A: the
+//      round-off of 5000 steps of a neutrally stable recurrence and of
+//      Omega t (~1e-12 A).
+//  (b) the energy balance (E1) with the law's stored energy: constant to
+//      1e-11 relative (central differences conserve
+//      `1/2 V_{n-1/2} M V_{n+1/2} + 1/2 k u_n^2` exactly, the law's
+//      trapezoidal work makes its stored energy `1/2 k u_n^2`; round-off of
+//      the 5000 terms of the work, ~1e-13).
+//  (c) dt_crit = 2/omega from the law's bound; dt = 1.01 dt_crit refused
+//      with a message that names the law.
+//  (d) a 2-DoF chain, a spring in K between the masses and the ground
+//      spring on DoF 0 as the law, against the same system with the
+//      ground spring in K: the histories agree to 1e-10 of the amplitude
+//      over 20000 steps (only the order of the floating-point operations
+//      differs: a round-off of 1e-16 per step, accumulated as a phase).
+//  (e) a snapshot (CDLagrange::save/restore) restores the law's state: the
+//      steps redone after it give the same displacement and stored energy,
+//      bit for bit.
+//  (f) the law's summary entry, and no law made for a system without its
+//      data.
+//  (g) a law of rows (A4-A6) that no integrator names either: a bilateral
+//      row `u_0 = 0` on DoF 0 of a 2-DoF chain (spring k between the
+//      masses), its impulse `lambda = -W^-1 L V_free`, `W = L M^-1 L^T`,
+//      solved by the law. Started at rest at u = 0 with a velocity v0 on
+//      DoF 1 (G_0 = 0: the first half step needs no row), DoF 0 stays at 0
+//      to 1e-12 of the amplitude (the round-off of `V_free + M^-1 lambda`
+//      with `lambda = -m V_free`) and DoF 1 oscillates on the spring alone:
+//      against (v0/omega) sin(omega t), omega = sqrt(k/m_1), within 2e-4 of
+//      the amplitude over five periods at dt = T/1000 (the same error budget
+//      as (a)), against the scheme's closed form
+//      `v0 dt sin(Omega t_n) / sin(Omega dt)` to 1e-10 of it (round-off),
+//      and the row's impulse is the support reaction of the step,
+//      `lambda = -dt k u_1(t_{n+1})`, to 1e-12 of its largest value.
+// Every check prints value, reference and tolerance; returns non-zero on
+// failure.
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/numbers.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include "test_tools.h"
+
+#include <hati/base/mpi_environment.h>
+#include <hati/contact/sparse_rows.h>
+#include <hati/model/discrete_system.h>
+#include <hati/time/cd_lagrange.h>
+#include <hati/time/force_law.h>
+
+#include <algorithm>
+#include <any>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace dealii;
+using namespace hati;
+using namespace hati_test;
+
+namespace
+{
+/** What a model puts into DiscreteSystem::law_data["ground spring"]. */
+struct GroundSpringData
+{
+  types::global_dof_index dof = 0;
+  /** Stiffness (N/m). */
+  double stiffness = 0.;
+};
+
+/** `F = -k u` on one DoF, with the law's work and statistics (a test law). */
+class GroundSpring : public ForceLaw
+{
+public:
+  GroundSpring(const GroundSpringData &data, const double mass) : data(data), mass(mass)
+  {
+  }
+
+  static Registry<ForceLawFactory>::Entry registration()
+  {
+    return {"ground spring",
+            "a linear spring from one DoF to the ground (unit test)",
+            {},
+            [](const DiscreteSystem &system) -> std::unique_ptr<ForceLaw>
+            {
+              const auto it = system.law_data.find("ground spring");
+              if (it == system.law_data.end())
+                return nullptr;
+              const auto &d = std::any_cast<const GroundSpringData &>(it->second);
+              return std::make_unique<GroundSpring>(d, system.lumped_mass[d.dof]);
+            }};
+  }
+
+  std::string name() const override { return "ground spring"; }
+
+  bool adds_forces() const override { return true; }
+
+  void start(const Vector<double> &U, Vector<double> &f) override
+  {
+    state.force = -data.stiffness * U[data.dof];
+    state.work = 0.;
+    state.max_force = std::abs(state.force);
+    initial_energy = 0.5 * data.stiffness * U[data.dof] * U[data.dof];
+    f[data.dof] += state.force;
+  }
+
+  void step(const Vector<double> &U,
+            const Vector<double> &V,
+            const Vector<double> &dt_minv,
+            const double dt,
+            double *a) override
+  {
+    const double force = -data.stiffness * U[data.dof];
+    state.work += 0.5 * dt * V[data.dof] * (state.force + force);
+    a[data.dof] += dt_minv[data.dof] * force;
+    state.force = force;
+    state.max_force = std::max(state.max_force, std::abs(force));
+  }
+
+  double stored_energy() const override { return initial_energy - state.work; }
+
+  std::vector<types::global_dof_index> nonlinear_dofs() const override { return {}; }
+
+  double omega_squared_bound() const override { return data.stiffness / mass; }
+
+  void save(std::any &s) const override { s = state; }
+  void restore(const std::any &s) override { state = std::any_cast<const State &>(s); }
+
+  void add_summary(SummaryEntries &summary, std::ostream &out) const override
+  {
+    summary.emplace_back("ground_spring_max_force", state.max_force);
+    out << "  ground spring: largest force " << state.max_force << " N" << std::endl;
+  }
+
+private:
+  struct State
+  {
+    double force = 0., work = 0., max_force = 0.;
+  };
+  const GroundSpringData data;
+  const double mass;
+  State state;
+  double initial_energy = 0.;
+};
+
+/** What a model puts into DiscreteSystem::law_data["holding row"]. */
+struct HoldingRowData
+{
+  types::global_dof_index dof = 0;
+};
+
+/**
+ * A bilateral row `L = e_dof`, `L V = 0` after every step (A5 as an
+ * equality), solved by the law itself: `W = L M^-1 L^T`, `lambda = -W^-1 L
+ * V_free`, `V_{n+3/2} = V_free + M^-1 L^T lambda` (a test law).
+ */
+class HoldingRow : public ForceLaw
+{
+public:
+  explicit HoldingRow(const HoldingRowData &data)
+  {
+    row.dofs = {data.dof};
+    row.coefficients = {1.};
+  }
+
+  static Registry<ForceLawFactory>::Entry registration()
+  {
+    return {"holding row",
+            "a bilateral velocity-level row on one DoF (unit test)",
+            {},
+            [](const DiscreteSystem &system) -> std::unique_ptr<ForceLaw>
+            {
+              const auto it = system.law_data.find("holding row");
+              if (it == system.law_data.end())
+                return nullptr;
+              return std::make_unique<HoldingRow>(
+                  std::any_cast<const HoldingRowData &>(it->second));
+            }};
+  }
+
+  std::string name() const override { return "holding row"; }
+
+  bool has_rows() const override { return true; }
+
+  void apply_impulses(const Vector<double> &U,
+                      const Vector<double> &v_before,
+                      const Vector<double> &inverse_mass,
+                      Vector<double> &v) override
+  {
+    (void)U;
+    (void)v_before;
+    const FullMatrix<double> W = delassus<SparseRow>({&row}, inverse_mass);
+    impulse = -row.apply(v) / W(0, 0);
+    row.add_transpose(impulse, inverse_mass, v);
+  }
+
+  void save(std::any &state) const override { state = impulse; }
+  void restore(const std::any &state) override { impulse = std::any_cast<double>(state); }
+
+  /** The impulse of the last step (N s). */
+  double last_impulse() const { return impulse; }
+
+private:
+  SparseRow row;
+  double impulse = 0.;
+};
+
+/** A mass @p m (kg) on DoF 0 alone, with the ground spring @p k (N/m) as the law. */
+void make_oscillator(DiscreteSystem &s, const double m, const double k, const double A)
+{
+  s.reinit(1);
+  s.lumped_mass[0] = m;
+  s.initial_displacement[0] = A;
+  s.law_data["ground spring"] = GroundSpringData{0, k};
+}
+
+/**
+ * Two masses @p m0, @p m1 (kg), a spring @p k1 (N/m) between them in K, and
+ * the ground spring @p k0 on DoF 0: as the law (@p as_law) or in K.
+ */
+void make_chain(DiscreteSystem &s,
+                const double m0,
+                const double m1,
+                const double k0,
+                const double k1,
+                const bool as_law)
+{
+  s.reinit(2);
+  s.lumped_mass[0] = m0;
+  s.lumped_mass[1] = m1;
+  DynamicSparsityPattern dsp(2, 2);
+  for (unsigned int a = 0; a < 2; ++a)
+    for (unsigned int b = 0; b < 2; ++b)
+      dsp.add(a, b);
+  s.stiffness_pattern.copy_from(dsp);
+  s.stiffness.reinit(s.stiffness_pattern);
+  s.stiffness.set(0, 0, k1 + (as_law ? 0. : k0));
+  s.stiffness.set(0, 1, -k1);
+  s.stiffness.set(1, 0, -k1);
+  s.stiffness.set(1, 1, k1);
+  s.initial_displacement[0] = 0.01;
+  s.initial_velocity[1] = -0.3;
+  if (as_law)
+    s.law_data["ground spring"] = GroundSpringData{0, k0};
+}
+
+/** The law called @p name of @p cd (nullptr if none). */
+const ForceLaw *law_of(const CDLagrange &cd, const std::string &name)
+{
+  for (const auto &law : cd.force_laws())
+    if (law->name() == name)
+      return law.get();
+  return nullptr;
+}
+
+void test_oscillator()
+{
+  const double m = 2., k = 800., A = 0.01, omega = std::sqrt(k / m),
+               T = 2. * numbers::PI / omega, dt = T / 1000.;
+  DiscreteSystem s;
+  make_oscillator(s, m, k, A);
+  CDLagrange cd(s, dt, 1.);
+  expect(law_of(cd, "ground spring") != nullptr,
+         "(a) the integrator holds the registered law it does not name");
+  const double Omega = 2. / dt * std::asin(0.5 * omega * dt);
+  // the scheme's invariant `1/2 V_{n-1/2} M V_{n+1/2} + 1/2 k u_n^2` at t = 0
+  // (V_{-1/2} and V_{1/2} from the start of doc/theory.md 1.1)
+  const Energies e0 = cd.energies();
+  const double E0 = e0.kinetic + e0.internal;
+  double error_exact = 0., error_scheme = 0., energy_error = 0., amplitude = 0.;
+  std::vector<double> crossings; // down- and up-crossings of u = 0
+  double u_prev = A, t_prev = 0.;
+  const unsigned int n_steps = 5000;
+  for (unsigned int n = 1; n <= n_steps; ++n)
+  {
+    cd.step();
+    const double t = cd.time(), u = cd.displacement()[0];
+    error_exact = std::max(error_exact, std::abs(u - A * std::cos(omega * t)));
+    error_scheme = std::max(error_scheme, std::abs(u - A * std::cos(Omega * t)));
+    if ((u_prev > 0.) != (u > 0.))
+      crossings.push_back(t_prev + dt * u_prev / (u_prev - u));
+    if (n > n_steps - 1000)
+      amplitude = std::max(amplitude, std::abs(u));
+    const Energies e = cd.energies();
+    energy_error = std::max(energy_error, std::abs(e.kinetic + e.internal - E0));
+    u_prev = u;
+    t_prev = t;
+  }
+  // a period spans two crossings: the first and the last one of the run
+  const double period =
+      2. * (crossings.back() - crossings.front()) / double(crossings.size() - 1);
+  check("(a) period (s) from " + std::to_string(crossings.size()) + " zero crossings",
+        period,
+        T,
+        1e-5 * T);
+  check("(a) amplitude (m) over the fifth period", amplitude, A, 1e-5 * A);
+  check("(a) max |u - A cos(omega t)| (m) over five periods", error_exact, 0., 2e-4 * A);
+  check("(a) max |u - A cos(Omega t_n)| (m), the scheme's closed form",
+        error_scheme,
+        0.,
+        1e-10 * A);
+  check("(b) max |E_kin + E_stored - E_0| (J)", energy_error, 0., 1e-11 * E0);
+}
+
+void test_critical_step()
+{
+  const double m = 2., k = 800.;
+  DiscreteSystem s;
+  make_oscillator(s, m, k, 0.01);
+  const double dt_crit = 2. / std::sqrt(k / m);
+  check("(c) dt_crit (s) = 2/omega from the law's bound",
+        CDLagrange(s, 1e-3, 1.).critical_time_step(),
+        dt_crit,
+        1e-14 * dt_crit);
+  std::string what;
+  try
+  {
+    CDLagrange refused(s, 1.01 * dt_crit, 1.);
+  }
+  catch (const std::exception &e)
+  {
+    what = message_of(e);
+  }
+  std::cout << "     message: " << what << std::endl;
+  expect(what.find("stability limit") != std::string::npos &&
+             what.find("'ground spring'") != std::string::npos,
+         "(c) dt = 1.01 dt_crit refused, the message names the law");
+}
+
+void test_chain_and_snapshot()
+{
+  const double m0 = 1.5, m1 = 0.7, k0 = 3000., k1 = 1200.;
+  DiscreteSystem with_law, in_k;
+  make_chain(with_law, m0, m1, k0, k1, true);
+  make_chain(in_k, m0, m1, k0, k1, false);
+  const double dt = 1e-4;
+  CDLagrange a(with_law, dt, 0.9), b(in_k, dt, 0.9);
+  check("(d) dt_crit with the law's bound added is at most the chain's",
+        std::min(0., b.critical_time_step() - a.critical_time_step()),
+        0.,
+        0.);
+  double difference = 0., scale = 0.;
+  for (unsigned int n = 0; n < 20000; ++n)
+  {
+    a.step();
+    b.step();
+    for (unsigned int i = 0; i < 2; ++i)
+    {
+      difference =
+          std::max(difference, std::abs(a.displacement()[i] - b.displacement()[i]));
+      scale = std::max(scale, std::abs(b.displacement()[i]));
+    }
+  }
+  check("(d) 2 DoFs, law against K: max |U_law - U_K| (m) over 2 s",
+        difference,
+        0.,
+        1e-10 * scale);
+
+  CDLagrange::Snapshot snapshot;
+  a.save(snapshot);
+  for (unsigned int n = 0; n < 37; ++n)
+    a.step();
+  const Vector<double> U = a.displacement();
+  const double stored = law_of(a, "ground spring")->stored_energy();
+  a.restore(snapshot);
+  for (unsigned int n = 0; n < 37; ++n)
+    a.step();
+  bool same = law_of(a, "ground spring")->stored_energy() == stored;
+  for (unsigned int i = 0; i < 2; ++i)
+    same = same && a.displacement()[i] == U[i];
+  expect(same, "(e) 37 steps redone after restore(): U and the stored energy bitwise");
+
+  SummaryEntries summary;
+  std::ostringstream out;
+  law_of(a, "ground spring")->add_summary(summary, out);
+  expect(summary.size() == 1 && summary[0].first == "ground_spring_max_force",
+         "(f) the law's summary entry");
+  DiscreteSystem plain;
+  make_oscillator(plain, 1., 1., 0.);
+  plain.law_data.clear();
+  bool none = true;
+  for (const auto &law : make_force_laws(plain))
+    none = none && law->name() != "ground spring";
+  expect(none, "(f) no ground spring for a system without its data");
+}
+void test_row_law()
+{
+  const double m0 = 1.5, m1 = 0.7, k = 1200., v0 = 0.3, omega = std::sqrt(k / m1),
+               T = 2. * numbers::PI / omega, dt = T / 1000.;
+  DiscreteSystem s;
+  s.reinit(2);
+  s.lumped_mass[0] = m0;
+  s.lumped_mass[1] = m1;
+  DynamicSparsityPattern dsp(2, 2);
+  for (unsigned int a = 0; a < 2; ++a)
+    for (unsigned int b = 0; b < 2; ++b)
+      dsp.add(a, b);
+  s.stiffness_pattern.copy_from(dsp);
+  s.stiffness.reinit(s.stiffness_pattern);
+  s.stiffness.set(0, 0, k);
+  s.stiffness.set(0, 1, -k);
+  s.stiffness.set(1, 0, -k);
+  s.stiffness.set(1, 1, k);
+  s.initial_velocity[1] = v0;
+  s.law_data["holding row"] = HoldingRowData{0};
+  CDLagrange cd(s, dt, 1.);
+  const auto *row = dynamic_cast<const HoldingRow *>(law_of(cd, "holding row"));
+  expect(row != nullptr, "(g) the integrator holds the registered law of rows");
+  if (!row)
+    return;
+  const double Omega = 2. / dt * std::asin(0.5 * omega * dt);
+  const double amplitude = v0 / omega;
+  double u0_max = 0., error_exact = 0., error_scheme = 0., reaction_error = 0.,
+         largest_impulse = 0.;
+  for (unsigned int n = 1; n <= 5000; ++n)
+  {
+    cd.step();
+    const double t = cd.time(), u1 = cd.displacement()[1];
+    u0_max = std::max(u0_max, std::abs(cd.displacement()[0]));
+    error_exact = std::max(error_exact, std::abs(u1 - amplitude * std::sin(omega * t)));
+    error_scheme =
+        std::max(error_scheme,
+                 std::abs(u1 - v0 * dt * std::sin(Omega * t) / std::sin(Omega * dt)));
+    reaction_error =
+        std::max(reaction_error, std::abs(row->last_impulse() + dt * k * u1));
+    largest_impulse = std::max(largest_impulse, std::abs(row->last_impulse()));
+  }
+  check("(g) max |u_0| (m), held by the row", u0_max, 0., 1e-12 * amplitude);
+  check("(g) max |u_1 - (v0/omega) sin(omega t)| (m) over five periods",
+        error_exact,
+        0.,
+        2e-4 * amplitude);
+  check("(g) max |u_1 - v0 dt sin(Omega t_n)/sin(Omega dt)| (m), the scheme's form",
+        error_scheme,
+        0.,
+        1e-10 * amplitude);
+  check("(g) max |lambda + dt k u_1| (N s), the support reaction",
+        reaction_error,
+        0.,
+        1e-12 * largest_impulse);
+}
+} // namespace
+
+int main(int argc, char **argv)
+{
+  const hati::MpiEnvironment mpi_environment; // own Open MPI session folder
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // the registration: one line, as for a law of the code (source/time/force_law.cc)
+  force_law_registry().add(GroundSpring::registration());
+  force_law_registry().add(HoldingRow::registration());
+  test_oscillator();
+  test_critical_step();
+  test_chain_and_snapshot();
+  test_row_law();
+  return finish();
+}
