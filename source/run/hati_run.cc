@@ -80,19 +80,26 @@ void run_hati(Problem &problem, RunDirectory &directory)
             << coupling->n_interface_dofs() << " interface DoFs" << std::endl;
   {
     // macro-step aliasing (doc/theory.md 11.3): a warning, not a refusal
-    const auto omegas = free_interface_frequencies(parts[0].system);
+    const auto modes =
+        free_interface_modes(parts[0].system, problem.decomposition->rows[0]);
     const double dt = coupling->micro_time_step();
     const unsigned int m = coupling->time_step_ratio();
-    const std::string w = aliasing_warning(
-        aliasing_modes(omegas, dt, m, aliasing_phase), omegas, dt, m, aliasing_phase);
-    if (omegas.empty())
+    const std::string w =
+        aliasing_warning(aliasing_modes(modes, dt, m, aliasing_phase, aliasing_share),
+                         modes,
+                         dt,
+                         m,
+                         aliasing_phase,
+                         aliasing_share);
+    if (modes.empty())
       std::cout << "  macro-step aliasing not checked (the explicit subdomain has more "
                    "than 2000 free DoFs)"
                 << std::endl;
     else
-      std::cout << "  explicit free-interface modes: " << omegas.size() << ", up to "
-                << omegas.back() / (2. * M_PI) << " Hz; " << (w.empty() ? "none" : "some")
-                << " folds within " << aliasing_phase
+      std::cout << "  explicit free-interface modes: " << modes.size() << ", up to "
+                << modes.back().omega / (2. * M_PI) << " Hz; "
+                << (w.empty() ? "none" : "some") << " with " << 100. * aliasing_share
+                << " % of the interface's flexibility folds within " << aliasing_phase
                 << " rad of zero frequency per macro step" << std::endl;
     if (!w.empty())
       problem.warn(w);

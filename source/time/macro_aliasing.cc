@@ -9,8 +9,9 @@
 
 namespace hati
 {
-std::vector<double> free_interface_frequencies(const DiscreteSystem &explicit_part,
-                                               const unsigned int max_dofs)
+std::vector<FreeInterfaceMode> free_interface_modes(const DiscreteSystem &explicit_part,
+                                                    const std::vector<SparseRow> &rows,
+                                                    const unsigned int max_dofs)
 {
   std::vector<unsigned int> free;
   for (unsigned int i = 0; i < explicit_part.n_dofs(); ++i)
@@ -33,64 +34,96 @@ std::vector<double> free_interface_frequencies(const DiscreteSystem &explicit_pa
             it->value() / std::sqrt(explicit_part.lumped_mass[free[i]] *
                                     explicit_part.lumped_mass[it->column()]);
   Vector<double> eigenvalues;
-  FullMatrix<double> eigenvectors;
+  FullMatrix<double> y; // columns: M^1/2 phi, phi mass-normalised
   a.compute_eigenvalues_symmetric(
-      -1., std::numeric_limits<double>::max(), 0., eigenvalues, eigenvectors);
-  std::vector<double> omegas;
-  for (unsigned int i = 0; i < eigenvalues.size(); ++i)
-    omegas.push_back(std::sqrt(std::max(eigenvalues[i], 0.)));
-  std::sort(omegas.begin(), omegas.end());
-  return omegas;
-}
-
-std::vector<AliasingMode> aliasing_modes(const std::vector<double> &omegas,
-                                         const double dt,
-                                         const unsigned int m,
-                                         const double folded_phase)
-{
-  const double DT = m * dt, two_pi = 2. * M_PI;
-  std::vector<AliasingMode> modes;
-  for (unsigned int i = 0; i < omegas.size(); ++i)
+      -1., std::numeric_limits<double>::max(), 0., eigenvalues, y);
+  std::vector<FreeInterfaceMode> modes(eigenvalues.size());
+  double largest = 0.;
+  for (unsigned int j = 0; j < modes.size(); ++j)
   {
-    const double phase = omegas[i] * DT;
-    const double k = std::round(phase / two_pi);
-    if (phase <= M_PI || k < 1.)
-      continue;
-    const double folded = std::abs(phase - two_pi * k);
-    if (folded < folded_phase)
-      modes.push_back({i + 1, omegas[i] / two_pi, folded / DT / two_pi});
+    modes[j].omega = std::sqrt(std::max(eigenvalues[j], 0.));
+    largest = std::max(largest, modes[j].omega);
   }
+  // the interface flexibility of each flexible mode, (C_E phi)^2 / Omega^2
+  double total = 0.;
+  for (unsigned int j = 0; j < modes.size(); ++j)
+  {
+    if (modes[j].omega <= 1e-6 * largest)
+      continue;
+    double c2 = 0.;
+    for (const SparseRow &row : rows)
+    {
+      double c = 0.;
+      for (unsigned int k = 0; k < row.dofs.size(); ++k)
+        if (local[row.dofs[k]] >= 0)
+          c += row.coefficients[k] * y(local[row.dofs[k]], j) /
+               std::sqrt(explicit_part.lumped_mass[row.dofs[k]]);
+      c2 += c * c;
+    }
+    modes[j].share = c2 / (modes[j].omega * modes[j].omega);
+    total += modes[j].share;
+  }
+  for (auto &mode : modes)
+    mode.share = total > 0. ? mode.share / total : 0.;
+  std::sort(modes.begin(),
+            modes.end(),
+            [](const FreeInterfaceMode &a, const FreeInterfaceMode &b)
+            { return a.omega < b.omega; });
   return modes;
 }
 
-std::string aliasing_warning(const std::vector<AliasingMode> &modes,
-                             const std::vector<double> &omegas,
+std::vector<AliasingMode> aliasing_modes(const std::vector<FreeInterfaceMode> &modes,
+                                         const double dt,
+                                         const unsigned int m,
+                                         const double folded_phase,
+                                         const double min_share)
+{
+  const double DT = m * dt, two_pi = 2. * M_PI;
+  std::vector<AliasingMode> aliased;
+  for (unsigned int i = 0; i < modes.size(); ++i)
+  {
+    const double phase = modes[i].omega * DT;
+    const double k = std::round(phase / two_pi);
+    if (phase <= M_PI || k < 1. || modes[i].share < min_share)
+      continue;
+    const double folded = std::abs(phase - two_pi * k);
+    if (folded < folded_phase)
+      aliased.push_back(
+          {i + 1, modes[i].share, modes[i].omega / two_pi, folded / DT / two_pi});
+  }
+  return aliased;
+}
+
+std::string aliasing_warning(const std::vector<AliasingMode> &aliased,
+                             const std::vector<FreeInterfaceMode> &modes,
                              const double dt,
                              const unsigned int m,
-                             const double folded_phase)
+                             const double folded_phase,
+                             const double min_share)
 {
-  if (modes.empty())
+  if (aliased.empty())
     return "";
   // the mode folded closest to zero frequency
   const AliasingMode &worst =
-      *std::min_element(modes.begin(),
-                        modes.end(),
+      *std::min_element(aliased.begin(),
+                        aliased.end(),
                         [](const AliasingMode &a, const AliasingMode &b)
                         { return a.folded_frequency < b.folded_frequency; });
   std::vector<unsigned int> clean;
   for (unsigned int r = (m > 4 ? m - 4 : 1); r <= m + 4; ++r)
-    if (r != m && aliasing_modes(omegas, dt, r, folded_phase).empty())
+    if (r != m && aliasing_modes(modes, dt, r, folded_phase, min_share).empty())
       clean.push_back(r);
   std::ostringstream s;
   s << "Time integration/HATI/Time step ratio = " << m
     << ": macro-step aliasing (doc/theory.md 11.3): the explicit subdomain's "
        "free-interface mode "
-    << worst.number << " (" << worst.frequency << " Hz) sampled once per macro step "
+    << worst.number << " (" << worst.frequency << " Hz, " << 100. * worst.share
+    << " % of the interface's flexibility) sampled once per macro step "
     << "folds to " << worst.folded_frequency << " Hz, onto the coupled structure's low "
     << "modes";
-  if (modes.size() > 1)
-    s << " (" << modes.size() - 1 << " more such mode" << (modes.size() > 2 ? "s" : "")
-      << ")";
+  if (aliased.size() > 1)
+    s << " (" << aliased.size() - 1 << " more such mode"
+      << (aliased.size() > 2 ? "s" : "") << ")";
   s << "; the coupling's error there does not shrink with the time step";
   if (!clean.empty())
   {
