@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Frames with joints where three and four members meet (deal.II 9.4 cannot
 share such vertices; hati ties separate member ends with constraints), run
-with the executable given (the ctest suite runs it with the Release and the
-Debug deal.II library). References: hand solutions of the plane cross and
+with the executable given (test_cases/debug/frame_joints_debug.cc checks
+the same frames against the Debug deal.II library). References: hand solutions of the plane cross and
 the T-joint (parameter_files/frame_joints.prm)."""
 import numpy as np
 

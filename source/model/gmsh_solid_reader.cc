@@ -4,8 +4,8 @@
 #include <deal.II/grid/tria_description.h>
 
 #include <hati/base/input_file.h>
+#include <hati/base/messages.h>
 #include <hati/model/gmsh_solid_reader.h>
-#include <hati/output/run_directory.h>
 
 #include <algorithm>
 #include <array>

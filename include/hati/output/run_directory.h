@@ -1,6 +1,7 @@
 #ifndef hati_output_run_directory_h
 #define hati_output_run_directory_h
 
+#include <hati/base/messages.h>
 #include <hati/output/output_file.h>
 
 #include <exception>
@@ -135,9 +136,6 @@ bool stop_requested();
 int stop_signal();
 /** Ignore SIGPIPE: a closed standard output does not kill the run. */
 void ignore_broken_pipes();
-
-/** The message of an exception on one line, without deal.II's banner. */
-std::string one_line_message(const std::exception &e);
 
 /** The system error text of errno, e.g. "No space left on device". */
 std::string system_error_text(const int error);
