@@ -24,7 +24,11 @@
 //      B-C: the first and the last share no DoF, they are in one cluster
 //      through A-B): with e = 0 all stop, impulses (mA + mB + mC) v,
 //      (mB + mC) v, mC v (momentum balance of each sub-chain).
-// In each case the answer of per-contact closed forms lambda_k = max(0,
+//  (F) the Delassus matrix of rows of random lengths (1 to 300 entries, some
+//      DoFs repeated within a row, long rows that share DoFs like the rows of
+//      a tie) equals bitwise the double loop over the entries of each pair
+//      of rows (terms added by position in row a, then in row b).
+// In (A)-(E) the answer of per-contact closed forms lambda_k = max(0,
 // -q_k / W_kk) (contacts treated independently) is computed and shown to
 // differ from the exact one, so that the test checks the coupling. Every
 // check prints value, reference and tolerance; returns non-zero on failure.
@@ -39,6 +43,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -389,6 +394,50 @@ void test_line()
   expect(std::abs(vB_independent - cd.velocity()[1]) > 0.1 * v,
          "(D) contacts treated independently give another answer");
 }
+
+/** W_ab as the double loop over the entries of rows a and b (the reference). */
+double delassus_entry(const SparseRow &a, const SparseRow &b, const Vector<double> &minv)
+{
+  double w = 0.;
+  for (unsigned int i = 0; i < a.dofs.size(); ++i)
+    for (unsigned int j = 0; j < b.dofs.size(); ++j)
+      if (a.dofs[i] == b.dofs[j])
+        w += a.coefficients[i] * b.coefficients[j] * minv[a.dofs[i]];
+  return w;
+}
+
+void test_delassus_order()
+{
+  const unsigned int n_dofs = 400;
+  Vector<double> minv(n_dofs);
+  unsigned int seed = 12345;
+  auto next = [&]() { return seed = 1103515245u * seed + 12345u; };
+  auto uniform = [&]() { return double(next() % 1000001) / 1000000. - 0.5; };
+  for (unsigned int d = 0; d < n_dofs; ++d)
+    minv[d] = (d % 17 == 0) ? 0. : 1. + uniform();
+  const std::vector<unsigned int> lengths = {1, 3, 8, 9, 40, 150, 300, 300, 2, 120, 77};
+  std::vector<SparseRow> rows(lengths.size());
+  for (unsigned int r = 0; r < rows.size(); ++r)
+    for (unsigned int i = 0; i < lengths[r]; ++i)
+    {
+      // a narrow DoF range for some rows: many shared and repeated DoFs
+      const unsigned int range = (r % 3 == 0) ? 50 : n_dofs;
+      rows[r].dofs.push_back(next() % range);
+      rows[r].coefficients.push_back(uniform() * std::pow(10., int(next() % 7) - 3));
+    }
+  std::vector<const SparseRow *> pointers;
+  for (const auto &r : rows)
+    pointers.push_back(&r);
+  const FullMatrix<double> W = delassus(pointers, minv);
+  unsigned int n_differ = 0;
+  for (unsigned int a = 0; a < rows.size(); ++a)
+    for (unsigned int b = 0; b < rows.size(); ++b)
+    {
+      const double w = delassus_entry(rows[a], rows[b], minv);
+      n_differ += (std::memcmp(&w, &W(a, b), sizeof(double)) != 0) ? 1 : 0;
+    }
+  check("(F) Delassus entries not bitwise the double loop's", n_differ, 0., 0.);
+}
 } // namespace
 
 int main(int argc, char **argv)
@@ -402,6 +451,7 @@ int main(int argc, char **argv)
     test_gravity_impact();
     test_rest();
     test_line();
+    test_delassus_order();
   }
   catch (const std::exception &e)
   {

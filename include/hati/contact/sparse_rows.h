@@ -5,6 +5,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
+#include <numeric>
 #include <vector>
 
 namespace hati
@@ -41,28 +43,82 @@ struct SparseRow
   }
 };
 
+namespace internal
+{
+/**
+ * The positions of the entries of @p row sorted by (DoF, position): the
+ * entries on one DoF are consecutive, in the order they have in the row.
+ */
+template <class Row> void sort_by_dof(const Row &row, std::vector<unsigned int> &order)
+{
+  order.resize(row.dofs.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(),
+                   order.end(),
+                   [&](const unsigned int i, const unsigned int j)
+                   { return row.dofs[i] < row.dofs[j]; });
+}
+} // namespace internal
+
 /**
  * The Delassus matrix `W = L M^-1 L^T` of the rows @p rows (A5), with
  * @p inverse_mass the diagonal of `M^-1` (0 on fixed DoFs): `W_ab` sums
  * `c_a c_b / m` over the DoFs the two rows share.
+ *
+ * The sum of each `W_ab` is the one of the double loop over the entries of
+ * the two rows, `for i in a: for j in b: if dof_i == dof_j: w += c_i c_j /
+ * m`: its terms are added in that order (i, then j), so the result does not
+ * depend on how the matching entries are found. A row longer than
+ * `short_row` entries (the bilateral rows of a tie, one entry per face DoF)
+ * is looked up through its entries sorted by DoF (a binary search per entry
+ * of the other row, the matches of one DoF in increasing position): the
+ * cost of a pair is `len_a log len_b` instead of `len_a len_b`
+ * (doc/theory.md 11.2). The short rows of point contacts keep the double
+ * loop.
  */
 template <class Row>
 void delassus(const std::vector<const Row *> &rows,
               const Vector<double> &inverse_mass,
               FullMatrix<double> &W)
 {
+  constexpr unsigned int short_row = 8;
   const unsigned int m = rows.size();
   if (W.m() != m || W.n() != m)
     W.reinit(m, m);
+  // order[b]: row b's positions sorted by DoF, for its long rows only
+  std::vector<std::vector<unsigned int>> order(m);
+  for (unsigned int b = 0; b < m; ++b)
+    if (rows[b]->dofs.size() > short_row)
+      internal::sort_by_dof(*rows[b], order[b]);
   for (unsigned int a = 0; a < m; ++a)
     for (unsigned int b = 0; b < m; ++b)
     {
+      const Row &ra = *rows[a], &rb = *rows[b];
       double w = 0.;
-      for (unsigned int i = 0; i < rows[a]->dofs.size(); ++i)
-        for (unsigned int j = 0; j < rows[b]->dofs.size(); ++j)
-          if (rows[a]->dofs[i] == rows[b]->dofs[j])
-            w += rows[a]->coefficients[i] * rows[b]->coefficients[j] *
-                 inverse_mass[rows[a]->dofs[i]];
+      if (order[b].empty())
+      {
+        for (unsigned int i = 0; i < ra.dofs.size(); ++i)
+          for (unsigned int j = 0; j < rb.dofs.size(); ++j)
+            if (ra.dofs[i] == rb.dofs[j])
+              w += ra.coefficients[i] * rb.coefficients[j] * inverse_mass[ra.dofs[i]];
+      }
+      else
+      {
+        const std::vector<unsigned int> &ob = order[b];
+        for (unsigned int i = 0; i < ra.dofs.size(); ++i)
+        {
+          const types::global_dof_index d = ra.dofs[i];
+          auto p =
+              std::lower_bound(ob.begin(),
+                               ob.end(),
+                               d,
+                               [&](const unsigned int j, const types::global_dof_index e)
+                               { return rb.dofs[j] < e; });
+          // the entries of row b on DoF d, in increasing position j
+          for (; p != ob.end() && rb.dofs[*p] == d; ++p)
+            w += ra.coefficients[i] * rb.coefficients[*p] * inverse_mass[d];
+        }
+      }
       W(a, b) = w;
     }
 }
