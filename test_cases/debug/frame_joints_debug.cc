@@ -26,11 +26,14 @@ namespace
 {
 unsigned int failures = 0;
 
-void check(const std::string &what, const double value, const double reference, const double tol)
+void check(const std::string &what,
+           const double value,
+           const double reference,
+           const double tol)
 {
   const bool ok = std::abs(value - reference) <= tol;
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (reference " << reference
-            << ", tolerance " << tol << ")" << std::endl;
+  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (reference "
+            << reference << ", tolerance " << tol << ")" << std::endl;
   failures += ok ? 0 : 1;
 }
 
@@ -69,17 +72,20 @@ int main()
 {
   const double E = 2.1e11, nu = 0.3, G = E / (2. * (1. + nu));
   const double Iy = 4.1666666666667e-6, J = 2.86e-6, L = 2., P = 1000.;
-  const auto cross =
-      solve_frame("east: C, E, s, steel, 3; west: C, W, s, steel, 3; north: C, N, s, steel, "
-                  "3; south: C, S, s, steel, 3",
-                  "E: clamped; W: clamped; N: clamped; S: clamped");
+  const auto cross = solve_frame(
+      "east: C, E, s, steel, 3; west: C, W, s, steel, 3; north: C, N, s, steel, "
+      "3; south: C, S, s, steel, 3",
+      "E: clamped; W: clamped; N: clamped; S: clamped");
   const double w = -P * L * L * L / (48. * E * Iy);
   check("cross: w_C (m)", cross[2], w, 1e-9 * std::abs(w));
-  check("cross: no rotation at C (rad)", std::abs(cross[3]) + std::abs(cross[4]), 0., 1e-15);
+  check("cross: no rotation at C (rad)",
+        std::abs(cross[3]) + std::abs(cross[4]),
+        0.,
+        1e-15);
 
-  const auto tee =
-      solve_frame("east: C, E, s, steel, 3; north: C, N, s, steel, 3; south: C, S, s, steel, 3",
-                  "E: clamped; N: clamped; S: clamped");
+  const auto tee = solve_frame(
+      "east: C, E, s, steel, 3; north: C, N, s, steel, 3; south: C, S, s, steel, 3",
+      "E: clamped; N: clamped; S: clamped");
   const double EI = E * Iy, a = 36. * EI / (L * L * L), b = 6. * EI / (L * L),
                d = 4. * EI / L + 2. * G * J / L, det = a * d - b * b;
   const double w_t = d * P / det, th_t = -b * P / det;
