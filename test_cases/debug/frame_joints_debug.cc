@@ -13,6 +13,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/sparse_direct.h>
 
+#include "../test_tools.h"
+
 #include <hati/model/discrete_system.h>
 #include <hati/model/frame.h>
 #include <hati/model/frame_parser.h>
@@ -21,21 +23,10 @@
 #include <iostream>
 
 using namespace hati;
+using namespace hati_test;
 
 namespace
 {
-unsigned int failures = 0;
-
-void check(const std::string &what,
-           const double value,
-           const double reference,
-           const double tol)
-{
-  const bool ok = std::abs(value - reference) <= tol;
-  std::cout << (ok ? "ok   " : "FAIL ") << what << ": " << value << " (reference "
-            << reference << ", tolerance " << tol << ")" << std::endl;
-  failures += ok ? 0 : 1;
-}
 
 /** The static displacement of the monitor node C (ux, uy, uz, rx, ry, rz). */
 std::vector<double> solve_frame(const std::string &members, const std::string &supports)
@@ -92,8 +83,5 @@ int main()
   check("T-joint: |w_C| (m)", std::abs(tee[2]), std::abs(w_t), 1e-9 * std::abs(w_t));
   check("T-joint: |ry_C| (rad)", std::abs(tee[4]), std::abs(th_t), 1e-9 * std::abs(th_t));
   check("T-joint: rx_C (rad)", tee[3], 0., 1e-15);
-  std::cout << (failures ? std::to_string(failures) + " check(s) failed"
-                         : std::string("all checks passed"))
-            << std::endl;
-  return failures == 0 ? 0 : 1;
+  return finish();
 }
