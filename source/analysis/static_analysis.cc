@@ -9,6 +9,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <hati/analysis/static_analysis.h>
+#include <hati/analysis/static_contacts.h>
 #include <hati/linear_algebra/amg_preconditioner.h>
 #include <hati/linear_algebra/direct_solver.h>
 #include <hati/model/rope_diagnostics.h>
@@ -121,17 +122,6 @@ void check_rigid_translations(const DiscreteSystem &system,
   }
 }
 
-/** Whether contact rows @p a and @p b are exact opposites (two-sided, no clearance). */
-bool opposite_rows(const ContactRow &a, const ContactRow &b)
-{
-  if (a.dofs != b.dofs || a.initial_gap != b.initial_gap)
-    return false;
-  for (unsigned int j = 0; j < a.dofs.size(); ++j)
-    if (a.coefficients[j] != -b.coefficients[j])
-      return false;
-  return true;
-}
-
 /**
  * The static problem with the closed contact rows @p closed as bilateral
  * constraints: `[K L^T; L 0] [U; mu] = [F; -g0]`, `lambda = -mu` (so that
@@ -145,7 +135,9 @@ std::vector<double> solve_closed(const DiscreteSystem &system,
                                  const Vector<double> &F,
                                  const std::vector<const SparseRow *> &closed,
                                  const std::vector<double> &closed_rhs,
-                                 Vector<double> &U)
+                                 Vector<double> &U,
+                                 const std::vector<unsigned int> &centred,
+                                 PlayProbe &probe)
 {
   const unsigned int n = system.n_dofs(), m = closed.size(), N = n + m;
   const std::vector<bool> &fixed = system.fixed;
@@ -215,223 +207,28 @@ std::vector<double> solve_closed(const DiscreteSystem &system,
   std::vector<double> lambda(m);
   for (unsigned int k = 0; k < m; ++k)
     lambda[k] = -x[n + k];
-  return lambda;
-}
-
-/**
- * The contact rows the static state holds closed: zero initial gap and a
- * free DoF in the row; the second of two opposite rows (two-sided without
- * clearance) is left to the first.
- */
-struct ClosedContacts
-{
-  /** The closed rows, in the order of the contacts. */
-  std::vector<unsigned int> closed;
-  /** The first rows of two-sided pairs with a clearance, held where they are. */
-  std::vector<unsigned int> centred;
-  /** Per contact row: the closed row it is the opposite of, or -1. */
-  std::vector<int> opposite;
-
-  explicit ClosedContacts(const DiscreteSystem &system)
-      : opposite(system.contacts.size(), -1)
-  {
-    for (unsigned int k = 0; k < system.contacts.size(); ++k)
-    {
-      const ContactRow &c = system.contacts[k];
-      bool free_dof = false;
-      for (const auto dof : c.dofs)
-        free_dof = free_dof || !system.fixed[dof];
-      if (!free_dof)
-        continue;
-      // a row with a gap is held only as the second of a two-sided pair whose
-      // first row (the same gap, the opposite normal) precedes it
-      if (c.initial_gap != 0.)
-      {
-        for (unsigned int j = 0; j < k; ++j)
-          if (opposite_rows(system.contacts[j], c))
-          {
-            centred.push_back(j);
-            closed.push_back(j);
-            opposite[k] = j;
-            break;
-          }
-        continue;
-      }
-      for (const unsigned int j : closed)
-        if (opposite_rows(system.contacts[j], c))
-          opposite[k] = j;
-      if (opposite[k] < 0)
-        closed.push_back(k);
-    }
-  }
-
-  /** Whether the closed row @p k is the first of a pair with a clearance. */
-  bool is_centred(const unsigned int k) const
-  {
-    return std::find(centred.begin(), centred.end(), k) != centred.end();
-  }
-};
-
-/**
- * The contact force per contact row (N) from the multipliers @p lambda of
- * the closed rows (solve_closed()): a bilateral pair in tension is carried
- * by its second row; throws if a unilateral contact is in tension or if
- * the load @p F pushes a two-sided contact across its clearance.
- */
-std::vector<double> closed_contact_forces(const DiscreteSystem &system,
-                                          const ClosedContacts &contacts,
-                                          const std::vector<double> &lambda,
-                                          const Vector<double> &F)
-{
-  const std::vector<unsigned int> &closed = contacts.closed;
-  const std::vector<int> &opposite = contacts.opposite;
-  double largest = 0.;
+  // the pushed centred rows: the block of A^-1 on them (PlayProbe), one
+  // back-substitution each
+  double largest = 0., load = 0.;
   for (const double l : lambda)
     largest = std::max(largest, std::abs(l));
-  std::vector<double> forces(system.contacts.size(), 0.);
-  for (unsigned int r = 0; r < closed.size(); ++r)
-    forces[closed[r]] = lambda[r];
-  for (unsigned int k = 0; k < system.contacts.size(); ++k)
-    if (opposite[k] >= 0 && forces[opposite[k]] < 0.) // bilateral pair
-    {
-      forces[k] = -forces[opposite[k]];
-      forces[opposite[k]] = 0.;
-    }
-  for (unsigned int r = 0; r < closed.size(); ++r)
-  {
-    const unsigned int k = closed[r];
-    bool bilateral = system.contacts[k].bilateral; // and the centred pairs
-    for (unsigned int j = 0; j < opposite.size(); ++j)
-      bilateral = bilateral || opposite[j] == static_cast<int>(k);
-    if (!bilateral && lambda[r] < -1e-9 * largest)
-    {
-      std::ostringstream message;
-      message << "static analysis: the closed contact '" << system.contacts[k].name
-              << "' is in tension (" << lambda[r]
-              << " N): the structure would lift off there (give it a gap > 0 or a "
-                 "support)";
-      AssertThrow(false, ExcMessage(message.str()));
-    }
-  }
-  // a two-sided contact with a clearance only stands in for the play: the
-  // static load must not push the node to a side
-  double load = 0.;
-  for (unsigned int i = 0; i < F.size(); ++i)
+  for (unsigned int i = 0; i < n; ++i)
     load = std::max(load, std::abs(F[i]));
-  for (unsigned int r = 0; r < closed.size(); ++r)
-    if (contacts.is_centred(closed[r]))
-    {
-      if (std::abs(lambda[r]) > 1e-9 * std::max(largest, load))
-      {
-        std::ostringstream message;
-        message << "static analysis: the static load pushes the two-sided contact '"
-                << system.contacts[closed[r]].name << "' across its clearance ("
-                << lambda[r]
-                << " N): there is no static state within the play (support it)";
-        AssertThrow(false, ExcMessage(message.str()));
-      }
-      forces[closed[r]] = 0.;
-      for (unsigned int k = 0; k < opposite.size(); ++k)
-        if (opposite[k] == static_cast<int>(closed[r]))
-          forces[k] = 0.;
-    }
-  return forces;
-}
-
-/** Whether rows @p a and @p b are parallel on the free DoFs (the same constraint). */
-bool parallel_rows(const SparseRow &a, const SparseRow &b, const std::vector<bool> &fixed)
-{
-  std::map<types::global_dof_index, double> ca, cb;
-  for (unsigned int j = 0; j < a.dofs.size(); ++j)
-    if (!fixed[a.dofs[j]] && a.coefficients[j] != 0.)
-      ca[a.dofs[j]] += a.coefficients[j];
-  for (unsigned int j = 0; j < b.dofs.size(); ++j)
-    if (!fixed[b.dofs[j]] && b.coefficients[j] != 0.)
-      cb[b.dofs[j]] += b.coefficients[j];
-  if (ca.empty() || ca.size() != cb.size())
-    return false;
-  const double ratio = cb.begin()->second / ca.begin()->second;
-  for (auto ia = ca.begin(), ib = cb.begin(); ia != ca.end(); ++ia, ++ib)
-    if (ia->first != ib->first ||
-        std::abs(ib->second - ratio * ia->second) > 1e-12 * std::abs(ib->second))
-      return false;
-  return true;
-}
-
-/**
- * The tangent rows of the closed contacts with friction (not the pairs with
- * a clearance, which do not touch), appended to @p held with a zero
- * right-hand side: per closed row with friction, its index in `closed`,
- * the index of its first tangent row in @p held and their number (tangent
- * rows on fixed DoFs only, or parallel to a row held already, are left
- * out).
- */
-std::vector<std::array<unsigned int, 3>>
-sticking_tangents(const DiscreteSystem &system,
-                  const ClosedContacts &contacts,
-                  std::vector<const SparseRow *> &held,
-                  std::vector<double> &held_rhs)
-{
-  std::vector<std::array<unsigned int, 3>> sticking;
-  for (unsigned int r = 0; r < contacts.closed.size(); ++r)
+  probe.rows.clear();
+  for (const unsigned int r : centred)
+    if (pushes(lambda[r], largest, load))
+      probe.rows.push_back(r);
+  const unsigned int np = probe.rows.size();
+  probe.block.assign(np * np, 0.);
+  for (unsigned int j = 0; j < np; ++j)
   {
-    const ContactRow &c = system.contacts[contacts.closed[r]];
-    if (!c.frictional() || contacts.is_centred(contacts.closed[r]))
-      continue;
-    const unsigned int first = held.size();
-    for (const SparseRow &t : c.tangents)
-    {
-      bool free_dof = false;
-      for (const auto dof : t.dofs)
-        free_dof = free_dof || !system.fixed[dof];
-      if (!free_dof)
-        continue; // a tangent direction a support holds already
-      bool parallel = false;
-      for (const SparseRow *h : held)
-        parallel = parallel || parallel_rows(*h, t, system.fixed);
-      if (parallel)
-        continue; // held already, e.g. by a wheel's centred flange pair
-      held.push_back(&t);
-      held_rhs.push_back(0.);
-    }
-    sticking.push_back({{r, first, static_cast<unsigned int>(held.size()) - first}});
+    Vector<double> e(N);
+    e[n + probe.rows[j]] = 1.;
+    solver.solve(x, e);
+    for (unsigned int i = 0; i < np; ++i)
+      probe.block[i * np + j] = x[n + probe.rows[i]];
   }
-  return sticking;
-}
-
-/**
- * Coulomb's cone at the sticking closed contacts (A9): `||lambda_t|| <= mu
- * |lambda_n|` with the multipliers @p lambda of solve_closed(); throws a
- * one-line error naming the first contact where the static state would
- * slide.
- */
-void check_static_friction(const DiscreteSystem &system,
-                           const ClosedContacts &contacts,
-                           const std::vector<std::array<unsigned int, 3>> &sticking,
-                           const std::vector<double> &lambda)
-{
-  double largest = 0.;
-  for (const double l : lambda)
-    largest = std::max(largest, std::abs(l));
-  for (const auto &[r, first, count] : sticking)
-  {
-    const ContactRow &c = system.contacts[contacts.closed[r]];
-    double t2 = 0.;
-    for (unsigned int t = 0; t < count; ++t)
-      t2 += lambda[first + t] * lambda[first + t];
-    const double tangential = std::sqrt(t2), normal = std::abs(lambda[r]);
-    if (tangential > c.friction * normal + 1e-12 * largest)
-    {
-      std::ostringstream message;
-      message << "static analysis: the closed contact '" << c.name
-              << "' does not stick: its tangential force " << tangential
-              << " N exceeds mu times its normal force, " << c.friction << " x " << normal
-              << " = " << c.friction * normal
-              << " N (Coulomb friction, mu = " << c.friction
-              << "): there is no static state on it (support it or raise mu)";
-      AssertThrow(false, ExcMessage(message.str()));
-    }
-  }
+  return lambda;
 }
 
 /**
@@ -525,6 +322,10 @@ struct StaticSolve
   const HeldRows &held;
   const std::string linear_solver, package;
   std::vector<double> *contact_forces;
+  /** The centred pairs the load pushes to a side (closed_contact_forces()). */
+  std::vector<PushedPair> *pushed;
+  /** Their block of the inverse saddle matrix (solve_closed()). */
+  PlayProbe *probe;
 };
 
 /**
@@ -542,10 +343,16 @@ void solve_linear(const StaticSolve &s,
   const double norm_F = F.l2_norm();
   if (!s.contacts.closed.empty())
   {
-    const std::vector<double> lambda =
-        solve_closed(s.system, s.package, K, F, s.held.rows, s.held.rhs, U);
+    std::vector<unsigned int> centred;
+    for (unsigned int r = 0; r < s.contacts.closed.size(); ++r)
+      if (s.contacts.is_centred(s.contacts.closed[r]))
+        centred.push_back(r);
+    s.pushed->clear();
+    const std::vector<double> lambda = solve_closed(
+        s.system, s.package, K, F, s.held.rows, s.held.rhs, U, centred, *s.probe);
+    s.pushed->clear();
     const std::vector<double> forces =
-        closed_contact_forces(s.system, s.contacts, lambda, F);
+        closed_contact_forces(s.system, s.contacts, lambda, F, s.pushed);
     check_static_friction(s.system, s.contacts, s.held.sticking, lambda);
     if (s.contact_forces != nullptr)
       *s.contact_forces = forces;
@@ -578,10 +385,18 @@ void solve_linear(const StaticSolve &s,
 constexpr unsigned int max_rope_iterations = 50;
 
 /**
+ * Relative correction below which the rope Newton iteration is also taken
+ * as converged once it stops shrinking (by half per iteration): the linear
+ * solves' round-off, about 2e-9 on the solid-girder crane of 54,000 DoFs.
+ */
+constexpr double rope_round_off_floor = 1e-8;
+
+/**
  * The static state with ropes (R1, doc/theory.md 10.3): Newton on the rope
  * forces, the rest of the model linear,
  * `(K + K_r(U_k)) U_{k+1} = F + F_r(U_k) + K_r(U_k) U_k` from `U_0 = 0`,
- * until `||U_{k+1} - U_k|| <= 1e-10 ||U_{k+1}||` (free DoFs). A slack rope
+ * until `||U_{k+1} - U_k|| <= 1e-10 ||U_{k+1}||` (free DoFs), or until it
+ * stalls at the solves' round-off (rope_round_off_floor). A slack rope
  * gets a small isotropic stiffness in the iteration matrix (1e-6 k), which
  * does not change the solution.
  */
@@ -612,6 +427,7 @@ void solve_with_ropes(const StaticSolve &s, const Vector<double> &F, Vector<doub
       if (fixed[i])
         Ft[i] = 0.;
     solve_linear(s, K, Ft, U_next);
+    const double du_previous = iteration > 0 ? du : 0.;
     du = 0.;
     for (unsigned int i = 0; i < n; ++i)
       du += fixed[i] ? 0. : (U_next[i] - U[i]) * (U_next[i] - U[i]);
@@ -619,6 +435,10 @@ void solve_with_ropes(const StaticSolve &s, const Vector<double> &F, Vector<doub
     un = free_norm(U_next, fixed);
     U = U_next;
     if (du <= 1e-10 * un)
+      return;
+    // the solver's round-off floor (a large thin-plate solid: 2e-9 of ||U||):
+    // the corrections stop shrinking below 1e-8 ||U||
+    if (iteration > 0 && du <= rope_round_off_floor * un && du >= 0.5 * du_previous)
       return;
   }
   std::ostringstream message;
@@ -633,6 +453,72 @@ void solve_with_ropes(const StaticSolve &s, const Vector<double> &F, Vector<doub
       break;
     }
   AssertThrow(false, ExcMessage(message.str()));
+}
+/** Rounds of releasing pushed pairs at most (solve_static()). */
+constexpr unsigned int max_release_rounds = 4;
+
+/**
+ * The rows a static solve holds: the closed contacts, `L U = -g0` (a
+ * two-sided pair with a clearance held where it is, L U = 0), then the
+ * tangent rows of the closed contacts with friction, which stick (A9):
+ * `T U = 0`.
+ */
+HeldRows held_rows(const DiscreteSystem &system, const ClosedContacts &contacts)
+{
+  HeldRows held;
+  for (const unsigned int k : contacts.closed)
+  {
+    held.rows.push_back(&system.contacts[k]);
+    held.rhs.push_back(contacts.is_centred(k) ? 0. : -system.contacts[k].initial_gap);
+  }
+  held.sticking = sticking_tangents(system, contacts, held.rows, held.rhs);
+  return held;
+}
+
+/** The static solve of @p s: with the ropes' Newton iteration, or linear. */
+void solve_held(const StaticSolve &s, const Vector<double> &F, Vector<double> &U)
+{
+  if (!s.system.ropes.empty())
+  {
+    try
+    {
+      solve_with_ropes(s, F, U);
+    }
+    catch (const ExceptionBase &e)
+    {
+      rethrow_naming_slack_rope(e, singular_message, s.system.ropes, U);
+      throw;
+    }
+    return;
+  }
+  // K with the fixed DoFs decoupled (positive diagonal, no couplings)
+  SparseMatrix<double> K(s.system.stiffness_pattern);
+  K.copy_from(s.system.stiffness);
+  decouple_fixed_dofs(K, s.system.fixed);
+  solve_linear(s, K, F, U);
+}
+
+/**
+ * The released pairs of @p contacts (ClosedContacts::release()) at @p U:
+ * each node within its play, `|L U| <= c / 2`; a one-line error otherwise.
+ */
+void check_within_play(const DiscreteSystem &system,
+                       const ClosedContacts &contacts,
+                       const Vector<double> &U)
+{
+  for (const unsigned int k : contacts.released)
+  {
+    const ContactRow &c = system.contacts[k];
+    const double moved = c.apply(U);
+    if (std::abs(moved) > c.initial_gap)
+    {
+      std::ostringstream message;
+      message << "static analysis: the static load moves the two-sided contact '"
+              << c.name << "' by " << moved << " m within a play of +-" << c.initial_gap
+              << " m: there is no static state within the play (support it)";
+      AssertThrow(false, ExcMessage(message.str()));
+    }
+  }
 }
 } // namespace
 
@@ -658,19 +544,7 @@ void solve_static(const DiscreteSystem &system,
   AssertThrow(system.has_stiffness(),
               ExcMessage(singular_message + ": the model has no stiffness."));
 
-  const ClosedContacts contacts(system);
-  // the rows held: the closed contacts, `L U = -g0` (a two-sided pair with a
-  // clearance held where it is, L U = 0), then the tangent rows of the
-  // closed contacts with friction, which stick (A9): `T U = 0`
-  HeldRows held;
-  for (const unsigned int k : contacts.closed)
-  {
-    held.rows.push_back(&system.contacts[k]);
-    held.rhs.push_back(contacts.is_centred(k) ? 0. : -system.contacts[k].initial_gap);
-  }
-  held.sticking = sticking_tangents(system, contacts, held.rows, held.rhs);
-  check_rigid_translations(system, held.rows);
-
+  ClosedContacts contacts(system);
   Vector<double> F(n);
   if (constant_loads_only)
     F = system.constant_force;
@@ -680,24 +554,46 @@ void solve_static(const DiscreteSystem &system,
     if (fixed[i])
       F[i] = 0.;
 
-  const StaticSolve s{system, contacts, held, solver, package, contact_forces};
-  if (!system.ropes.empty())
+  std::vector<PushedPair> pushed;
+  PlayProbe probe;
+  HeldRows held = held_rows(system, contacts);
+  check_rigid_translations(system, held.rows);
+  solve_held(
+      StaticSolve{
+          system, contacts, held, solver, package, contact_forces, &pushed, &probe},
+      F,
+      U);
+  if (pushed.empty())
+    return;
+  // pairs pushed to a side of their play: free those whose release leaves
+  // the saddle matrix regular (PlayProbe), solve again; their nodes must
+  // stay within the play (doc/theory.md 6)
+  // (rounds: a released pair's place may be taken by a friction tangent
+  // that was parallel to it, sticking_tangents(), freeing another pair)
+  // (a release that leaves a mechanism the probe's round-off hid, e.g. of
+  // pairs pushed by a net load, ends with the pair's refusal)
+  const std::string refusal = push_message(system, pushed.front());
+  for (unsigned int round = 0; !pushed.empty(); ++round)
   {
+    const std::vector<unsigned int> releasable = probe.releasable(contacts);
+    AssertThrow(!releasable.empty() && round < max_release_rounds,
+                ExcMessage(push_message(system, pushed.front())));
+    for (const unsigned int k : releasable)
+      contacts.release(k);
+    held = held_rows(system, contacts);
     try
     {
-      solve_with_ropes(s, F, U);
+      solve_held(
+          StaticSolve{
+              system, contacts, held, solver, package, contact_forces, &pushed, &probe},
+          F,
+          U);
     }
-    catch (const ExceptionBase &e)
+    catch (const ExceptionBase &)
     {
-      rethrow_naming_slack_rope(e, singular_message, system.ropes, U);
-      throw;
+      AssertThrow(false, ExcMessage(refusal));
     }
-    return;
   }
-  // K with the fixed DoFs decoupled (positive diagonal, no couplings)
-  SparseMatrix<double> K(system.stiffness_pattern);
-  K.copy_from(system.stiffness);
-  decouple_fixed_dofs(K, fixed);
-  solve_linear(s, K, F, U);
+  check_within_play(system, contacts, U);
 }
 } // namespace hati

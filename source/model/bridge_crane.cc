@@ -354,6 +354,7 @@ void BridgeCrane::Parameters::declare_parameters(ParameterHandler &prm)
   declare_masses(prm);
   declare_contacts_and_damping(prm);
   declare_mesh(prm);
+  declare_girder_model(prm);
 }
 
 void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
@@ -483,6 +484,9 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   check_section(girder_section, "Girder section");
   check_section(end_carriage_section, "End carriage section");
   check_section(trolley_section, "Trolley section");
+  parse_girder_model(prm);
+  if (girder_model == "solid")
+    check_section(rail_section, "Rail section");
   if (!(mass_bridge() <= max_structure_mass))
   {
     std::ostringstream b;
@@ -495,9 +499,13 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
 
 double BridgeCrane::Parameters::mass_bridge() const
 {
-  return rho * (2. * section_area(girder_section, "Girder section") * span +
-                2. * section_area(end_carriage_section, "End carriage section") *
-                    end_carriage_wheelbase) +
+  // solid girders: their diaphragms too
+  const double girders = girder_model == "solid"
+                             ? 2. * solid_girder_volume()
+                             : 2. * section_area(girder_section, "Girder section") * span;
+  return rho *
+             (girders + 2. * section_area(end_carriage_section, "End carriage section") *
+                            end_carriage_wheelbase) +
          2. * rail_mass_per_metre * span;
 }
 
@@ -570,8 +578,12 @@ DecompositionParameters BridgeCrane::default_decomposition() const
                                  "1 m) or give the subdomain in Model/Decomposition"));
   // girder cells around the trolley wheels' rail nodes, and between
   // them: one zone per girder (two interface nodes instead of four)
+  // (solid girders: the trolley rails' cells on the top flanges, not the
+  // flanges' cells below them: every solid is implicit)
+  const double zr = crane.rail_height(), zz = crane.girder_model == "solid" ? eps : z;
   for (const double x : {-a, a})
-    d.boxes.push_back({{x - eps, x + eps, y1 - hz - eps, y2 + hz + eps, -z, z}});
+    d.boxes.push_back(
+        {{x - eps, x + eps, y1 - hz - eps, y2 + hz + eps, zr - zz, zr + zz}});
   // end carriage cells around the crane wheels (at the carriage ends),
   // when they are contacts
   for (const double y : crane.crane_wheels == "contacts" ? std::vector<double>{0., S}

@@ -82,7 +82,7 @@ void add_path_member(FrameDescription &f,
   m.start = path.front();
   m.end = path.back();
   m.section = section;
-  m.material = "steel";
+  m.material = section == "rail" ? "rail" : "steel";
   m.n_elements = path.size() - 1;
   f.members.push_back(m);
 }
@@ -152,13 +152,21 @@ void add_end_carriages(const CraneParameters &p, FrameDescription &f)
 
 /**
  * Girders along Y at x = -a (girder_1) and +a (girder_2), a node rail_<i>
- * under each trolley wheel; the rail mass lumped on their nodes.
+ * under each trolley wheel; the rail mass lumped on their nodes. With
+ * Girder model = solid: the box-girder solids (add_solid_girders()) and on
+ * each a trolley rail, a beam trolley_rail_<g> at the top flange's height
+ * with the same stations, tied at each node to the flange under it except
+ * at the edges of the explicit zones (a node shared by HATI's two
+ * subdomains cannot be tied; the rail spans the gap).
  */
 void add_girders(const CraneParameters &p, FrameDescription &f)
 {
   const double S = p.span, a = 0.5 * p.girder_spacing, yc = p.trolley_position * S,
                y1 = yc - 0.5 * p.trolley_wheelbase, y2 = yc + 0.5 * p.trolley_wheelbase,
-               hz = 0.5 * p.explicit_zone_length;
+               hz = 0.5 * p.explicit_zone_length, zr = p.rail_height();
+  const bool solid = p.girder_model == "solid";
+  if (solid)
+    p.add_solid_girders(f);
   const std::vector<double> ys = stations(S,
                                           {y1, y2},
                                           {{y1 - hz, y1 + hz}, {y2 - hz, y2 + hz}},
@@ -166,31 +174,46 @@ void add_girders(const CraneParameters &p, FrameDescription &f)
                                           p.explicit_element_length);
   // the rail nodes' stations, found once (not a search per station)
   const unsigned int rail_1 = station_index(ys, y1), rail_2 = station_index(ys, y2);
+  const std::string prefix = solid ? "trolley_rail_" : "girder_";
   for (unsigned int g = 1; g <= 2; ++g)
   {
     std::vector<std::string> path;
     for (unsigned int i = 0; i < ys.size(); ++i)
     {
-      std::string name = "girder_" + std::to_string(g) + "_" + std::to_string(i);
-      if (i == 0)
+      std::string name = prefix + std::to_string(g) + "_" + std::to_string(i);
+      if (i == 0 && !solid)
         name = "joint_" + std::to_string(g) + "_1";
-      else if (i + 1 == ys.size())
+      else if (i + 1 == ys.size() && !solid)
         name = "joint_" + std::to_string(g) + "_2";
       else if (i == rail_1)
         name = "rail_" + std::to_string(2 * g - 1);
       else if (i == rail_2)
         name = "rail_" + std::to_string(2 * g);
       else
-        add_node(f, name, g == 1 ? -a : a, ys[i], 0.);
+        add_node(f, name, g == 1 ? -a : a, ys[i], zr);
       path.push_back(name);
+      if (solid)
+      {
+        const bool zone_edge = hz > 0. && (std::abs(ys[i] - (y1 - hz)) < 1e-9 * S ||
+                                           std::abs(ys[i] - (y2 + hz)) < 1e-9 * S);
+        if (!zone_edge)
+          f.solids.ties.push_back(
+              {"rail_tie_" + std::to_string(g) + "_" + std::to_string(i),
+               name,
+               {"girder_" + std::to_string(g), 2, zr, p.rail_tie_radius()}});
+        continue; // the rail's own mass
+      }
       const double tributary = 0.5 * ((i > 0 ? ys[i] - ys[i - 1] : 0.) +
                                       (i + 1 < ys.size() ? ys[i + 1] - ys[i] : 0.));
       if (p.rail_mass_per_metre > 0.)
         add_point_mass(f, name, p.rail_mass_per_metre * tributary);
     }
-    add_node(f, "rail_" + std::to_string(2 * g - 1), g == 1 ? -a : a, y1, 0.);
-    add_node(f, "rail_" + std::to_string(2 * g), g == 1 ? -a : a, y2, 0.);
-    add_path_member(f, "girder_" + std::to_string(g), path, "girder");
+    add_node(f, "rail_" + std::to_string(2 * g - 1), g == 1 ? -a : a, y1, zr);
+    add_node(f, "rail_" + std::to_string(2 * g), g == 1 ? -a : a, y2, zr);
+    if (solid)
+      add_path_member(f, "trolley_rail_" + std::to_string(g), path, "rail");
+    else
+      add_path_member(f, "girder_" + std::to_string(g), path, "girder");
   }
 }
 
@@ -203,7 +226,8 @@ void add_trolley(const CraneParameters &p, FrameDescription &f)
 {
   const double S = p.span, a = 0.5 * p.girder_spacing, yc = p.trolley_position * S,
                y1 = yc - 0.5 * p.trolley_wheelbase, y2 = yc + 0.5 * p.trolley_wheelbase;
-  const double zt = BridgeCrane::trolley_height;
+  // above the rails (the girder axes for beam girders)
+  const double zt = p.rail_height() + BridgeCrane::trolley_height;
   add_node(f, "tw1", -a, y1, zt);
   add_node(f, "tw2", -a, y2, zt);
   add_node(f, "tw3", a, y1, zt);
@@ -310,13 +334,19 @@ void add_wheel_contacts(const CraneParameters &p, FrameDescription &f)
         cw, "cw" + std::to_string(k), "", ez, 0., false, crane_wheel_braked(k) ? -1 : 0);
     contact(cw + "_lateral", "cw" + std::to_string(k), "", ey, p.flange_clearance, true);
   }
+  // solid girders: the trolley held along Y at one wheel per rail (1 and
+  // 3), the others rolling: held at both, the top flange's strain between
+  // them would load the trolley frame (the beam girders' rail nodes lie on
+  // their neutral axes, where there is none)
+  const bool solid = p.girder_model == "solid";
   for (unsigned int k = 1; k <= 4; ++k)
   {
     const std::string tw = "trolley_wheel_" + std::to_string(k),
                       wn = "tw" + std::to_string(k), rn = "rail_" + std::to_string(k);
-    contact(tw, wn, rn, ez, 0., false, p.travel == "braked" ? -1 : 1);
+    const bool held = !solid || k == 1 || k == 3;
+    contact(tw, wn, rn, ez, 0., false, p.travel == "braked" && held ? -1 : 1);
     contact(tw + "_lateral", wn, rn, ex, p.flange_clearance, true);
-    if (p.travel == "tied")
+    if (p.travel == "tied" && held)
       contact(tw + "_travel", wn, rn, ey, 0., true);
   }
 }
@@ -334,7 +364,9 @@ FrameDescription BridgeCrane::Parameters::frame() const
   f.monitor_nodes = {"hoist", "tw1", "tw2", "tw3", "tw4", "cw1", "cw2", "cw3", "cw4"};
   if (hoist == "rope")
     f.monitor_nodes.push_back("load");
-  f.section_force_members = {"girder_1", "girder_2"};
+  // solid girders: their cuts instead (add_solid_girders())
+  if (girder_model != "solid")
+    f.section_force_members = {"girder_1", "girder_2"};
   return f;
 }
 

@@ -6,6 +6,52 @@
 
 namespace hati
 {
+namespace
+{
+/**
+ * @p row with each entry on a DoF that @p constraints eliminate (a tied
+ * node, the slave of a rigid link) replaced by its constraint line over the
+ * DoFs it follows (homogeneous lines; a support's empty line keeps the
+ * entry, the fixed DoFs are skipped where the rows are used). Unchanged if
+ * no entry is eliminated.
+ */
+void expand_through_constraints(SparseRow &row,
+                                const AffineConstraints<double> &constraints)
+{
+  bool eliminated = false;
+  for (const auto dof : row.dofs)
+  {
+    const auto *line = constraints.get_constraint_entries(dof);
+    eliminated = eliminated || (line != nullptr && !line->empty());
+  }
+  if (!eliminated)
+    return;
+  SparseRow expanded;
+  const auto add = [&expanded](const types::global_dof_index j, const double a)
+  {
+    for (unsigned int i = 0; i < expanded.dofs.size(); ++i)
+      if (expanded.dofs[i] == j)
+      {
+        expanded.coefficients[i] += a;
+        return;
+      }
+    expanded.dofs.push_back(j);
+    expanded.coefficients.push_back(a);
+  };
+  for (unsigned int k = 0; k < row.dofs.size(); ++k)
+  {
+    const auto *line = constraints.get_constraint_entries(row.dofs[k]);
+    if (line == nullptr || line->empty())
+      add(row.dofs[k], row.coefficients[k]);
+    else
+      for (const auto &[j, a] : *line)
+        add(j, row.coefficients[k] * a);
+  }
+  row.dofs = expanded.dofs;
+  row.coefficients = expanded.coefficients;
+}
+} // namespace
+
 void Frame::add_contacts(const CommonModelParameters &common,
                          DiscreteSystem &system) const
 {
@@ -64,9 +110,13 @@ void Frame::add_contacts(const CommonModelParameters &common,
                 tangent.coefficients.push_back(-t[d]);
               }
             }
+          expand_through_constraints(tangent, constraints);
           row.tangents.push_back(tangent);
         }
       }
+      // at a tied node or a link's slave eliminated here (static, modal,
+      // Newmark, HATI's implicit part): on the DoFs it follows
+      expand_through_constraints(row, constraints);
       system.contacts.push_back(row);
     }
   }

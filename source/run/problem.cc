@@ -163,6 +163,8 @@ void Problem::prepare_transient()
     decompose(); // the subdomains' initial state is copied below
   if (analysis_parameters.initial_state == "static")
     set_static_initial_state();
+  if (decomposition) // a tied node may be free in a subdomain
+    model->complete_solution(system.initial_displacement);
   if (decomposition)
     for (auto &part : decomposition->parts)
       for (unsigned int i = 0; i < part.global_dofs.size(); ++i)

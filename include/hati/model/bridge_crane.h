@@ -102,8 +102,47 @@ public:
     /** Length of girder / end carriage around each wheel meshed finely (m). */
     double explicit_zone_length = 1.;
 
+    /**
+     * `beam` (default) or `solid`: the girders as `box girder` solids with
+     * trolley rails tied on their top flanges (bridge_crane_girders.cc).
+     */
+    std::string girder_model = "beam";
+    /** Girder model = solid: in-plane element size of the plates (m). */
+    double girder_element_size = 0.1;
+    /** Girder model = solid: degree of the solid elements (-). */
+    unsigned int girder_element_degree = 2;
+    /** Girder model = solid: spacing of the transverse diaphragms (m; 0: none). */
+    double girder_diaphragm_spacing = 2.;
+    /** Girder model = solid: the trolley rail's section (Model/Frame/Sections syntax). */
+    std::string rail_section;
+
     /** The frame: nodes, members, sections, masses, supports, contacts. */
     FrameDescription frame() const;
+    /** The entries of Girder model = solid (bridge_crane_girders.cc). */
+    static void declare_girder_model(ParameterHandler &prm);
+    /** Parse and check the entries of declare_girder_model(). */
+    void parse_girder_model(ParameterHandler &prm);
+    /**
+     * Girder model = solid: the girders as box-girder solids with their
+     * diaphragms and a cut at each, the trolley rails as beams on their top
+     * flanges tied at their nodes (B1), and the end carriages' joints tied
+     * to the girders' end faces, added to @p f (its trolley-rail nodes
+     * `rail_1` ... `rail_4` under the trolley wheels, as the beam girders').
+     */
+    void add_solid_girders(FrameDescription &f) const;
+    /** Girder model = solid: the steel volume of one girder with its diaphragms (m^3). */
+    double solid_girder_volume() const;
+    /**
+     * The height of the trolley rails' nodes above the girder axes (m): 0
+     * for beam girders, the top flange's (half the girder height) for solid
+     * ones.
+     */
+    double rail_height() const;
+    /**
+     * Girder model = solid: the radius (m) of the top flange tied to each
+     * rail node: half the rail's foot, at least 3/4 of the element size.
+     */
+    double rail_tie_radius() const;
     /** Girders, end carriages and rails (kg). */
     double mass_bridge() const;
     /** Trolley frame, trolley mass and hoist mass (kg). */
@@ -131,6 +170,35 @@ public:
   {
     return frame.describe_dof(dof);
   }
+  /** @name The frame's solid outputs (Girder model = solid), Frame's */
+  /** @{ */
+  std::vector<std::string> vtu_series() const override { return frame.vtu_series(); }
+  void write_series_vtu(const std::string &series,
+                        std::ostream &out,
+                        const VtuSnapshot &snapshot) const override
+  {
+    frame.write_series_vtu(series, out, snapshot);
+  }
+  void update_envelopes(const double time, const Vector<double> &U) const override
+  {
+    frame.update_envelopes(time, U);
+  }
+  std::vector<std::string> envelope_files() const override
+  {
+    return frame.envelope_files();
+  }
+  void write_envelope_file(const std::string &name, std::ostream &out) const override
+  {
+    frame.write_envelope_file(name, out);
+  }
+  /** Frame::interface_rows(): the ties across HATI's interface. */
+  std::vector<SparseRow> interface_rows() const override
+  {
+    return frame.interface_rows();
+  }
+  void complete_solution(Vector<double> &U) const override { frame.complete_solution(U); }
+  /** @} */
+
   /** Model/Bridge crane/Damping ratio, Damping type and Damping band. */
   DefaultDamping default_damping() const override;
   /**

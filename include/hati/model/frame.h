@@ -103,6 +103,8 @@ public:
    * replaced by its constraint line.
    */
   std::vector<SparseRow> interface_rows() const override;
+  /** The constraints of the ties and rigid links eliminated here, distributed. */
+  void complete_solution(Vector<double> &U) const override { constraints.distribute(U); }
   /** The solids of the frame (null if it has none). */
   const FrameSolids *solid_part() const { return solids.get(); }
 

@@ -191,6 +191,14 @@ public:
    */
   virtual std::vector<SparseRow> interface_rows() const { return {}; }
 
+  /**
+   * Set the DoFs of @p U that the model eliminates as affine constraints
+   * (tied nodes, slaves of rigid links, B1) from the DoFs they follow, e.g.
+   * a static state before HATI's subdomains, where such a node may be
+   * free, take their part of it. Nothing by default.
+   */
+  virtual void complete_solution(Vector<double> &U) const { (void)U; }
+
   /** One line describing the model for the terminal and summary.json. */
   virtual std::string description() const = 0;
 
