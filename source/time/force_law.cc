@@ -1,4 +1,5 @@
 #include <hati/model/discrete_system.h>
+#include <hati/output/law_output.h>
 #include <hati/time/force_law.h>
 #include <hati/time/rope_forces.h>
 #include <hati/time/unilateral_contacts.h>
@@ -21,5 +22,19 @@ std::vector<std::unique_ptr<ForceLaw>> make_force_laws(const DiscreteSystem &sys
     if (auto law = entry.create(system))
       laws.push_back(std::move(law));
   return laws;
+}
+
+std::unique_ptr<LawOutput> ForceLaw::make_output(const LawOutputContext &context) const
+{
+  (void)context;
+  return nullptr;
+}
+
+void sample_force_laws(const std::vector<std::unique_ptr<ForceLaw>> &laws,
+                       const Vector<double> &V,
+                       LawSample &sample)
+{
+  for (const auto &law : laws)
+    law->sample(V, sample);
 }
 } // namespace hati

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <hati/contact/lcp_solver.h>
+#include <hati/output/contact_output.h>
 #include <hati/time/unilateral_contacts.h>
 
 #include <algorithm>
@@ -226,5 +227,26 @@ void UnilateralContacts::restore(const std::any &state)
   is_active = s.is_active;
   contact_work = s.contact_work;
   frictional_contacts.restore(s.friction);
+}
+void UnilateralContacts::sample(const Vector<double> &V, LawSample &s) const
+{
+  s.gaps = gap;
+  s.impulses = lambda;
+  s.active = is_active;
+  s.normal_velocities.resize(contacts.size());
+  for (unsigned int k = 0; k < contacts.size(); ++k)
+    s.normal_velocities[k] = contacts[k].apply(V);
+  if (frictional_contacts.any())
+    frictional_contacts.sample(
+        V, s.impulses, s.tangential_impulses, s.slip_velocities, s.friction_states);
+}
+
+std::unique_ptr<LawOutput>
+UnilateralContacts::make_output(const LawOutputContext &context) const
+{
+  // the constraint rows of ties and rigid links are not contacts
+  if (n_contacts(context.system.contacts) == 0)
+    return nullptr;
+  return std::make_unique<ContactOutput>(context, frictional_contacts);
 }
 } // namespace hati

@@ -6,6 +6,7 @@
 
 #include <hati/base/registry.h>
 #include <hati/base/summary_value.h>
+#include <hati/contact/friction_solver.h>
 #include <hati/time/energies.h>
 
 #include <any>
@@ -20,6 +21,31 @@ namespace hati
 using namespace dealii;
 
 class DiscreteSystem;
+class LawOutput;
+struct LawOutputContext;
+
+/**
+ * The state of the force laws after one step (or micro step) as the outputs
+ * take it (ForceLaw::sample()): today the columns of the contacts' law
+ * (UnilateralContacts), one entry per row of DiscreteSystem::contacts.
+ * HATI records one per micro step and hands the final ones to the outputs
+ * (HATICoupling::after_micro_step; the superposition corrects them, G3').
+ */
+struct LawSample
+{
+  /** The time of the state (s). */
+  double time = 0.;
+  /** Gaps (m), normal velocities `L_k V` (m/s) and impulses (N s) per row. */
+  std::vector<double> gaps, normal_velocities, impulses;
+  /** Whether each row was active in the step (A4). */
+  std::vector<bool> active;
+  /**
+   * With friction (A9; empty otherwise): the tangential impulses (N s, two
+   * per row), the slip velocity of each touching row (m/s) and its state.
+   */
+  std::vector<double> tangential_impulses, slip_velocities;
+  std::vector<FrictionState> friction_states;
+};
 
 /**
  * One force law of a DiscreteSystem as the explicit integrator (CD-Lagrange,
@@ -36,7 +62,9 @@ class DiscreteSystem;
  * with its work and stored energy for the balance (E1, add_energies()),
  * the state a step changes (the coupling redoes steps, G3'; save(),
  * restore()), its share of the critical step (A7, omega_squared_bound())
- * and its summary entries (add_summary()). The integrator holds one
+ * its summary entries (add_summary()), its outputs (sample() of a step,
+ * make_output(): statistics, summary entries and files of a run) and the
+ * methods that can run it (refusal()). The integrator holds one
  * instance per law its system holds (make_force_laws()) and calls them in
  * registration order: the forces are summed in that order, and the rows of
  * different laws are resolved one law after the other (one sweep of a block
@@ -178,6 +206,30 @@ public:
     (void)summary;
     (void)out;
   }
+
+  /** @name Outputs */
+  /** @{ */
+  /**
+   * The law's columns of @p s at the integrator's current state, with
+   * @p V its velocity (`V_{n+1/2}` of CD-Lagrange), e.g. the contacts'
+   * gaps, normal velocities, impulses, active flags and friction columns
+   * (none by default). Fills the vectors of @p s in place: a sample reused
+   * from step to step allocates nothing.
+   */
+  virtual void sample(const Vector<double> &V, LawSample &s) const
+  {
+    (void)V;
+    (void)s;
+  }
+
+  /**
+   * The law's share of a transient run's outputs (LawOutput: statistics of
+   * every step from the samples, summary.json entries, terminal lines and
+   * files), or nullptr (the default) when it has none. The output may keep
+   * a reference to the law: it lives no longer than the integrator.
+   */
+  virtual std::unique_ptr<LawOutput> make_output(const LawOutputContext &context) const;
+  /** @} */
 };
 
 /** Makes the law for @p system, or nullptr if the system has no data of it. */
@@ -193,6 +245,14 @@ Registry<ForceLawFactory> &force_law_registry();
 
 /** An instance of every registered law that @p system holds, in registration order. */
 std::vector<std::unique_ptr<ForceLaw>> make_force_laws(const DiscreteSystem &system);
+
+/**
+ * The sample of @p laws at velocity @p V into @p sample (its time is left
+ * as it is): ForceLaw::sample() of every law, in order.
+ */
+void sample_force_laws(const std::vector<std::unique_ptr<ForceLaw>> &laws,
+                       const Vector<double> &V,
+                       LawSample &sample);
 } // namespace hati
 
 #endif
