@@ -1,3 +1,5 @@
+#include <deal.II/base/exceptions.h>
+
 #include <hati/model/discrete_system.h>
 #include <hati/output/law_output.h>
 #include <hati/time/force_law.h>
@@ -28,6 +30,23 @@ std::unique_ptr<LawOutput> ForceLaw::make_output(const LawOutputContext &context
 {
   (void)context;
   return nullptr;
+}
+
+std::string ForceLaw::refusal(const std::string &method) const
+{
+  if (method == "CD-Lagrange" || method == "HATI")
+    return "";
+  return "Time integration/Method = " + method + ": the force law '" + name() +
+         "' needs the explicit CD-Lagrange integrator (or HATI).";
+}
+
+void check_force_laws(const DiscreteSystem &system, const std::string &method)
+{
+  for (const auto &law : make_force_laws(system))
+  {
+    const std::string message = law->refusal(method);
+    AssertThrow(message.empty(), ExcMessage(message));
+  }
 }
 
 void sample_force_laws(const std::vector<std::unique_ptr<ForceLaw>> &laws,

@@ -249,4 +249,32 @@ UnilateralContacts::make_output(const LawOutputContext &context) const
     return nullptr;
   return std::make_unique<ContactOutput>(context, frictional_contacts);
 }
+std::string UnilateralContacts::refusal_of(const std::vector<ContactRow> &contacts,
+                                           const std::string &method)
+{
+  if (method == "Newmark" && !contacts.empty())
+    return "Time integration/Method = Newmark: the model has contacts, which need the "
+           "explicit CD-Lagrange integrator.";
+  if (method == "event-driven")
+    for (const auto &c : contacts)
+    {
+      if (c.frictional())
+        return "Time integration/Method = event-driven: the contact '" + c.name +
+               "' has Coulomb friction (mu > 0), which the event-driven reference does "
+               "not handle; use CD-Lagrange";
+      if (c.bilateral)
+        return "Time integration/Method = event-driven: the contact '" + c.name +
+               "' is two-sided without clearance (bilateral), which the event-driven "
+               "reference does not handle; use CD-Lagrange";
+    }
+  return "";
+}
+
+std::string UnilateralContacts::refusal(const std::string &method) const
+{
+  // a system without rows: every method; with rows, those that resolve them
+  if (method == "Newmark" || method == "event-driven")
+    return refusal_of(contacts, method);
+  return ForceLaw::refusal(method);
+}
 } // namespace hati

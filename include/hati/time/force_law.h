@@ -230,6 +230,16 @@ public:
    */
   virtual std::unique_ptr<LawOutput> make_output(const LawOutputContext &context) const;
   /** @} */
+
+  /**
+   * Why the method @p method (a value of `Time integration/Method`) cannot
+   * integrate a system holding this law: a one-line message, or empty if
+   * it can. CD-Lagrange and HATI (its explicit part) drive every law
+   * (`HATI` also checks the subdomains, Model/Decomposition); the others
+   * (`Newmark`, `event-driven`) drive none, so by default they are refused
+   * with a message that names the law. check_force_laws() asks every law.
+   */
+  virtual std::string refusal(const std::string &method) const;
 };
 
 /** Makes the law for @p system, or nullptr if the system has no data of it. */
@@ -245,6 +255,13 @@ Registry<ForceLawFactory> &force_law_registry();
 
 /** An instance of every registered law that @p system holds, in registration order. */
 std::vector<std::unique_ptr<ForceLaw>> make_force_laws(const DiscreteSystem &system);
+
+/**
+ * Throws (ExcMessage) the first refusal of @p method by a law of @p system
+ * (ForceLaw::refusal(), registration order): the runners of the methods
+ * that do not drive the laws call it before their set-up.
+ */
+void check_force_laws(const DiscreteSystem &system, const std::string &method);
 
 /**
  * The sample of @p laws at velocity @p V into @p sample (its time is left

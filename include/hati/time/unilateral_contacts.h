@@ -82,6 +82,16 @@ public:
    */
   std::unique_ptr<LawOutput> make_output(const LawOutputContext &context) const override;
 
+  /**
+   * `Newmark` refused when the system has rows (contacts, or those of ties
+   * and rigid links); `event-driven` when a contact has friction or is
+   * bilateral (refusal_of()).
+   */
+  std::string refusal(const std::string &method) const override;
+  /** The refusal of @p method for the rows @p contacts (empty: none). */
+  static std::string refusal_of(const std::vector<ContactRow> &contacts,
+                                const std::string &method);
+
   /** Gaps, impulses, active flags, contact work and the friction record. */
   void save(std::any &state) const override;
   void restore(const std::any &state) override;
