@@ -47,6 +47,13 @@
 //      `v0 dt sin(Omega t_n) / sin(Omega dt)` to 1e-10 of it (round-off),
 //      and the row's impulse is the support reaction of the step,
 //      `lambda = -dt k u_1(t_{n+1})`, to 1e-12 of its largest value.
+//  (h) the decomposition (extract_subsystem(), HATI's subdomains): the
+//      ground spring on DoF 2 of a 3-DoF system, renumbered by the law
+//      (ForceLaw::part_data()) into the part of DoFs {1, 2} as its DoF 1,
+//      the part's CD-Lagrange makes the law with the part's mass in its
+//      bound; the part {0, 1} holds none of it; a law without part_data()
+//      (the holding row) and data of no registered law are refused with
+//      messages that name them.
 // Every check prints value, reference and tolerance; returns non-zero on
 // failure.
 #include <deal.II/base/mpi.h>
@@ -58,6 +65,7 @@
 
 #include <hati/base/mpi_environment.h>
 #include <hati/contact/sparse_rows.h>
+#include <hati/model/decomposition.h>
 #include <hati/model/discrete_system.h>
 #include <hati/time/cd_lagrange.h>
 #include <hati/time/force_law.h>
@@ -142,6 +150,17 @@ public:
 
   void save(std::any &s) const override { s = state; }
   void restore(const std::any &s) override { state = std::any_cast<const State &>(s); }
+
+  /** Its DoF renumbered; none for a part without it (the decomposition, (h)). */
+  std::any part_data(const std::vector<int> &local,
+                     const std::vector<bool> &fixed) const override
+  {
+    (void)fixed;
+    if (local[data.dof] < 0)
+      return {};
+    return GroundSpringData{static_cast<types::global_dof_index>(local[data.dof]),
+                            data.stiffness};
+  }
 
   void add_summary(SummaryEntries &summary, std::ostream &out) const override
   {
@@ -400,6 +419,63 @@ void test_chain_and_snapshot()
     none = none && law->name() != "ground spring";
   expect(none, "(f) no ground spring for a system without its data");
 }
+/** The message of the exception thrown by @p f (empty if none). */
+template <class F> std::string refusal_of(F f)
+{
+  try
+  {
+    f();
+  }
+  catch (const std::exception &e)
+  {
+    return message_of(e);
+  }
+  return "";
+}
+
+void test_decomposition()
+{
+  // a chain of three masses, the ground spring on DoF 2; the part holds 1, 2
+  const double k = 800., m2 = 3.;
+  DiscreteSystem s;
+  s.reinit(3);
+  for (unsigned int i = 0; i < 3; ++i)
+    s.lumped_mass[i] = 1. + i;
+  s.law_data["ground spring"] = GroundSpringData{2, k};
+  DiscreteSystem part;
+  extract_subsystem(s, {1, 2}, part);
+  const auto it = part.law_data.find("ground spring");
+  expect(it != part.law_data.end() &&
+             std::any_cast<const GroundSpringData &>(it->second).dof == 1 &&
+             std::any_cast<const GroundSpringData &>(it->second).stiffness == k,
+         "(h) the part's law data: the ground spring on the part's DoF 1 (global 2)");
+  CDLagrange cd(part, 1e-3, 1.);
+  const ForceLaw *law = law_of(cd, "ground spring");
+  check("(h) the part's law: its omega^2 bound k/m (rad^2/s^2)",
+        law ? law->omega_squared_bound() : 0.,
+        k / m2,
+        1e-14 * k / m2);
+  DiscreteSystem other;
+  extract_subsystem(s, {0, 1}, other);
+  expect(other.law_data.empty(), "(h) a part without the spring's DoF holds none of it");
+
+  // a law that does not renumber its data, and data of no registered law
+  DiscreteSystem rows;
+  rows.reinit(2);
+  rows.lumped_mass = 1.;
+  rows.law_data["holding row"] = HoldingRowData{0};
+  std::string what = refusal_of([&] { extract_subsystem(rows, {0}, part); });
+  std::cout << "     message: " << what << std::endl;
+  expect(what.find("'holding row' cannot be split") != std::string::npos,
+         "(h) a law without part_data() refused, the message names the law");
+  rows.law_data.clear();
+  rows.law_data["no such law"] = 1.;
+  what = refusal_of([&] { extract_subsystem(rows, {0}, part); });
+  std::cout << "     message: " << what << std::endl;
+  expect(what.find("'no such law'") != std::string::npos,
+         "(h) data of no registered law refused, the message names it");
+}
+
 void test_row_law()
 {
   const double m0 = 1.5, m1 = 0.7, k = 1200., v0 = 0.3, omega = std::sqrt(k / m1),
@@ -469,5 +545,6 @@ int main(int argc, char **argv)
   test_critical_step();
   test_chain_and_snapshot();
   test_row_law();
+  test_decomposition();
   return finish();
 }

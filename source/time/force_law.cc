@@ -6,6 +6,8 @@
 #include <hati/time/rope_forces.h>
 #include <hati/time/unilateral_contacts.h>
 
+#include <algorithm>
+
 namespace hati
 {
 Registry<ForceLawFactory> &force_law_registry()
@@ -47,6 +49,40 @@ void check_force_laws(const DiscreteSystem &system, const std::string &method)
     const std::string message = law->refusal(method);
     AssertThrow(message.empty(), ExcMessage(message));
   }
+}
+
+std::any ForceLaw::part_data(const std::vector<int> &local,
+                             const std::vector<bool> &fixed) const
+{
+  (void)local;
+  (void)fixed;
+  AssertThrow(false,
+              ExcMessage("Model/Decomposition: the force law '" + name() +
+                         "' cannot be split into HATI's subdomains (it does not "
+                         "renumber its data: ForceLaw::part_data())"));
+  return {};
+}
+
+void extract_law_data(const DiscreteSystem &full,
+                      const std::vector<int> &local,
+                      DiscreteSystem &part)
+{
+  part.law_data.clear();
+  if (full.law_data.empty())
+    return;
+  std::vector<std::string> taken;
+  for (const auto &law : make_force_laws(full))
+    if (full.law_data.count(law->name()) > 0)
+    {
+      std::any data = law->part_data(local, full.fixed);
+      if (data.has_value())
+        part.law_data[law->name()] = std::move(data);
+      taken.push_back(law->name());
+    }
+  for (const auto &entry : full.law_data)
+    AssertThrow(std::find(taken.begin(), taken.end(), entry.first) != taken.end(),
+                ExcMessage("Model/Decomposition: DiscreteSystem::law_data holds '" +
+                           entry.first + "', which no registered force law takes"));
 }
 
 void sample_force_laws(const std::vector<std::unique_ptr<ForceLaw>> &laws,

@@ -240,6 +240,19 @@ public:
    * with a message that names the law. check_force_laws() asks every law.
    */
   virtual std::string refusal(const std::string &method) const;
+
+  /**
+   * The law's data (DiscreteSystem::law_data under name()) of a part of the
+   * system, renumbered (HATI's subdomains, Model/Decomposition:
+   * extract_subsystem()): @p local is the part's index of every DoF of the
+   * system, -1 for a DoF the part does not hold, and @p fixed the system's
+   * fixed flags (a fixed DoF may be dropped, as from a contact row). An
+   * empty result: the part holds none of the law. By default refused (an
+   * ExcMessage that names the law): a law whose data holds DoF indices
+   * overrides this to renumber them.
+   */
+  virtual std::any part_data(const std::vector<int> &local,
+                             const std::vector<bool> &fixed) const;
 };
 
 /** Makes the law for @p system, or nullptr if the system has no data of it. */
@@ -262,6 +275,16 @@ std::vector<std::unique_ptr<ForceLaw>> make_force_laws(const DiscreteSystem &sys
  * that do not drive the laws call it before their set-up.
  */
 void check_force_laws(const DiscreteSystem &system, const std::string &method);
+
+/**
+ * DiscreteSystem::law_data of @p full renumbered into @p part
+ * (ForceLaw::part_data() of each law that has data; @p local as there):
+ * extract_subsystem()'s share of the laws. Data that no registered law
+ * takes is refused, naming its key.
+ */
+void extract_law_data(const DiscreteSystem &full,
+                      const std::vector<int> &local,
+                      DiscreteSystem &part);
 
 /**
  * The sample of @p laws at velocity @p V into @p sample (its time is left
