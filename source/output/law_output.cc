@@ -14,6 +14,7 @@ LawOutputs::LawOutputs(const std::vector<std::unique_ptr<ForceLaw>> &laws,
 const LawSample &LawOutputs::take_sample(const double time, const Vector<double> &V)
 {
   current.time = time;
+  current.every_step = true;
   sample_force_laws(laws, V, current);
   return current;
 }

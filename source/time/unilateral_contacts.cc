@@ -233,9 +233,12 @@ void UnilateralContacts::sample(const Vector<double> &V, LawSample &s) const
   s.gaps = gap;
   s.impulses = lambda;
   s.active = is_active;
-  s.normal_velocities.resize(contacts.size());
-  for (unsigned int k = 0; k < contacts.size(); ++k)
-    s.normal_velocities[k] = contacts[k].apply(V);
+  if (!s.every_step) // only the output rows and the coupling read them
+  {
+    s.normal_velocities.resize(contacts.size());
+    for (unsigned int k = 0; k < contacts.size(); ++k)
+      s.normal_velocities[k] = contacts[k].apply(V);
+  }
   if (frictional_contacts.any())
     frictional_contacts.sample(
         V, s.impulses, s.tangential_impulses, s.slip_velocities, s.friction_states);

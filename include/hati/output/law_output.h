@@ -88,8 +88,9 @@ public:
   bool empty() const { return outputs.empty(); }
 
   /**
-   * The laws' sample at the integrator's state of time @p time (s) and
-   * velocity @p V (ForceLaw::sample()), into sample().
+   * The laws' sample of a step (LawSample::every_step) at the integrator's
+   * state of time @p time (s) and velocity @p V (ForceLaw::sample()), into
+   * sample().
    */
   const LawSample &take_sample(const double time, const Vector<double> &V);
   /** The last sample of take_sample(). */

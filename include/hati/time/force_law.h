@@ -45,6 +45,13 @@ struct LawSample
    */
   std::vector<double> tangential_impulses, slip_velocities;
   std::vector<FrictionState> friction_states;
+  /**
+   * A sample of every step for the laws' outputs (LawOutput::add_step()):
+   * a law may leave out the columns that only the output rows and the
+   * coupling read (the contacts: the normal velocities), which would cost
+   * every step.
+   */
+  bool every_step = false;
 };
 
 /**

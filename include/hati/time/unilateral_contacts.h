@@ -70,7 +70,8 @@ public:
   /**
    * The rows' columns of the outputs (one per row of system.contacts): the
    * gaps, impulses and active flags of the last step, the normal velocities
-   * `L_k V` at @p V, and with friction (A9) the tangential impulses, slip
+   * `L_k V` at @p V (not in a sample of every step, LawSample::every_step),
+   * and with friction (A9) the tangential impulses, slip
    * velocities and states (FrictionalContacts::sample()).
    */
   void sample(const Vector<double> &V, LawSample &s) const override;
