@@ -47,10 +47,26 @@
 //      `v0 dt sin(Omega t_n) / sin(Omega dt)` to 1e-10 of it (round-off),
 //      and the row's impulse is the support reaction of the step,
 //      `lambda = -dt k u_1(t_{n+1})`, to 1e-12 of its largest value.
+//  (h) the decomposition (extract_subsystem(), HATI's subdomains): the
+//      ground spring on DoF 2 of a 3-DoF system, renumbered by the law
+//      (ForceLaw::part_data()) into the part of DoFs {1, 2} as its DoF 1,
+//      the part's CD-Lagrange makes the law with the part's mass in its
+//      bound; the part {0, 1} holds none of it; a law without part_data()
+//      (the holding row) and data of no registered law are refused with
+//      messages that name them.
+//  (i) a whole run of the bouncing ball through Problem and the time loop
+//      (run_time_loop()) with the ground spring added to its system: the
+//      law's LawOutput (ForceLaw::make_output()) sees every step and writes
+//      its summary.json entries and its own file, add_summary() its entry,
+//      next to the contacts' entries; Newmark and event-driven refuse the
+//      law by its name (on the 1-DoF oscillator) (ForceLaw::refusal(),
+//      check_force_laws()). Adding a law is its class and one registration, nothing else.
 // Every check prints value, reference and tolerance; returns non-zero on
 // failure.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/numbers.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 
@@ -58,13 +74,19 @@
 
 #include <hati/base/mpi_environment.h>
 #include <hati/contact/sparse_rows.h>
+#include <hati/model/decomposition.h>
 #include <hati/model/discrete_system.h>
+#include <hati/output/law_output.h>
+#include <hati/output/run_directory.h>
+#include <hati/run/problem.h>
+#include <hati/run/time_loop.h>
 #include <hati/time/cd_lagrange.h>
 #include <hati/time/force_law.h>
 
 #include <algorithm>
 #include <any>
 #include <cmath>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -83,6 +105,43 @@ struct GroundSpringData
   types::global_dof_index dof = 0;
   /** Stiffness (N/m). */
   double stiffness = 0.;
+};
+
+class GroundSpring;
+
+/**
+ * The ground spring's outputs (a LawOutput, (i)): the steps it saw, the
+ * time of the last one and the largest force at the end of a step, as the
+ * summary.json entries `ground_spring_steps`, `ground_spring_last_time`
+ * and the file `ground_spring.csv`.
+ */
+class GroundSpringOutput : public LawOutput
+{
+public:
+  GroundSpringOutput(const GroundSpring &law, const LawOutputContext &context)
+      : law(law), directory(context.directory)
+  {
+  }
+
+  void add_step(const LawSample &sample, const double dt) override;
+
+  void
+  finish(SummaryEntries &summary, std::ostream &out, const LawOutputTimes &times) override
+  {
+    (void)times;
+    summary.emplace_back("ground_spring_steps", steps);
+    summary.emplace_back("ground_spring_last_time", last_time);
+    std::ostringstream csv;
+    csv << "steps,largest_force\n" << steps << ',' << largest << '\n';
+    directory.replace("ground_spring.csv", csv.str(), true);
+    out << "  ground spring: " << steps << " steps" << std::endl;
+  }
+
+private:
+  const GroundSpring &law;
+  RunDirectory &directory;
+  unsigned long steps = 0;
+  double last_time = 0., largest = 0.;
 };
 
 /** `F = -k u` on one DoF, with the law's work and statistics (a test law). */
@@ -143,11 +202,30 @@ public:
   void save(std::any &s) const override { s = state; }
   void restore(const std::any &s) override { state = std::any_cast<const State &>(s); }
 
+  /** Its DoF renumbered; none for a part without it (the decomposition, (h)). */
+  std::any part_data(const std::vector<int> &local,
+                     const std::vector<bool> &fixed) const override
+  {
+    (void)fixed;
+    if (local[data.dof] < 0)
+      return {};
+    return GroundSpringData{static_cast<types::global_dof_index>(local[data.dof]),
+                            data.stiffness};
+  }
+
   void add_summary(SummaryEntries &summary, std::ostream &out) const override
   {
     summary.emplace_back("ground_spring_max_force", state.max_force);
     out << "  ground spring: largest force " << state.max_force << " N" << std::endl;
   }
+
+  std::unique_ptr<LawOutput> make_output(const LawOutputContext &context) const override
+  {
+    return std::make_unique<GroundSpringOutput>(*this, context);
+  }
+
+  /** The force at the end of the last step (N). */
+  double force() const { return state.force; }
 
 private:
   struct State
@@ -159,6 +237,14 @@ private:
   State state;
   double initial_energy = 0.;
 };
+
+void GroundSpringOutput::add_step(const LawSample &sample, const double dt)
+{
+  (void)dt;
+  ++steps;
+  last_time = sample.time;
+  largest = std::max(largest, std::abs(law.force()));
+}
 
 /** What a model puts into DiscreteSystem::law_data["holding row"]. */
 struct HoldingRowData
@@ -400,6 +486,139 @@ void test_chain_and_snapshot()
     none = none && law->name() != "ground spring";
   expect(none, "(f) no ground spring for a system without its data");
 }
+/** The message of the exception thrown by @p f (empty if none). */
+template <class F> std::string refusal_of(F f)
+{
+  try
+  {
+    f();
+  }
+  catch (const std::exception &e)
+  {
+    return message_of(e);
+  }
+  return "";
+}
+
+void test_decomposition()
+{
+  // a chain of three masses, the ground spring on DoF 2; the part holds 1, 2
+  const double k = 800., m2 = 3.;
+  DiscreteSystem s;
+  s.reinit(3);
+  for (unsigned int i = 0; i < 3; ++i)
+    s.lumped_mass[i] = 1. + i;
+  s.law_data["ground spring"] = GroundSpringData{2, k};
+  DiscreteSystem part;
+  extract_subsystem(s, {1, 2}, part);
+  const auto it = part.law_data.find("ground spring");
+  expect(it != part.law_data.end() &&
+             std::any_cast<const GroundSpringData &>(it->second).dof == 1 &&
+             std::any_cast<const GroundSpringData &>(it->second).stiffness == k,
+         "(h) the part's law data: the ground spring on the part's DoF 1 (global 2)");
+  CDLagrange cd(part, 1e-3, 1.);
+  const ForceLaw *law = law_of(cd, "ground spring");
+  check("(h) the part's law: its omega^2 bound k/m (rad^2/s^2)",
+        law ? law->omega_squared_bound() : 0.,
+        k / m2,
+        1e-14 * k / m2);
+  DiscreteSystem other;
+  extract_subsystem(s, {0, 1}, other);
+  expect(other.law_data.empty(), "(h) a part without the spring's DoF holds none of it");
+
+  // a law that does not renumber its data, and data of no registered law
+  DiscreteSystem rows;
+  rows.reinit(2);
+  rows.lumped_mass = 1.;
+  rows.law_data["holding row"] = HoldingRowData{0};
+  std::string what = refusal_of([&] { extract_subsystem(rows, {0}, part); });
+  std::cout << "     message: " << what << std::endl;
+  expect(what.find("'holding row' cannot be split") != std::string::npos,
+         "(h) a law without part_data() refused, the message names the law");
+  rows.law_data.clear();
+  rows.law_data["no such law"] = 1.;
+  what = refusal_of([&] { extract_subsystem(rows, {0}, part); });
+  std::cout << "     message: " << what << std::endl;
+  expect(what.find("'no such law'") != std::string::npos,
+         "(h) data of no registered law refused, the message names it");
+}
+
+/** The text of the file @p path (empty if it cannot be read). */
+std::string read_text(const std::string &path)
+{
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void test_run()
+{
+  // the bouncing ball (parameter_files/bouncing_ball.prm) for 0.05 s with
+  // the test's ground spring on its vertical DoF, through Problem and the
+  // time loop of a run (run_time_loop(), as run_cd_lagrange() calls it)
+  ParameterHandler prm;
+  Problem::declare_parameters(prm);
+  prm.parse_input_from_string("subsection Model\n"
+                              "  set Type = point mass\n"
+                              "  subsection Point mass\n"
+                              "    set Initial height = 0.001\n"
+                              "  end\n"
+                              "end\n"
+                              "subsection Loading\n"
+                              "  set Gravity = 0, 0, -9.81\n"
+                              "end\n"
+                              "subsection Contact\n"
+                              "  set Name = ground\n"
+                              "end\n"
+                              "subsection Analysis\n"
+                              "  set Type = transient\n"
+                              "end\n"
+                              "subsection Time integration\n"
+                              "  set Method = CD-Lagrange\n"
+                              "  set Time step = 1e-4\n"
+                              "  set End time = 0.05\n"
+                              "end\n"
+                              "subsection Output\n"
+                              "  set History interval = 0.01\n"
+                              "  set Output interval = 0\n"
+                              "end\n");
+  Problem problem(prm, ConditionalOStream(std::cout, false));
+  problem.build_system();
+  problem.add_loads();
+  const double k = 100.;
+  problem.system.law_data["ground spring"] = GroundSpringData{2, k};
+  problem.prepare_transient();
+  DiscreteSystem oscillator; // the law alone: no contact is refused first
+  make_oscillator(oscillator, 1., k, 0.01);
+  for (const std::string method : {"Newmark", "event-driven"})
+  {
+    const std::string what = refusal_of([&] { check_force_laws(oscillator, method); });
+    std::cout << "     message: " << what << std::endl;
+    expect(what.find("Time integration/Method = " + method +
+                     ": the force law 'ground spring'") != std::string::npos,
+           "(i) " + method + " refuses the law, naming it");
+  }
+  const std::string path = "unit_force_law_run";
+  {
+    RunDirectory directory(path, "");
+    TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
+    CDLagrange integrator(problem.system, 1e-4, 1.);
+    run_time_loop(integrator, problem, directory, timer, {{"method", "CD-Lagrange"}});
+  }
+  const std::string summary = read_text(path + "/summary.json");
+  const auto has = [&](const std::string &text)
+  { return summary.find(text) != std::string::npos; };
+  expect(has("\"ground_spring_max_force\": ") && has("\"ground_spring_steps\": 500,"),
+         "(i) summary.json: the law's entries (add_summary(), its LawOutput: 500 steps)");
+  expect(has("\"ground_spring_last_time\": 0.05") && has("\"contacts\": {"),
+         "(i) summary.json: the last step at the End time, the contacts' entries too");
+  const std::string csv = read_text(path + "/ground_spring.csv");
+  std::cout << "     ground_spring.csv: " << csv;
+  expect(csv.rfind("steps,largest_force\n500,", 0) == 0,
+         "(i) the law's own file ground_spring.csv");
+}
+
 void test_row_law()
 {
   const double m0 = 1.5, m1 = 0.7, k = 1200., v0 = 0.3, omega = std::sqrt(k / m1),
@@ -469,5 +688,7 @@ int main(int argc, char **argv)
   test_critical_step();
   test_chain_and_snapshot();
   test_row_law();
+  test_decomposition();
+  test_run();
   return finish();
 }

@@ -1,6 +1,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <hati/model/decomposition.h>
+#include <hati/time/force_law.h>
 
 #include <algorithm>
 
@@ -66,11 +67,6 @@ void extract_subsystem(const DiscreteSystem &full,
                        const std::vector<types::global_dof_index> &dofs,
                        DiscreteSystem &sub)
 {
-  // the data of other force laws has no renumbering (DiscreteSystem::law_data)
-  AssertThrow(full.law_data.empty(),
-              ExcMessage("Model/Decomposition: the force law '" +
-                         (full.law_data.empty() ? "" : full.law_data.begin()->first) +
-                         "' cannot be split into HATI's subdomains"));
   const unsigned int N = full.n_dofs(), n = dofs.size();
   std::vector<int> local(N, -1);
   for (unsigned int i = 0; i < n; ++i)
@@ -179,6 +175,10 @@ void extract_subsystem(const DiscreteSystem &full,
         }
     sub.ropes.push_back(rope);
   }
+
+  // the data of the other force laws (DiscreteSystem::law_data): each law
+  // renumbers its own (ForceLaw::part_data(); refused by a law that cannot)
+  extract_law_data(full, local, sub);
 }
 
 void decompose(Model &model,
@@ -228,6 +228,14 @@ void decompose(Model &model,
                            "or the Explicit members"));
     AssertThrow(p == 0 || part.system.ropes.empty(),
                 ExcMessage(rope_message(part.system.ropes[0].name)));
+    AssertThrow(
+        p == 0 || part.system.law_data.empty(),
+        ExcMessage("Model/Decomposition: the force law '" +
+                   (part.system.law_data.empty() ? std::string()
+                                                 : part.system.law_data.begin()->first) +
+                   "' lies in the implicit subdomain; force laws need the "
+                   "explicit CD-Lagrange integrator: put its nodes in the "
+                   "Explicit region or the Explicit members"));
   }
   // the rows of the model's links across (G3''), in the whole numbering
   const std::vector<SparseRow> links = model.interface_rows();

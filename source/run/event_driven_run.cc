@@ -9,6 +9,7 @@
 #include <hati/run/problem.h>
 #include <hati/run/run_tools.h>
 #include <hati/time/event_driven.h>
+#include <hati/time/force_law.h>
 
 #include <iostream>
 
@@ -18,10 +19,8 @@ namespace hati
 void run_event_driven(Problem &problem, RunDirectory &directory)
 {
   const DiscreteSystem &system = problem.system;
-  AssertThrow(system.ropes.empty(),
-              ExcMessage("Time integration/Method = event-driven: the rope '" +
-                         (system.ropes.empty() ? std::string() : system.ropes[0].name) +
-                         "' needs the CD-Lagrange integrator (or HATI)."));
+  // the laws it cannot integrate (ForceLaw::refusal(): ropes, friction, ...)
+  check_force_laws(system, "event-driven");
   const OutputParameters &output = problem.output_parameters;
   TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
   const double T = problem.time_parameters.end_time;

@@ -4,6 +4,7 @@
 #include <hati/run/analysis_registry.h>
 #include <hati/run/problem.h>
 #include <hati/run/time_loop.h>
+#include <hati/time/force_law.h>
 #include <hati/time/newmark.h>
 
 #include <iostream>
@@ -12,17 +13,8 @@ namespace hati
 {
 void run_newmark(Problem &problem, RunDirectory &directory)
 {
-  AssertThrow(
-      problem.system.contacts.empty(),
-      ExcMessage("Time integration/Method = Newmark: the model has contacts, which "
-                 "need the explicit CD-Lagrange integrator."));
-  AssertThrow(problem.system.ropes.empty(),
-              ExcMessage("Time integration/Method = Newmark: the rope '" +
-                         (problem.system.ropes.empty() ? std::string()
-                                                       : problem.system.ropes[0].name) +
-                         "' is a nonlinear (tension-only) element, which needs the "
-                         "explicit CD-Lagrange integrator (or HATI with the rope in the "
-                         "explicit subdomain)."));
+  // the laws it cannot integrate (ForceLaw::refusal(): contacts, ropes, ...)
+  check_force_laws(problem.system, "Newmark");
   const NewmarkParameters &parameters = problem.newmark_parameters;
   TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
   timer.enter_subsection("setup (assembly, factorisation)");

@@ -1,5 +1,6 @@
 #include <hati/base/wall_clock.h>
-#include <hati/output/contact_statistics.h>
+#include <hati/output/contact_output.h>
+#include <hati/output/law_output.h>
 #include <hati/output/output_writer.h>
 #include <hati/output/postprocessor.h>
 #include <hati/output/run_directory.h>
@@ -31,30 +32,48 @@ template <class Integrator> unsigned int time_step_ratio(const Integrator &integ
     return 1;
 }
 
-OutputState output_state(const CDLagrange &integrator)
+/** The force laws' columns of an output row: those of the laws' sample @p l. */
+void set_law_columns(const LawSample &l, OutputState &s)
 {
-  OutputState s = contact_state(integrator, integrator.time_step());
-  if (integrator.friction().any())
-    integrator.friction().sample(integrator.velocity(),
-                                 s.impulses,
-                                 s.tangential_impulses,
-                                 s.slip_velocities,
-                                 s.friction_states);
+  s.gaps = l.gaps;
+  s.normal_velocities = l.normal_velocities;
+  s.impulses = l.impulses;
+  s.active = l.active;
+  s.tangential_impulses = l.tangential_impulses;
+  s.slip_velocities = l.slip_velocities;
+  s.friction_states = l.friction_states;
+}
+
+/** The output row of CD-Lagrange: its state and its laws' sample (into @p sample). */
+OutputState output_state(const CDLagrange &integrator, LawSample &sample)
+{
+  OutputState s;
+  s.time = integrator.time();
+  s.displacement = &integrator.displacement();
+  s.velocity = &integrator.velocity();
+  s.impulse_duration = integrator.time_step();
+  sample_force_laws(integrator.force_laws(), integrator.velocity(), sample);
+  set_law_columns(sample, s);
   return s;
 }
 
-/** Coulomb friction of an integrator (A9); nullptr for Newmark (no contacts). */
-const FrictionalContacts *friction_of(const CDLagrange &integrator)
+/** The force laws of an integrator; none for Newmark (it refuses them). */
+const std::vector<std::unique_ptr<ForceLaw>> &force_laws_of(const CDLagrange &integrator)
 {
-  return &integrator.friction();
+  return integrator.force_laws();
 }
-const FrictionalContacts *friction_of(const HATICoupling &integrator)
+const std::vector<std::unique_ptr<ForceLaw>> &
+force_laws_of(const HATICoupling &integrator)
 {
-  return &integrator.friction();
+  return integrator.force_laws();
 }
-const FrictionalContacts *friction_of(const Newmark &) { return nullptr; }
+const std::vector<std::unique_ptr<ForceLaw>> &force_laws_of(const Newmark &)
+{
+  static const std::vector<std::unique_ptr<ForceLaw>> none;
+  return none;
+}
 
-OutputState output_state(const HATICoupling &integrator)
+OutputState output_state(const HATICoupling &integrator, LawSample &)
 {
   // contacts.csv is written at the micro steps (connect_micro_steps())
   OutputState s = contact_state(integrator, integrator.micro_time_step());
@@ -62,7 +81,7 @@ OutputState output_state(const HATICoupling &integrator)
   return s;
 }
 
-OutputState output_state(const Newmark &integrator)
+OutputState output_state(const Newmark &integrator, LawSample &)
 {
   OutputState s;
   s.time = integrator.time();
@@ -179,8 +198,8 @@ private:
   void connect_micro_steps();
   /** The entries of the coupling (subdomains, time per part). */
   void add_coupling_summary(SummaryEntries &summary) const;
-  /** The contact statistics, their summary entries and contact_episodes.csv. */
-  void add_contact_summary(SummaryEntries &summary);
+  /** The outputs of the force laws (LawOutput::finish(), e.g. the contact statistics). */
+  void add_law_output_summary(SummaryEntries &summary);
   /** The force laws' entries (ForceLaw::add_summary(), e.g. `rope_tension` of R1). */
   void add_force_law_summary(SummaryEntries &summary) const;
 
@@ -203,7 +222,8 @@ private:
   double loop_output = 0.;
   /** The registered post-processors that apply (postprocessor_registry()). */
   std::vector<std::unique_ptr<Postprocessor>> postprocessors;
-  ContactStatistics statistics;
+  /** The force laws' outputs (ForceLaw::make_output(), e.g. the contacts'). */
+  LawOutputs law_outputs;
   Progress progress;
   /** The state finite and within its bound (at rows and between them). */
   const Watchdog watchdog;
@@ -218,33 +238,13 @@ private:
   unsigned long steps_done = 0;
   unsigned long micro_step = 0;
   OutputState contact_row;
+  /** The laws' sample of an output row (CD-Lagrange). */
+  LawSample row_sample;
   /** HATI: the check of the interface work (G5). */
   InterfaceEnergyGuard interface_guard;
-  /** The contact statistics and contacts.csv rows of every (micro) step. */
+  /** The laws' outputs and contacts.csv rows of every (micro) step. */
   WallClock statistics_clock;
-  /** With friction (A9): the record of a step for the statistics. */
-  const FrictionalContacts *const friction;
-  std::vector<double> step_tangential, step_slip;
-  std::vector<FrictionState> step_states;
 };
-
-/**
- * The window of the mean contact forces (s): Output/Contact force window,
- * at most the End time (as its documentation says: a longer window would
- * only hold the whole run, and 1e20 s overflowed its count of steps).
- */
-double contact_force_window(const Problem &problem, const double end_time)
-{
-  return std::min(problem.output_parameters.contact_force_window, end_time);
-}
-
-std::vector<double> initial_gaps(const DiscreteSystem &system)
-{
-  std::vector<double> gaps;
-  for (const auto &c : system.contacts)
-    gaps.push_back(c.initial_gap + c.apply(system.initial_displacement));
-  return gaps;
-}
 
 template <class Integrator>
 TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
@@ -265,19 +265,20 @@ TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
                         steps_between(problem.output_parameters.section_force_interval,
                                       every_history * dt,
                                       n_steps / every_history + 1)),
-      statistics(problem.system.contacts,
-                 initial_gaps(problem.system),
-                 contact_force_window(problem, end_time)),
+      law_outputs(force_laws_of(integrator),
+                  {problem.system,
+                   *problem.model,
+                   problem.output_parameters,
+                   end_time,
+                   directory,
+                   [&problem](const std::string &message) { problem.warn(message); }}),
       progress(problem.output_parameters.progress_interval, end_time),
       watchdog(*problem.model, problem.system),
       every_check(
           explicit_scheme ? Watchdog::check_interval
           : std::is_same_v<Integrator, HATICoupling>
               ? std::max(1ul, Watchdog::check_interval / time_step_ratio(integrator))
-              : 1ul),
-      friction(friction_of(integrator) && friction_of(integrator)->any()
-                   ? friction_of(integrator)
-                   : nullptr)
+              : 1ul)
 {
   std::cout << "  " << n_steps << " steps of " << dt << " s to t = " << end_time << " s"
             << std::endl;
@@ -305,7 +306,7 @@ TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
 template <class Integrator> void TimeLoop<Integrator>::write(const unsigned long step)
 {
   const WallClock::Scope scope(output_clock);
-  OutputState s = output_state(integrator);
+  OutputState s = output_state(integrator, row_sample);
   check_state(watchdog, writer, *s.displacement, s.velocity, s.time);
   if (step % every_history == 0 || step == n_steps)
   {
@@ -326,7 +327,7 @@ template <class Integrator> void TimeLoop<Integrator>::connect_micro_steps()
 {
   if constexpr (std::is_same_v<Integrator, HATICoupling>)
   {
-    if (integrator.gaps().empty())
+    if (integrator.gaps().empty() && law_outputs.empty())
       return;
     const unsigned long every_contact_row = steps_between(
         problem.output_parameters.history_interval, dt / time_step_ratio(integrator));
@@ -335,12 +336,7 @@ template <class Integrator> void TimeLoop<Integrator>::connect_micro_steps()
     {
       const WallClock::Scope scope(statistics_clock);
       writer.track_contacts(sample.gaps, sample.impulses);
-      statistics.add_step(sample.time, integrator.micro_time_step(), sample.impulses);
-      if (friction)
-        statistics.add_friction_step(sample.time,
-                                     integrator.micro_time_step(),
-                                     sample.tangential_impulses,
-                                     sample.slip_velocities);
+      law_outputs.add_step(sample, integrator.micro_time_step());
       if (++micro_step % every_contact_row == 0)
       {
         contact_row.time = sample.time;
@@ -364,27 +360,18 @@ template <class Integrator> void TimeLoop<Integrator>::run(TimerOutput &timer)
   const double output_before = output_clock.seconds();
   const WallClock::Scope loop(loop_clock);
   TimerOutput::Scope scope(timer, "time stepping");
-  // the constraint rows of ties and rigid links are not contacts
-  const bool has_contacts = n_contacts(system.contacts) > 0;
   for (unsigned long step = 1; step <= n_steps; ++step)
   {
     integrator.step();
     steps_done = step;
     if constexpr (explicit_scheme)
-      if (has_contacts)
+      if (!law_outputs.empty()) // e.g. the contacts' statistics
       {
         const WallClock::Scope scope(statistics_clock);
-        writer.track_contacts(integrator.gaps(), integrator.impulses());
-        statistics.add_step(integrator.time(), dt, integrator.impulses());
-        if (friction)
-        {
-          friction->sample(integrator.velocity(),
-                           integrator.impulses(),
-                           step_tangential,
-                           step_slip,
-                           step_states);
-          statistics.add_friction_step(integrator.time(), dt, step_tangential, step_slip);
-        }
+        const LawSample &sample =
+            law_outputs.take_sample(integrator.time(), integrator.velocity());
+        writer.track_contacts(sample.gaps, sample.impulses);
+        law_outputs.add_step(sample, dt);
       }
     if (step % every_history == 0 || (every_vtu > 0 && step % every_vtu == 0) ||
         step == n_steps)
@@ -437,35 +424,13 @@ void TimeLoop<Integrator>::add_coupling_summary(SummaryEntries &summary) const
 }
 
 template <class Integrator>
-void TimeLoop<Integrator>::add_contact_summary(SummaryEntries &summary)
+void TimeLoop<Integrator>::add_law_output_summary(SummaryEntries &summary)
 {
-  if (n_contacts(system.contacts) == 0)
-    return;
+  LawOutputTimes times;
   if constexpr (!std::is_same_v<Integrator, Newmark>)
-    summary.emplace_back("wall_time_contacts", integrator.contact_seconds());
-  summary.emplace_back("wall_time_contact_statistics", statistics_clock.seconds());
-  if (friction)
-  {
-    // the nonsmooth Gauss-Seidel of the frictional clusters (A9): never silent
-    summary.emplace_back("friction_iterations_max", friction->max_sweeps());
-    summary.emplace_back("friction_unconverged", friction->unconverged());
-    if (friction->unconverged() > 0)
-      problem.warn("Coulomb friction: " + std::to_string(friction->unconverged()) +
-                   " contact cluster solutions did not converge to the relative "
-                   "tolerance 1e-10 (nonsmooth Gauss-Seidel, at most 1000 sweeps); "
-                   "their impulses are the last iterate");
-  }
-  summary.emplace_back("contacts", statistics.json());
-  summary.emplace_back("contact_force_window",
-                       problem.output_parameters.contact_force_window);
-  const auto wheels = problem.model->wheel_contacts();
-  if (!wheels.empty())
-    summary.emplace_back("wheels", statistics.json(wheels));
-  // replaced atomically: never a part of it
-  std::ostringstream episodes;
-  statistics.write_episodes(episodes);
-  directory.replace("contact_episodes.csv", episodes.str(), true);
-  statistics.print_table(std::cout);
+    times.rows = integrator.contact_seconds();
+  times.outputs = statistics_clock.seconds();
+  law_outputs.finish(summary, std::cout, times);
 }
 
 template <class Integrator>
@@ -513,7 +478,7 @@ void TimeLoop<Integrator>::finish(TimerOutput &timer, SummaryEntries summary)
        {"energy_balance_error", drift},
        {"energy_balance_relative", scale > 0. ? drift / scale : 0.}});
   add_coupling_summary(summary);
-  add_contact_summary(summary);
+  add_law_output_summary(summary);
   add_force_law_summary(summary);
   std::cout << problem.model->results_table();
   for (const auto &p : postprocessors)

@@ -3,6 +3,7 @@
 
 #include <hati/contact/lcp_solver.h>
 #include <hati/time/event_driven.h>
+#include <hati/time/unilateral_contacts.h>
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
@@ -87,19 +88,11 @@ EventDriven::EventDriven(const DiscreteSystem &system,
   work_ku.reinit(n);
   lambda.assign(system.contacts.size(), 0.);
   is_active.assign(system.contacts.size(), false);
-  for (const auto &c : system.contacts)
-  {
-    AssertThrow(!c.frictional(),
-                ExcMessage("Time integration/Method = event-driven: the contact '" +
-                           c.name +
-                           "' has Coulomb friction (mu > 0), which the event-driven "
-                           "reference does not handle; use CD-Lagrange"));
-    AssertThrow(!c.bilateral,
-                ExcMessage("Time integration/Method = event-driven: the contact '" +
-                           c.name +
-                           "' is two-sided without clearance (bilateral), which the "
-                           "event-driven reference does not handle; use CD-Lagrange"));
-  }
+  // friction and bilateral rows refused as by the contacts' law (also when
+  // the integrator is built without run_event_driven()'s check_force_laws())
+  const std::string refusal =
+      UnilateralContacts::refusal_of(system.contacts, "event-driven");
+  AssertThrow(refusal.empty(), ExcMessage(refusal));
 
   check(SUNContext_Create(nullptr, &cvode->context), "SUNContext_Create");
   cvode->y = N_VNew_Serial(2 * n, cvode->context);

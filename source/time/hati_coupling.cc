@@ -288,19 +288,10 @@ void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
 
 void HATICoupling::take_sample(ContactSample &s) const
 {
+  // the explicit subdomain's laws: the contacts' gaps, normal velocities,
+  // impulses, active flags and friction columns
   s.time = explicit_integrator.time();
-  s.gaps = explicit_integrator.gaps();
-  s.impulses = explicit_integrator.impulses();
-  s.active = explicit_integrator.active();
-  const auto &contacts = decomposition.parts[0].system.contacts;
-  const Vector<double> &V = explicit_integrator.velocity();
-  s.normal_velocities.resize(contacts.size());
-  for (unsigned int k = 0; k < contacts.size(); ++k)
-    s.normal_velocities[k] = contacts[k].apply(V);
-  const FrictionalContacts &friction = explicit_integrator.friction();
-  if (friction.any())
-    friction.sample(
-        V, s.impulses, s.tangential_impulses, s.slip_velocities, s.friction_states);
+  sample_force_laws(explicit_integrator.force_laws(), explicit_integrator.velocity(), s);
 }
 
 const Vector<double> &HATICoupling::to_global(const Vector<double> &implicit_part,

@@ -126,4 +126,15 @@ void RopeForces::add_summary(SummaryEntries &summary, std::ostream &out) const
   }
   summary.emplace_back("rope_tension", json);
 }
+std::string RopeForces::refusal(const std::string &method) const
+{
+  if (method == "Newmark")
+    return "Time integration/Method = Newmark: the rope '" + ropes[0].name +
+           "' is a nonlinear (tension-only) element, which needs the explicit "
+           "CD-Lagrange integrator (or HATI with the rope in the explicit subdomain).";
+  if (method == "event-driven")
+    return "Time integration/Method = event-driven: the rope '" + ropes[0].name +
+           "' needs the CD-Lagrange integrator (or HATI).";
+  return ForceLaw::refusal(method);
+}
 } // namespace hati

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <hati/contact/lcp_solver.h>
+#include <hati/output/contact_output.h>
 #include <hati/time/unilateral_contacts.h>
 
 #include <algorithm>
@@ -226,5 +227,57 @@ void UnilateralContacts::restore(const std::any &state)
   is_active = s.is_active;
   contact_work = s.contact_work;
   frictional_contacts.restore(s.friction);
+}
+void UnilateralContacts::sample(const Vector<double> &V, LawSample &s) const
+{
+  s.gaps = gap;
+  s.impulses = lambda;
+  s.active = is_active;
+  if (!s.every_step) // only the output rows and the coupling read them
+  {
+    s.normal_velocities.resize(contacts.size());
+    for (unsigned int k = 0; k < contacts.size(); ++k)
+      s.normal_velocities[k] = contacts[k].apply(V);
+  }
+  if (frictional_contacts.any())
+    frictional_contacts.sample(
+        V, s.impulses, s.tangential_impulses, s.slip_velocities, s.friction_states);
+}
+
+std::unique_ptr<LawOutput>
+UnilateralContacts::make_output(const LawOutputContext &context) const
+{
+  // the constraint rows of ties and rigid links are not contacts
+  if (n_contacts(context.system.contacts) == 0)
+    return nullptr;
+  return std::make_unique<ContactOutput>(context, frictional_contacts);
+}
+std::string UnilateralContacts::refusal_of(const std::vector<ContactRow> &contacts,
+                                           const std::string &method)
+{
+  if (method == "Newmark" && !contacts.empty())
+    return "Time integration/Method = Newmark: the model has contacts, which need the "
+           "explicit CD-Lagrange integrator.";
+  if (method == "event-driven")
+    for (const auto &c : contacts)
+    {
+      if (c.frictional())
+        return "Time integration/Method = event-driven: the contact '" + c.name +
+               "' has Coulomb friction (mu > 0), which the event-driven reference does "
+               "not handle; use CD-Lagrange";
+      if (c.bilateral)
+        return "Time integration/Method = event-driven: the contact '" + c.name +
+               "' is two-sided without clearance (bilateral), which the event-driven "
+               "reference does not handle; use CD-Lagrange";
+    }
+  return "";
+}
+
+std::string UnilateralContacts::refusal(const std::string &method) const
+{
+  // a system without rows: every method; with rows, those that resolve them
+  if (method == "Newmark" || method == "event-driven")
+    return refusal_of(contacts, method);
+  return ForceLaw::refusal(method);
 }
 } // namespace hati

@@ -59,8 +59,10 @@ void decompose(Model &model,
 /**
  * The restriction of @p full to the DoFs @p dofs (sorted, free in @p full):
  * matrices, masses, loads, influence vectors, initial state, contacts (all of
- * whose DoFs must be kept: throws naming the contact otherwise). Monitors are
- * not copied (outputs use the model's numbering).
+ * whose DoFs must be kept: throws naming the contact otherwise), ropes and
+ * the force laws' data (DiscreteSystem::law_data, renumbered by each law:
+ * ForceLaw::part_data(), extract_law_data()). Monitors are not copied
+ * (outputs use the model's numbering).
  */
 void extract_subsystem(const DiscreteSystem &full,
                        const std::vector<types::global_dof_index> &dofs,

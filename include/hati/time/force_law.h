@@ -6,6 +6,7 @@
 
 #include <hati/base/registry.h>
 #include <hati/base/summary_value.h>
+#include <hati/contact/friction_solver.h>
 #include <hati/time/energies.h>
 
 #include <any>
@@ -20,6 +21,38 @@ namespace hati
 using namespace dealii;
 
 class DiscreteSystem;
+class LawOutput;
+struct LawOutputContext;
+
+/**
+ * The state of the force laws after one step (or micro step) as the outputs
+ * take it (ForceLaw::sample()): today the columns of the contacts' law
+ * (UnilateralContacts), one entry per row of DiscreteSystem::contacts.
+ * HATI records one per micro step and hands the final ones to the outputs
+ * (HATICoupling::after_micro_step; the superposition corrects them, G3').
+ */
+struct LawSample
+{
+  /** The time of the state (s). */
+  double time = 0.;
+  /** Gaps (m), normal velocities `L_k V` (m/s) and impulses (N s) per row. */
+  std::vector<double> gaps, normal_velocities, impulses;
+  /** Whether each row was active in the step (A4). */
+  std::vector<bool> active;
+  /**
+   * With friction (A9; empty otherwise): the tangential impulses (N s, two
+   * per row), the slip velocity of each touching row (m/s) and its state.
+   */
+  std::vector<double> tangential_impulses, slip_velocities;
+  std::vector<FrictionState> friction_states;
+  /**
+   * A sample of every step for the laws' outputs (LawOutput::add_step()):
+   * a law may leave out the columns that only the output rows and the
+   * coupling read (the contacts: the normal velocities), which would cost
+   * every step.
+   */
+  bool every_step = false;
+};
 
 /**
  * One force law of a DiscreteSystem as the explicit integrator (CD-Lagrange,
@@ -36,7 +69,9 @@ class DiscreteSystem;
  * with its work and stored energy for the balance (E1, add_energies()),
  * the state a step changes (the coupling redoes steps, G3'; save(),
  * restore()), its share of the critical step (A7, omega_squared_bound())
- * and its summary entries (add_summary()). The integrator holds one
+ * its summary entries (add_summary()), its outputs (sample() of a step,
+ * make_output(): statistics, summary entries and files of a run) and the
+ * methods that can run it (refusal()). The integrator holds one
  * instance per law its system holds (make_force_laws()) and calls them in
  * registration order: the forces are summed in that order, and the rows of
  * different laws are resolved one law after the other (one sweep of a block
@@ -178,6 +213,53 @@ public:
     (void)summary;
     (void)out;
   }
+
+  /** @name Outputs */
+  /** @{ */
+  /**
+   * The law's columns of @p s at the integrator's current state, with
+   * @p V its velocity (`V_{n+1/2}` of CD-Lagrange), e.g. the contacts'
+   * gaps, normal velocities, impulses, active flags and friction columns
+   * (none by default). Fills the vectors of @p s in place: a sample reused
+   * from step to step allocates nothing.
+   */
+  virtual void sample(const Vector<double> &V, LawSample &s) const
+  {
+    (void)V;
+    (void)s;
+  }
+
+  /**
+   * The law's share of a transient run's outputs (LawOutput: statistics of
+   * every step from the samples, summary.json entries, terminal lines and
+   * files), or nullptr (the default) when it has none. The output may keep
+   * a reference to the law: it lives no longer than the integrator.
+   */
+  virtual std::unique_ptr<LawOutput> make_output(const LawOutputContext &context) const;
+  /** @} */
+
+  /**
+   * Why the method @p method (a value of `Time integration/Method`) cannot
+   * integrate a system holding this law: a one-line message, or empty if
+   * it can. CD-Lagrange and HATI (its explicit part) drive every law
+   * (`HATI` also checks the subdomains, Model/Decomposition); the others
+   * (`Newmark`, `event-driven`) drive none, so by default they are refused
+   * with a message that names the law. check_force_laws() asks every law.
+   */
+  virtual std::string refusal(const std::string &method) const;
+
+  /**
+   * The law's data (DiscreteSystem::law_data under name()) of a part of the
+   * system, renumbered (HATI's subdomains, Model/Decomposition:
+   * extract_subsystem()): @p local is the part's index of every DoF of the
+   * system, -1 for a DoF the part does not hold, and @p fixed the system's
+   * fixed flags (a fixed DoF may be dropped, as from a contact row). An
+   * empty result: the part holds none of the law. By default refused (an
+   * ExcMessage that names the law): a law whose data holds DoF indices
+   * overrides this to renumber them.
+   */
+  virtual std::any part_data(const std::vector<int> &local,
+                             const std::vector<bool> &fixed) const;
 };
 
 /** Makes the law for @p system, or nullptr if the system has no data of it. */
@@ -193,6 +275,31 @@ Registry<ForceLawFactory> &force_law_registry();
 
 /** An instance of every registered law that @p system holds, in registration order. */
 std::vector<std::unique_ptr<ForceLaw>> make_force_laws(const DiscreteSystem &system);
+
+/**
+ * Throws (ExcMessage) the first refusal of @p method by a law of @p system
+ * (ForceLaw::refusal(), registration order): the runners of the methods
+ * that do not drive the laws call it before their set-up.
+ */
+void check_force_laws(const DiscreteSystem &system, const std::string &method);
+
+/**
+ * DiscreteSystem::law_data of @p full renumbered into @p part
+ * (ForceLaw::part_data() of each law that has data; @p local as there):
+ * extract_subsystem()'s share of the laws. Data that no registered law
+ * takes is refused, naming its key.
+ */
+void extract_law_data(const DiscreteSystem &full,
+                      const std::vector<int> &local,
+                      DiscreteSystem &part);
+
+/**
+ * The sample of @p laws at velocity @p V into @p sample (its time is left
+ * as it is): ForceLaw::sample() of every law, in order.
+ */
+void sample_force_laws(const std::vector<std::unique_ptr<ForceLaw>> &laws,
+                       const Vector<double> &V,
+                       LawSample &sample);
 } // namespace hati
 
 #endif

@@ -19,16 +19,11 @@ namespace hati
 {
 using namespace dealii;
 
-/** The contact state of the explicit subdomain after one micro step. */
-struct ContactSample
-{
-  double time = 0.;
-  std::vector<double> gaps, normal_velocities, impulses;
-  std::vector<bool> active;
-  /** With friction (A9): as in OutputState (two per row, per row, per row). */
-  std::vector<double> tangential_impulses, slip_velocities;
-  std::vector<FrictionState> friction_states;
-};
+/**
+ * The contact state of the explicit subdomain after one micro step: the
+ * force laws' sample (ForceLaw::sample()).
+ */
+using ContactSample = LawSample;
 
 /**
  * What the micro steps of a macro step give the interface problem, one

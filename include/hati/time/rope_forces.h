@@ -78,6 +78,9 @@ public:
    */
   double omega_squared_bound() const override { return 0.; }
 
+  /** `Newmark` and `event-driven` refused, naming the first rope. */
+  std::string refusal(const std::string &method) const override;
+
   void save(std::any &state) const override;
   void restore(const std::any &state) override;
 

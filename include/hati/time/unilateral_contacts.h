@@ -67,6 +67,32 @@ public:
   /** The contact work and the friction dissipation (E1, A9). */
   void add_energies(Energies &e) const override;
 
+  /**
+   * The rows' columns of the outputs (one per row of system.contacts): the
+   * gaps, impulses and active flags of the last step, the normal velocities
+   * `L_k V` at @p V (not in a sample of every step, LawSample::every_step),
+   * and with friction (A9) the tangential impulses, slip
+   * velocities and states (FrictionalContacts::sample()).
+   */
+  void sample(const Vector<double> &V, LawSample &s) const override;
+
+  /**
+   * The contacts' outputs (ContactOutput: statistics per contact name,
+   * their summary.json entries, `contact_episodes.csv`), or nullptr for a
+   * system without contacts (its rows only those of ties and rigid links).
+   */
+  std::unique_ptr<LawOutput> make_output(const LawOutputContext &context) const override;
+
+  /**
+   * `Newmark` refused when the system has rows (contacts, or those of ties
+   * and rigid links); `event-driven` when a contact has friction or is
+   * bilateral (refusal_of()).
+   */
+  std::string refusal(const std::string &method) const override;
+  /** The refusal of @p method for the rows @p contacts (empty: none). */
+  static std::string refusal_of(const std::vector<ContactRow> &contacts,
+                                const std::string &method);
+
   /** Gaps, impulses, active flags, contact work and the friction record. */
   void save(std::any &state) const override;
   void restore(const std::any &state) override;
