@@ -181,6 +181,8 @@ void Problem::prepare_transient()
         part.system.initial_contact_reaction[i] =
             system.initial_contact_reaction[part.global_dofs[i]];
     }
+  if (decomposition && system.initial_contact_reaction.size() == system.n_dofs())
+    add_eliminated_contact_reactions();
   const DefaultDamping defaults = model->default_damping();
   if (!damping.frequency_range() && defaults.type == "Rayleigh")
     for (const auto &entry : apply_default_damping(defaults.ratio,
@@ -285,6 +287,7 @@ void Problem::set_static_initial_state()
                true,
                &forces);
   set_static_contact_reaction(forces);
+  static_forces = forces;
   system.constant_force -= correction;
   system.initial_velocity = 0.;
   const SummaryValue entry = report_static_contact_forces(forces);
@@ -327,6 +330,32 @@ void Problem::set_static_contact_reaction(const std::vector<double> &forces)
     if (!touched[i] || system.fixed[i])
       reaction[i] = 0.;
   system.initial_contact_reaction = reaction;
+}
+
+void Problem::add_eliminated_contact_reactions()
+{
+  auto &E = decomposition->parts[0];
+  const std::vector<ContactRow> &whole = system.contacts;
+  // the part's rows are the whole system's, in order, some left out (two
+  // rows of one two-sided contact share its name)
+  unsigned int k = 0;
+  for (const ContactRow &row : E.system.contacts)
+  {
+    while (k < whole.size() && whole[k].name != row.name)
+      ++k;
+    if (k == whole.size())
+      break;
+    if (k < static_forces.size() && static_forces[k] != 0.)
+      for (unsigned int j = 0; j < row.dofs.size(); ++j)
+      {
+        const auto g = E.global_dofs[row.dofs[j]];
+        if (std::find(whole[k].dofs.begin(), whole[k].dofs.end(), g) ==
+            whole[k].dofs.end())
+          E.system.initial_contact_reaction[row.dofs[j]] +=
+              static_forces[k] * row.coefficients[j];
+      }
+    ++k;
+  }
 }
 
 SummaryValue Problem::report_rope_tensions(const Vector<double> &U)

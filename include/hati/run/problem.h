@@ -154,6 +154,17 @@ private:
    * closed.
    */
   void set_static_contact_reaction(const std::vector<double> &forces);
+  /**
+   * HATI: the static forces of the contact rows that the whole system
+   * wrote through a constraint (at a tied node, eliminated there) added to
+   * the explicit part's initial contact reaction on the DoFs its plain row
+   * has and the whole system's does not (the tied node, free there); their
+   * normal forces only.
+   */
+  void add_eliminated_contact_reactions();
+
+  /** The static contact force per contact row of the initial state (N). */
+  std::vector<double> static_forces;
 
   ConditionalOStream out;
 };
