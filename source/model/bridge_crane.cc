@@ -12,7 +12,6 @@ namespace hati
 {
 namespace
 {
-const std::string where = "Model/Bridge crane/";
 
 /** Largest number of elements of one member (-), as for Model/Type = frame. */
 constexpr double max_elements_per_member = 1e7;
@@ -23,7 +22,7 @@ constexpr double max_structure_mass = 1e8;
 
 double section_area(const std::string &text, const std::string &entry)
 {
-  return parse_frame_section(text, where + entry).A;
+  return parse_frame_section(text, bridge_crane_where + entry).A;
 }
 
 /**
@@ -50,7 +49,8 @@ constexpr std::array<double, 2> section_dimension_range = {{1e-3, 5.}},
  */
 void check_section(const std::string &text, const std::string &entry)
 {
-  const FrameSection s = parse_frame_section(text, where + entry); // the syntax first
+  const FrameSection s =
+      parse_frame_section(text, bridge_crane_where + entry); // the syntax first
   const std::vector<std::string> values = Utilities::split_string_list(text, ',');
   const bool general = Utilities::trim(values[0]) == "general";
   const auto refuse = [&](const std::string &name,
@@ -60,7 +60,7 @@ void check_section(const std::string &text, const std::string &entry)
                           const std::array<double, 2> &range)
   {
     std::ostringstream m;
-    m << where << entry << ": " << name << " = " << x << " " << unit
+    m << bridge_crane_where << entry << ": " << name << " = " << x << " " << unit
       << (general ? "" : " (of " + text + ")")
       << " is outside the range of a crane section's " << what << ", " << range[0]
       << " to " << range[1] << " " << unit;
@@ -77,7 +77,8 @@ void check_section(const std::string &text, const std::string &entry)
       if (!in(x, section_dimension_range))
       {
         std::ostringstream m;
-        m << where << entry << ": " << names[i - 1] << " = " << Utilities::trim(values[i])
+        m << bridge_crane_where << entry << ": " << names[i - 1] << " = "
+          << Utilities::trim(values[i])
           << " m is outside the range of a crane section's dimensions, "
           << section_dimension_range[0] << " to " << section_dimension_range[1] << " m";
         AssertThrow(false, ExcMessage(m.str()));
@@ -103,8 +104,9 @@ void check_section(const std::string &text, const std::string &entry)
     if (!in(r, radius_of_gyration_range))
     {
       std::ostringstream m;
-      m << where << entry << ": " << name << " = " << x << " m^4 with A = " << s.A
-        << " m^2" << (general ? "" : " (of " + text + ")") << " gives a "
+      m << bridge_crane_where << entry << ": " << name << " = " << x
+        << " m^4 with A = " << s.A << " m^2" << (general ? "" : " (of " + text + ")")
+        << " gives a "
         << (polar ? "polar radius of gyration sqrt(J / 2 A)" : "radius of gyration")
         << " of " << r << " m, outside the range of a crane section's, "
         << radius_of_gyration_range[0] << " to " << radius_of_gyration_range[1] << " m";
@@ -363,7 +365,7 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   {
     const double x = prm.get_double(name);
     AssertThrow(std::isfinite(x) && (allow_zero ? x >= 0. : x > 0.),
-                ExcMessage(where + name + ": expected a value " +
+                ExcMessage(bridge_crane_where + name + ": expected a value " +
                            (allow_zero ? ">= 0" : "> 0") + ", got " + prm.get(name)));
     return x;
   };
@@ -382,7 +384,7 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   rho = m[2];
   AssertThrow(E > 0. && E <= max_young_modulus && nu > -1. && nu < 0.5 && rho > 0. &&
                   rho <= max_density,
-              ExcMessage(where +
+              ExcMessage(bridge_crane_where +
                          "Material: expected 0 < E <= 1e13 Pa, -1 < nu < 0.5, "
                          "0 < rho <= 1e5 kg/m^3, got " +
                          prm.get("Material")));
@@ -401,7 +403,7 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
     if (hoist == "rope" && !(rope_stiffness <= FrameDescription::max_rope_stiffness))
     {
       std::ostringstream r;
-      r << where << "Rope length: " << prm.get("Rope length")
+      r << bridge_crane_where << "Rope length: " << prm.get("Rope length")
         << " m is too short for the default Rope stiffness 9.328e7 N m / L ("
         << rope_stiffness << " N/m, more than " << FrameDescription::max_rope_stiffness
         << " N/m): expected a length of at least " << shortest
@@ -410,20 +412,21 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
     }
   }
   AssertThrow(hoist == "rigid" || hoist_mass > 0.,
-              ExcMessage(where +
+              ExcMessage(bridge_crane_where +
                          "Hoist mass: expected > 0 with Hoist = rope (the load "
                          "on the rope), got " +
                          prm.get("Hoist mass")));
   flange_clearance = positive("Flange clearance", true);
   wheel_restitution = prm.get_double("Wheel restitution");
   AssertThrow(wheel_restitution >= 0. && wheel_restitution <= 1.,
-              ExcMessage(where + "Wheel restitution: expected a value in [0, 1], got " +
+              ExcMessage(bridge_crane_where +
+                         "Wheel restitution: expected a value in [0, 1], got " +
                          prm.get("Wheel restitution")));
   damping_ratio = prm.get_double("Damping ratio");
   damping_type = prm.get("Damping type");
   AssertThrow(std::isfinite(damping_ratio) && damping_ratio >= 0. &&
                   damping_ratio < (damping_type == "Rayleigh" ? 1. : 0.3 + 1e-15),
-              ExcMessage(where + "Damping ratio: expected a value in " +
+              ExcMessage(bridge_crane_where + "Damping ratio: expected a value in " +
                          (damping_type == "Rayleigh" ? "[0, 1)" : "[0, 0.3]") +
                          " with Damping type = " + damping_type + ", got " +
                          prm.get("Damping ratio")));
@@ -433,7 +436,7 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
       {Utilities::string_to_double(band[0]), Utilities::string_to_double(band[1])}};
   AssertThrow(damping_band[0] > 0. && damping_band[0] < damping_band[1] &&
                   std::isfinite(damping_band[1]),
-              ExcMessage(where +
+              ExcMessage(bridge_crane_where +
                          "Damping band: expected 0 < lower < upper frequency (Hz), "
                          "got " +
                          prm.get("Damping band")));
@@ -446,12 +449,13 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   explicit_zone_length = positive("Explicit zone length", true);
 
   AssertThrow(girder_spacing < end_carriage_wheelbase,
-              ExcMessage(where + "Girder spacing: expected less than the End carriage "
-                                 "wheelbase (the girders sit between the wheels)"));
+              ExcMessage(bridge_crane_where +
+                         "Girder spacing: expected less than the End carriage "
+                         "wheelbase (the girders sit between the wheels)"));
   if (!(trolley_wheelbase < span))
   {
     std::ostringstream t;
-    t << where << "Trolley wheelbase: " << trolley_wheelbase
+    t << bridge_crane_where << "Trolley wheelbase: " << trolley_wheelbase
       << " m is not shorter than the Span (" << span
       << " m): the trolley's wheels cannot stand between the rails";
     AssertThrow(false, ExcMessage(t.str()));
@@ -459,12 +463,13 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   const double y1 = (trolley_position - 0.5 * trolley_wheelbase / span) * span,
                y2 = y1 + trolley_wheelbase;
   std::ostringstream s;
-  s << where << "Trolley position: the trolley is off the span: its wheels at y = " << y1
+  s << bridge_crane_where
+    << "Trolley position: the trolley is off the span: its wheels at y = " << y1
     << " and " << y2 << " m must lie strictly between the rails at 0 and " << span
     << " m";
   AssertThrow(y1 > 0. && y2 < span, ExcMessage(s.str()));
   std::ostringstream z;
-  z << where << "Explicit zone length: " << explicit_zone_length
+  z << bridge_crane_where << "Explicit zone length: " << explicit_zone_length
     << " m is longer than a girder (Span = " << span << " m)";
   AssertThrow(explicit_zone_length <= span, ExcMessage(z.str()));
   // the longest member (a girder or an end carriage) divided by the shortest
@@ -475,7 +480,7 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   if (!(longest / shortest <= max_elements_per_member))
   {
     std::ostringstream e;
-    e << where << "Element length, Explicit element length: " << shortest
+    e << bridge_crane_where << "Element length, Explicit element length: " << shortest
       << " m gives more than " << max_elements_per_member
       << " elements along a member of " << longest << " m; use longer elements";
     AssertThrow(false, ExcMessage(e.str()));
@@ -490,7 +495,8 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   if (!(mass_bridge() <= max_structure_mass))
   {
     std::ostringstream b;
-    b << where << "Girder section, End carriage section, Material, Rail mass per metre: "
+    b << bridge_crane_where
+      << "Girder section, End carriage section, Material, Rail mass per metre: "
       << "the girders and end carriages would weigh " << mass_bridge()
       << " kg, more than " << max_structure_mass << " kg";
     AssertThrow(false, ExcMessage(b.str()));
@@ -572,10 +578,11 @@ DecompositionParameters BridgeCrane::default_decomposition() const
   // the wheel contacts are explicit only inside the zones (no zone: the
   // subdomain would hold the trolley frame but not its wheels' rail nodes)
   AssertThrow(hz > 0.,
-              ExcMessage(where + "Explicit zone length = 0: Method = HATI takes its "
-                                 "explicit subdomain from the zones around the wheels, "
-                                 "where the wheel contacts are; set a length > 0 (e.g. "
-                                 "1 m) or give the subdomain in Model/Decomposition"));
+              ExcMessage(bridge_crane_where +
+                         "Explicit zone length = 0: Method = HATI takes its "
+                         "explicit subdomain from the zones around the wheels, "
+                         "where the wheel contacts are; set a length > 0 (e.g. "
+                         "1 m) or give the subdomain in Model/Decomposition"));
   // girder cells around the trolley wheels' rail nodes, and between
   // them: one zone per girder (two interface nodes instead of four)
   // (solid girders: the trolley rails' cells on the top flanges, not the

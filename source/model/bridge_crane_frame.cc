@@ -10,8 +10,6 @@ namespace
 {
 using CraneParameters = BridgeCrane::Parameters;
 
-const std::string where = "Model/Bridge crane/";
-
 /**
  * Stations along a line of length @p L: 0, L, the @p fixed points and the
  * edges of the @p zones (clipped to [0, L]), each interval divided into equal
@@ -104,11 +102,12 @@ void add_materials_and_sections(const CraneParameters &p, FrameDescription &f)
   steel.G = p.E / (2. * (1. + p.nu));
   steel.rho = p.rho;
   f.materials["steel"] = steel;
-  f.sections["girder"] = parse_frame_section(p.girder_section, where + "Girder section");
-  f.sections["end_carriage"] =
-      parse_frame_section(p.end_carriage_section, where + "End carriage section");
+  f.sections["girder"] =
+      parse_frame_section(p.girder_section, bridge_crane_where + "Girder section");
+  f.sections["end_carriage"] = parse_frame_section(
+      p.end_carriage_section, bridge_crane_where + "End carriage section");
   f.sections["trolley"] =
-      parse_frame_section(p.trolley_section, where + "Trolley section");
+      parse_frame_section(p.trolley_section, bridge_crane_where + "Trolley section");
 }
 
 /**

@@ -15,7 +15,6 @@ namespace hati
 {
 namespace
 {
-const std::string where = "Model/Bridge crane/";
 
 /**
  * Width of the rail's foot (m) for a `general` Rail section (no width in its
@@ -108,11 +107,12 @@ void BridgeCrane::Parameters::parse_girder_model(ParameterHandler &prm)
   if (girder_model != "solid")
     return;
   AssertThrow(girder_element_size > 0.,
-              ExcMessage(where + "Girder element size: expected > 0 (m), got " +
+              ExcMessage(bridge_crane_where +
+                         "Girder element size: expected > 0 (m), got " +
                          prm.get("Girder element size")));
   const std::vector<std::string> g = section_values(girder_section);
   AssertThrow(!g.empty() && g[0] == "box",
-              ExcMessage(where +
+              ExcMessage(bridge_crane_where +
                          "Girder section: Girder model = solid needs a box "
                          "section 'box, b, h, t_web, t_flange', got '" +
                          girder_section + "'"));
@@ -120,15 +120,16 @@ void BridgeCrane::Parameters::parse_girder_model(ParameterHandler &prm)
   if (girder_diaphragm_spacing > 0. && girder_diaphragm_spacing <= t_web)
   {
     std::ostringstream m;
-    m << where << "Girder diaphragm spacing: " << girder_diaphragm_spacing
+    m << bridge_crane_where << "Girder diaphragm spacing: " << girder_diaphragm_spacing
       << " m is not more than the web thickness " << t_web
       << " m (the diaphragms' thickness): they would overlap; give 0 for none";
     AssertThrow(false, ExcMessage(m.str()));
   }
-  parse_frame_section(rail_section, where + "Rail section");
+  parse_frame_section(rail_section, bridge_crane_where + "Rail section");
   AssertThrow(rail_mass_per_metre > 0.,
-              ExcMessage(where + "Rail mass per metre: expected > 0 with Girder model "
-                                 "= solid (the trolley rail is a beam of that mass)"));
+              ExcMessage(bridge_crane_where +
+                         "Rail mass per metre: expected > 0 with Girder model "
+                         "= solid (the trolley rail is a beam of that mass)"));
 }
 
 double BridgeCrane::Parameters::rail_height() const
@@ -145,7 +146,8 @@ double BridgeCrane::Parameters::solid_girder_volume() const
                h = Utilities::string_to_double(g[2]),
                tw = Utilities::string_to_double(g[3]),
                tf = Utilities::string_to_double(g[4]);
-  const double A = parse_frame_section(girder_section, where + "Girder section").A;
+  const double A =
+      parse_frame_section(girder_section, bridge_crane_where + "Girder section").A;
   return A * span + diaphragm_centres(span, girder_diaphragm_spacing, tw).size() *
                         (b - 2. * tw) * (h - 2. * tf) * tw;
 }
@@ -160,7 +162,8 @@ void BridgeCrane::Parameters::add_solid_girders(FrameDescription &f) const
   const double S = span, a = 0.5 * girder_spacing;
   // the rail's section and a material whose density gives the Rail mass
   // per metre (its beams: add_girders() in bridge_crane_frame.cc)
-  const FrameSection rail = parse_frame_section(rail_section, where + "Rail section");
+  const FrameSection rail =
+      parse_frame_section(rail_section, bridge_crane_where + "Rail section");
   f.sections["rail"] = rail;
   FrameMaterial rail_material = f.materials.at("steel");
   rail_material.rho = rail_mass_per_metre / rail.A;

@@ -7,7 +7,6 @@ namespace hati
 {
 namespace
 {
-const char *const component_labels[6] = {"x", "y", "z", "rx", "ry", "rz"};
 } // namespace
 
 // The items of a frame at its nodes: springs, point masses, nodal loads and
@@ -144,7 +143,7 @@ void Frame::add_monitors(DiscreteSystem &system) const
     m.name = node;
     for (unsigned int c = 0; c < 6; ++c)
     {
-      m.labels.push_back(component_labels[c]);
+      m.labels.push_back(dof_component_labels[c]);
       m.dofs.push_back(node_dofs.at(node)[c]);
     }
     add(m);
@@ -157,7 +156,7 @@ void Frame::add_monitors(DiscreteSystem &system) const
       m.name = node.name;
       for (unsigned int c = 0; c < 3; ++c)
       {
-        m.labels.push_back(component_labels[c]);
+        m.labels.push_back(dof_component_labels[c]);
         m.dofs.push_back(node.dofs[c]);
       }
       add(m);

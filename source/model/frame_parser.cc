@@ -13,7 +13,6 @@ namespace hati
 {
 namespace
 {
-const char *const component_labels[6] = {"x", "y", "z", "rx", "ry", "rz"};
 
 /** Largest number of elements of one member (-). */
 constexpr double max_elements_per_member = 1e7;

@@ -10,7 +10,7 @@ namespace hati
 namespace
 {
 using Item = FrameItem;
-using Solid = SolidDescription::Solid;
+using SolidItem = SolidDescription::Solid;
 
 /** Throw "Model/Frame/<entry>: item '<name>': <what>" unless @p ok. */
 void require(const bool ok,
@@ -41,11 +41,11 @@ unsigned int to_cells(const Item &it, const unsigned int k)
   return static_cast<unsigned int>(x);
 }
 
-Solid parse_box(const Item &it)
+SolidItem parse_box(const Item &it)
 {
   expect_frame_item_values(
       it, "Solids", {11}, "11 (box, x0, y0, z0, x1, y1, z1, nx, ny, nz, material)");
-  Solid s;
+  SolidItem s;
   s.x0 = to_point(it, 1, "Solids");
   s.x1 = to_point(it, 4, "Solids");
   for (unsigned int d = 0; d < 3; ++d)
@@ -57,7 +57,7 @@ Solid parse_box(const Item &it)
   return s;
 }
 
-Solid parse_box_girder(const Item &it)
+SolidItem parse_box_girder(const Item &it)
 {
   expect_frame_item_values(it,
                            "Solids",
@@ -65,7 +65,7 @@ Solid parse_box_girder(const Item &it)
                            "13 or 14 (box girder, x0, y0, z0, x1, y1, z1, width, height, "
                            "web thickness, flange thickness, element size, material[, "
                            "diaphragm spacing])");
-  Solid s;
+  SolidItem s;
   s.x0 = to_point(it, 1, "Solids");
   s.x1 = to_point(it, 4, "Solids");
   s.width = frame_item_number(it.values[7], "Solids", it);
@@ -112,12 +112,12 @@ Solid parse_box_girder(const Item &it)
   return s;
 }
 
-Solid parse_solid(const Item &it)
+SolidItem parse_solid(const Item &it)
 {
   require(
       !it.values.empty(), "Solids", it, "no values: expected box, box girder or mesh");
   const std::string kind = it.values[0];
-  Solid s;
+  SolidItem s;
   if (kind == "box")
     s = parse_box(it);
   else if (kind == "box girder")

@@ -20,7 +20,6 @@ std::string entry_prefix(const std::string &entry)
 }
 
 /** Largest node tag, element count or entry count accepted (-). */
-constexpr long max_count = 1000000000000L;
 /** Largest physical or entity tag (they are `int` in Gmsh). */
 constexpr long max_tag = std::numeric_limits<int>::max();
 
@@ -158,7 +157,7 @@ private:
   void read_physical_names()
   {
     const long n =
-        r.integer(r.numbers(1)[0], 0, max_count, "the number of physical names");
+        r.integer(r.numbers(1)[0], 0, max_file_count, "the number of physical names");
     for (long i = 0; i < n; ++i)
     {
       const std::string t = r.line();
@@ -181,14 +180,15 @@ private:
     const auto counts = r.numbers(4);
     for (unsigned int dim = 0; dim < 4; ++dim)
     {
-      const long n = r.integer(counts[dim], 0, max_count, "the number of entities");
+      const long n = r.integer(counts[dim], 0, max_file_count, "the number of entities");
       for (long i = 0; i < n; ++i)
       {
         const auto v = r.numbers(dim == 0 ? 5 : 8);
         // point: tag x y z nphys phys...; others: tag 6 bounds nphys phys...
         const std::size_t first = dim == 0 ? 4 : 7;
         const int tag = r.integer(v[0], -max_tag, max_tag, "the entity tag");
-        const long np = r.integer(v[first], 0, max_count, "the number of physical tags");
+        const long np =
+            r.integer(v[first], 0, max_file_count, "the number of physical tags");
         AssertThrow(v.size() >= first + 1 + np,
                     ExcMessage(r.where() + "truncated entity line"));
         for (long k = 0; k < np; ++k)
@@ -202,26 +202,26 @@ private:
   {
     if (version < 4.)
     {
-      const long n = r.integer(r.numbers(1)[0], 0, max_count, "the number of nodes");
+      const long n = r.integer(r.numbers(1)[0], 0, max_file_count, "the number of nodes");
       for (long i = 0; i < n; ++i)
       {
         const auto v = r.numbers(4);
-        node_coordinates[r.integer(v[0], 0, max_count, "the node tag")] =
+        node_coordinates[r.integer(v[0], 0, max_file_count, "the node tag")] =
             Point<3>(v[1], v[2], v[3]);
       }
       return;
     }
     const auto h = r.numbers(4);
-    const long n_blocks = r.integer(h[0], 0, max_count, "the number of node blocks");
+    const long n_blocks = r.integer(h[0], 0, max_file_count, "the number of node blocks");
     for (long b = 0; b < n_blocks; ++b)
     {
       const auto block = r.numbers(4); // dim entity parametric n
       AssertThrow(block[2] == 0,
                   ExcMessage(r.where() + "parametric nodes are not supported"));
-      const long n = r.integer(block[3], 0, max_count, "the number of nodes");
+      const long n = r.integer(block[3], 0, max_file_count, "the number of nodes");
       std::vector<long> tags;
       for (long i = 0; i < n; ++i)
-        tags.push_back(r.integer(r.numbers(1)[0], 0, max_count, "the node tag"));
+        tags.push_back(r.integer(r.numbers(1)[0], 0, max_file_count, "the node tag"));
       for (long i = 0; i < n; ++i)
       {
         const auto x = r.numbers(3);
@@ -233,9 +233,9 @@ private:
   /** A line (type 1) or point (type 15) element of the @p physicals groups. */
   void add_element(const int type, const std::vector<int> &physicals, const double *nodes)
   {
-    const long a = r.integer(nodes[0], 0, max_count, "the element's node tag");
+    const long a = r.integer(nodes[0], 0, max_file_count, "the element's node tag");
     const long b =
-        type == 1 ? r.integer(nodes[1], 0, max_count, "the element's node tag") : a;
+        type == 1 ? r.integer(nodes[1], 0, max_file_count, "the element's node tag") : a;
     for (const int p : physicals)
     {
       if (type == 1)
@@ -249,12 +249,13 @@ private:
   {
     if (version < 4.)
     {
-      const long n = r.integer(r.numbers(1)[0], 0, max_count, "the number of elements");
+      const long n =
+          r.integer(r.numbers(1)[0], 0, max_file_count, "the number of elements");
       for (long i = 0; i < n; ++i)
       {
         const auto v = r.numbers(3); // id type ntags tags... nodes...
         const int type = r.integer(v[1], -max_tag, max_tag, "the element type");
-        const long ntags = r.integer(v[2], 0, max_count, "the number of tags");
+        const long ntags = r.integer(v[2], 0, max_file_count, "the number of tags");
         const std::size_t nn = type == 1 ? 2 : (type == 15 ? 1 : 0);
         AssertThrow(v.size() >= 3 + ntags + nn,
                     ExcMessage(r.where() + "truncated element"));
@@ -267,14 +268,15 @@ private:
       return;
     }
     const auto h = r.numbers(4);
-    const long n_blocks = r.integer(h[0], 0, max_count, "the number of element blocks");
+    const long n_blocks =
+        r.integer(h[0], 0, max_file_count, "the number of element blocks");
     for (long b = 0; b < n_blocks; ++b)
     {
       const auto block = r.numbers(4); // dim entity type n
       const int dim = r.integer(block[0], 0, 3, "the entity dimension"),
                 entity = r.integer(block[1], -max_tag, max_tag, "the entity tag"),
                 type = r.integer(block[2], -max_tag, max_tag, "the element type");
-      const long n = r.integer(block[3], 0, max_count, "the number of elements");
+      const long n = r.integer(block[3], 0, max_file_count, "the number of elements");
       const auto &physicals = entity_physicals[dim][entity];
       for (long i = 0; i < n; ++i)
       {

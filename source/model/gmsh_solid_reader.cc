@@ -20,7 +20,6 @@ namespace hati
 namespace
 {
 /** Largest count or tag accepted (-). */
-constexpr long max_count = 1000000000000L;
 
 /** The Gmsh element types skipped (boundary entities) and their node counts. */
 const std::map<long, unsigned int> skipped_types = {{15, 1}, {1, 2}, {2, 3}, {3, 4}};
@@ -166,25 +165,25 @@ void HexahedronReader::read_nodes()
   };
   if (version < 3.)
   {
-    const long n = integer(numbers(1)[0], 0, max_count, "the number of nodes");
+    const long n = integer(numbers(1)[0], 0, max_file_count, "the number of nodes");
     for (long i = 0; i < n; ++i)
     {
       const auto v = numbers(4);
-      add(integer(v[0], 1, max_count, "a node tag"), v, 1);
+      add(integer(v[0], 1, max_file_count, "a node tag"), v, 1);
     }
   }
   else
   {
     const auto h = numbers(4); // blocks, nodes, smallest and largest tag
-    const long n_blocks = integer(h[0], 0, max_count, "the number of node blocks");
-    const long n_nodes = integer(h[1], 0, max_count, "the number of nodes");
+    const long n_blocks = integer(h[0], 0, max_file_count, "the number of node blocks");
+    const long n_nodes = integer(h[1], 0, max_file_count, "the number of nodes");
     for (long b = 0; b < n_blocks; ++b)
     {
       // dimension, entity, parametric, nodes; the tags, then the coordinates
-      const long n = integer(numbers(4)[3], 0, max_count, "the number of nodes");
+      const long n = integer(numbers(4)[3], 0, max_file_count, "the number of nodes");
       std::vector<long> tags;
       for (long i = 0; i < n; ++i)
-        tags.push_back(integer(numbers(1)[0], 1, max_count, "a node tag"));
+        tags.push_back(integer(numbers(1)[0], 1, max_file_count, "a node tag"));
       for (long i = 0; i < n; ++i)
         add(tags[i], numbers(3), 0);
     }
@@ -201,14 +200,14 @@ void HexahedronReader::read_elements()
     fail("$Elements before $MeshFormat");
   if (version < 3.)
   {
-    const long n = integer(numbers(1)[0], 0, max_count, "the number of elements");
+    const long n = integer(numbers(1)[0], 0, max_file_count, "the number of elements");
     for (long i = 0; i < n; ++i)
     {
       // number, type, number of tags, the tags, the nodes
       const auto v = numbers(3);
       const long n_tags = integer(v[2], 0, 1000, "the number of tags");
-      add_element(integer(v[0], 0, max_count, "an element number"),
-                  integer(v[1], 0, max_count, "an element type"),
+      add_element(integer(v[0], 0, max_file_count, "an element number"),
+                  integer(v[1], 0, max_file_count, "an element type"),
                   v,
                   3 + n_tags);
     }
@@ -216,18 +215,19 @@ void HexahedronReader::read_elements()
   else
   {
     const auto h = numbers(4); // blocks, elements, smallest and largest tag
-    const long n_blocks = integer(h[0], 0, max_count, "the number of element blocks");
-    const long n_elements = integer(h[1], 0, max_count, "the number of elements");
+    const long n_blocks =
+        integer(h[0], 0, max_file_count, "the number of element blocks");
+    const long n_elements = integer(h[1], 0, max_file_count, "the number of elements");
     long read = 0;
     for (long b = 0; b < n_blocks; ++b)
     {
       const auto block = numbers(4); // dimension, entity, type, elements
-      const long type = integer(block[2], 0, max_count, "an element type");
-      const long n = integer(block[3], 0, max_count, "the number of elements");
+      const long type = integer(block[2], 0, max_file_count, "an element type");
+      const long n = integer(block[3], 0, max_file_count, "the number of elements");
       for (long i = 0; i < n; ++i, ++read)
       {
         const auto v = numbers(1);
-        add_element(integer(v[0], 0, max_count, "an element tag"), type, v, 1);
+        add_element(integer(v[0], 0, max_file_count, "an element tag"), type, v, 1);
       }
     }
     if (read != n_elements)
@@ -282,7 +282,7 @@ void HexahedronReader::add_element(const long id,
   CellData<3> cell(8);
   for (unsigned int i = 0; i < 8; ++i)
   {
-    const long tag = integer(v[first + i], 1, max_count, "a node tag");
+    const long tag = integer(v[first + i], 1, max_file_count, "a node tag");
     const auto it = vertex_index.find(tag);
     if (it == vertex_index.end())
       fail(element + ": node " + std::to_string(tag) + " is not in $Nodes");

@@ -15,9 +15,12 @@ namespace hati
 {
 namespace
 {
-using Solid = SolidDescription::Solid;
+using SolidItem = SolidDescription::Solid;
 
-std::string where(const Solid &s) { return "Model/Frame/Solids: solid '" + s.name + "'"; }
+std::string where(const SolidItem &s)
+{
+  return "Model/Frame/Solids: solid '" + s.name + "'";
+}
 
 /** @p n equal steps of the interval of length @p length. */
 void add_steps(std::vector<double> &steps, const double length, const double size)
@@ -28,7 +31,7 @@ void add_steps(std::vector<double> &steps, const double length, const double siz
 }
 
 /** The cell sizes along the girder's axis and which slabs are diaphragms. */
-void axial_steps(const Solid &s,
+void axial_steps(const SolidItem &s,
                  const double length,
                  std::vector<double> &steps,
                  std::vector<bool> &diaphragm)
@@ -64,7 +67,7 @@ void axial_steps(const Solid &s,
   }
 }
 
-void create_box(const Solid &s, Triangulation<3> &t)
+void create_box(const SolidItem &s, Triangulation<3> &t)
 {
   check_memory_estimate(where(s),
                         double(s.cells[0]) * s.cells[1] * s.cells[2],
@@ -82,7 +85,7 @@ void create_box(const Solid &s, Triangulation<3> &t)
  * built, since a tiny element size or diaphragm spacing would fill the
  * memory with steps first.
  */
-double girder_cells_bound(const Solid &s, const double length)
+double girder_cells_bound(const SolidItem &s, const double length)
 {
   const auto across = [&](const double inner)
   { return 2. + std::max(1., std::round(inner / s.element_size)); };
@@ -93,7 +96,7 @@ double girder_cells_bound(const Solid &s, const double length)
          across(s.height - 2. * s.flange_thickness);
 }
 
-void create_box_girder(const Solid &s, Triangulation<3> &t)
+void create_box_girder(const SolidItem &s, Triangulation<3> &t)
 {
   const double length = s.x0.distance(s.x1);
   const double bound = girder_cells_bound(s, length);
@@ -151,7 +154,7 @@ void create_box_girder(const Solid &s, Triangulation<3> &t)
 
 } // namespace
 
-Tensor<2, 3> solid_local_axes(const Solid &s)
+Tensor<2, 3> solid_local_axes(const SolidItem &s)
 {
   if (s.kind != "box girder")
   {
@@ -174,7 +177,7 @@ void create_solid_mesh(const SolidDescription &description,
 {
   for (unsigned int k = 0; k < description.solids.size(); ++k)
   {
-    const Solid &s = description.solids[k];
+    const SolidItem &s = description.solids[k];
     Triangulation<3> part;
     if (s.kind == "box")
       create_box(s, part);

@@ -11,6 +11,10 @@
 
 namespace hati
 {
+/** The largest count or tag accepted from a mesh file (Gmsh): a guard
+ * against absurd values, which are refused with the entry named. */
+constexpr long max_file_count = 1000000000000L;
+
 /**
  * Check, with stat() and without opening it, that @p path names a regular
  * file (or a symbolic link to one) before an input file is read: opening a

@@ -13,6 +13,9 @@
 
 namespace hati
 {
+/** The bridge crane's parameter subsection, as its messages name it. */
+inline const std::string bridge_crane_where = "Model/Bridge crane/";
+
 /**
  * A parametric double-girder overhead travelling (bridge) crane, generated
  * as a Frame description (doc/user_guide.md "Bridge crane"): two box girders

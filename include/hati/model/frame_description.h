@@ -14,6 +14,9 @@
 
 namespace hati
 {
+/** The labels of a frame node's six DoFs, in their order. */
+inline constexpr const char *dof_component_labels[6] = {"x", "y", "z", "rx", "ry", "rz"};
+
 using namespace dealii;
 
 /**
