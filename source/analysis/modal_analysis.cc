@@ -489,7 +489,8 @@ ModalResult compute_modes(const DiscreteSystem &system,
                           const unsigned int n_modes,
                           const bool close_contacts,
                           const Vector<double> *rope_state,
-                          const std::string &linear_solver)
+                          const std::string &linear_solver,
+                          const std::vector<unsigned int> *held)
 {
   const unsigned int n = system.n_dofs();
   AssertThrow(system.fixed.size() == n,
@@ -502,10 +503,15 @@ ModalResult compute_modes(const DiscreteSystem &system,
 
   // closed contacts (doc/theory.md 7.3): K_r = T^T K T, M_r = T^T M T on the
   // full numbering, the eliminated (slave) DoFs held like fixed ones
-  const ContactElimination elimination =
+  ContactElimination elimination =
       close_contacts ? ContactElimination(system) : ContactElimination();
   result.n_closed_contacts = elimination.n_closed;
   result.n_constraints = elimination.slaves.size();
+  // held DoFs: slaves of nothing, U_s = 0
+  if (held)
+    for (const unsigned int i : *held)
+      if (!system.fixed[i])
+        elimination.slaves.emplace(i, std::vector<std::pair<unsigned int, double>>());
   std::vector<bool> fixed = system.fixed;
   SparsityPattern condensed_pattern;
   SparseMatrix<double> K_condensed, M_condensed;
