@@ -6,6 +6,7 @@
 
 #include <hati/analysis/craig_bampton.h>
 #include <hati/analysis/modal_analysis.h>
+#include <hati/analysis/row_elimination.h>
 #include <hati/linear_algebra/direct_solver.h>
 
 #include <algorithm>
@@ -30,29 +31,31 @@ void apply_mass(const DiscreteSystem &system, const Vector<double> &x, Vector<do
 }
 } // namespace
 
-CraigBamptonReduction::CraigBamptonReduction(
-    const DiscreteSystem &system,
-    const std::vector<unsigned int> &boundary_dofs,
-    const CraigBamptonSettings &settings)
-    : boundary(boundary_dofs)
+std::vector<SparseRow> unit_rows(const std::vector<unsigned int> &dofs)
+{
+  std::vector<SparseRow> rows(dofs.size());
+  for (unsigned int k = 0; k < dofs.size(); ++k)
+  {
+    rows[k].dofs = {dofs[k]};
+    rows[k].coefficients = {1.};
+  }
+  return rows;
+}
+
+CraigBamptonReduction::CraigBamptonReduction(const DiscreteSystem &system,
+                                             const std::vector<SparseRow> &boundary_rows,
+                                             const CraigBamptonSettings &settings)
+    : boundary(boundary_rows)
 {
   const auto start = std::chrono::steady_clock::now();
-  const unsigned int n = system.n_dofs();
   AssertThrow(system.has_stiffness(),
               ExcMessage(where + "Implicit reduction = Craig-Bampton: the implicit part "
                                  "has no stiffness matrix to reduce."));
   AssertThrow(system.ropes.empty() && system.contacts.empty(),
               ExcMessage(where + "Implicit reduction = Craig-Bampton reduces a linear "
                                  "part: the implicit part holds ropes or contacts."));
-  std::vector<bool> seen(n, false);
-  for (const unsigned int b : boundary)
-  {
-    AssertThrow(b < n && !system.fixed[b] && !seen[b],
-                ExcMessage(where + "Implicit reduction: the boundary DoF " +
-                           std::to_string(b) + " is out of range, fixed or repeated."));
-    seen[b] = true;
-  }
-  add_constraint_modes(system, direct_solver_package(settings.linear_solver, n));
+  add_constraint_modes(system,
+                       direct_solver_package(settings.linear_solver, system.n_dofs()));
   add_fixed_interface_modes(system, settings);
   assemble_reduced_matrices(system);
   seconds =
@@ -62,43 +65,71 @@ CraigBamptonReduction::CraigBamptonReduction(
 void CraigBamptonReduction::add_constraint_modes(const DiscreteSystem &system,
                                                  const std::string &package)
 {
-  const unsigned int n = system.n_dofs();
-  std::vector<bool> is_boundary(n, false);
-  for (const unsigned int b : boundary)
-    is_boundary[b] = true;
-  // K_ii on the full numbering: boundary rows and columns keep only their
-  // diagonal (like the fixed DoFs, which the system holds so already)
-  SparseMatrix<double> K_ii(system.stiffness_pattern);
-  K_ii.copy_from(system.stiffness);
-  for (unsigned int i = 0; i < n; ++i)
-    for (auto it = K_ii.begin(i); it != K_ii.end(i); ++it)
-      if ((is_boundary[i] || is_boundary[it->column()]) && it->column() != i)
-        it->value() = 0.;
-  DirectSolver solver(package);
-  solver.factorize(
-      K_ii,
-      where + "Implicit reduction = Craig-Bampton: " + package +
-          " found a zero pivot in K_ii (the implicit part without its "
-          "boundary DoFs moves as a rigid body: hold it or add boundary DoFs).");
-  // Psi_j = -K_ii^-1 K_ib e_j, and 1 at the boundary DoF itself (K symmetric:
-  // column j of K is its row j)
-  for (const unsigned int j : boundary)
+  const unsigned int n = system.n_dofs(), nb = boundary.size();
+  // L U = g with g_k a virtual DoF n + k (RowElimination): U = U_p(g) + T_0 v
+  RowElimination elimination;
+  for (unsigned int k = 0; k < nb; ++k)
   {
-    Vector<double> rhs(n), psi(n);
-    for (auto it = system.stiffness.begin(j); it != system.stiffness.end(j); ++it)
-      if (!is_boundary[it->column()] && !system.fixed[it->column()])
-        rhs[it->column()] = -it->value();
-    solver.solve(psi, rhs);
-    // one step of iterative refinement: the thin plates' K_ii is ill
-    // conditioned (round-off ~ cond(K_ii) eps after one solve)
-    Vector<double> residual(n), correction(n);
-    K_ii.vmult(residual, psi);
+    SparseRow row = boundary[k];
+    for (const auto i : row.dofs)
+      AssertThrow(i < n,
+                  ExcMessage(where + "Implicit reduction: a boundary row refers to DoF " +
+                             std::to_string(i) + " of a part with " + std::to_string(n)));
+    row.dofs.push_back(n + k);
+    row.coefficients.push_back(-1.);
+    const std::size_t before = elimination.slaves.size();
+    elimination.eliminate(system.fixed, row, false, n);
+    AssertThrow(elimination.slaves.size() == before + 1,
+                ExcMessage(where + "Implicit reduction: boundary row " +
+                           std::to_string(k) +
+                           " depends on the others or only on fixed DoFs: the interface "
+                           "of the implicit part holds a DoF twice."));
+  }
+  // the stiffness on L U = 0, the slaves held like fixed DoFs
+  std::vector<double> diagonal(n, 1.);
+  for (const auto &entry : elimination.slaves)
+    if (system.stiffness.diag_element(entry.first) > 0.)
+      diagonal[entry.first] = system.stiffness.diag_element(entry.first);
+  SparsityPattern pattern;
+  SparseMatrix<double> K_0;
+  elimination.condense(system.stiffness, diagonal, pattern, K_0);
+  DirectSolver solver(package);
+  solver.factorize(K_0,
+                   where + "Implicit reduction = Craig-Bampton: " + package +
+                       " found a zero pivot in the stiffness held at the boundary (the "
+                       "implicit part moves as a rigid body with its interface held: "
+                       "add supports or interface rows).");
+  for (unsigned int k = 0; k < nb; ++k)
+  {
+    // the particular part U_p (g = e_k, masters 0), then T_0^T K T_0 v = -T_0^T K U_p
+    Vector<double> x(n + nb);
+    x[n + k] = 1.;
+    elimination.distribute(x);
+    Vector<double> U_p(n), rhs(n), v(n), residual(n), correction(n);
+    for (unsigned int i = 0; i < n; ++i)
+      U_p[i] = x[i];
+    system.stiffness.vmult(rhs, U_p);
+    rhs *= -1.;
+    elimination.transpose_apply(rhs);
+    for (unsigned int i = 0; i < n; ++i)
+      if (system.fixed[i])
+        rhs[i] = 0.;
+    solver.solve(v, rhs);
+    // one step of iterative refinement: thin plates make K ill conditioned
+    K_0.vmult(residual, v);
     residual.sadd(-1., rhs);
     solver.solve(correction, residual);
-    psi += correction;
-    for (const unsigned int b : boundary)
-      psi[b] = 0.;
-    psi[j] = 1.;
+    v += correction;
+    for (const auto &entry : elimination.slaves)
+      v[entry.first] = 0.;
+    x = 0.;
+    for (unsigned int i = 0; i < n; ++i)
+      x[i] = v[i];
+    x[n + k] = 1.;
+    elimination.distribute(x);
+    Vector<double> psi(n);
+    for (unsigned int i = 0; i < n; ++i)
+      psi[i] = x[i];
     columns.push_back(std::move(psi));
   }
 }
@@ -108,6 +139,7 @@ void CraigBamptonReduction::add_fixed_interface_modes(
 {
   const unsigned int n_free_interior =
       std::count(system.fixed.begin(), system.fixed.end(), false) - boundary.size();
+  // the rows were found independent (add_constraint_modes()): each holds one DoF
   const unsigned int limit = std::min(settings.maximum_modes, n_free_interior);
   if (limit == 0)
     return;

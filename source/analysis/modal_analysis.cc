@@ -28,6 +28,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <hati/analysis/modal_analysis.h>
+#include <hati/analysis/row_elimination.h>
 #include <hati/linear_algebra/direct_solver.h>
 
 #include <algorithm>
@@ -183,161 +184,6 @@ std::vector<Eigenpair> arpack_modes(const SparseMatrix<double> &K,
 }
 
 /**
- * The closed contacts as a linear map `U = T q` (doc/theory.md 7.3): every
- * zero-gap contact row with a free DoF is a bilateral constraint `L_k U =
- * 0`. Gaussian elimination row by row with partial pivoting: the row, with
- * the earlier slaves substituted, loses its largest entry's DoF (the slave),
- * which is then a combination of the remaining DoFs; rows that vanish after
- * the substitution (an opposite row of a two-sided contact, dependent rows)
- * are redundant. Fixed DoFs are zero and drop out of the rows.
- */
-struct ContactElimination
-{
-  /** Per slave DoF: the masters and coefficients, `U_s = sum_j c_j U_j`. */
-  std::map<unsigned int, std::vector<std::pair<unsigned int, double>>> slaves;
-  /** Closed rows, independent ones and redundant ones. */
-  unsigned int n_closed = 0, n_redundant = 0;
-
-  ContactElimination() = default;
-
-  explicit ContactElimination(const DiscreteSystem &system)
-  {
-    for (const ContactRow &row : system.contacts)
-    {
-      if (row.initial_gap != 0.)
-        continue; // open: a contact with a positive gap does not act on small vibrations
-      eliminate(system.fixed, row, true);
-      // a closed contact with friction sticks: it also holds its tangent
-      // directions (A9, doc/theory.md A9), not a rolling axis
-      if (row.frictional())
-        for (const SparseRow &tangent : row.tangents)
-          eliminate(system.fixed, tangent, false);
-    }
-  }
-
-  /**
-   * Eliminate the constraint `row U = 0` (see the class); @p count: a
-   * contact row (n_closed, n_redundant), not a tangent row of friction.
-   */
-  void eliminate(const std::vector<bool> &fixed, const SparseRow &row, const bool count)
-  {
-    {
-      std::map<unsigned int, double> a;
-      double scale = 0.;
-      for (unsigned int j = 0; j < row.dofs.size(); ++j)
-      {
-        const unsigned int dof = row.dofs[j];
-        const double c = row.coefficients[j];
-        if (fixed[dof] || c == 0.)
-          continue;
-        scale = std::max(scale, std::abs(c));
-        const auto slave = slaves.find(dof);
-        if (slave == slaves.end())
-          a[dof] += c;
-        else
-          for (const auto &[master, cm] : slave->second)
-            a[master] += c * cm;
-      }
-      if (scale == 0.)
-        return; // only fixed DoFs: nothing to hold
-      n_closed += count ? 1 : 0;
-      unsigned int pivot = numbers::invalid_unsigned_int;
-      double largest = 0.;
-      for (const auto &[dof, c] : a)
-        if (std::abs(c) > 1e-12 * scale && std::abs(c) > largest)
-        {
-          largest = std::abs(c);
-          pivot = dof;
-        }
-      if (pivot == numbers::invalid_unsigned_int)
-      {
-        n_redundant += count ? 1 : 0;
-        return;
-      }
-      std::vector<std::pair<unsigned int, double>> expression;
-      for (const auto &[dof, c] : a)
-        if (dof != pivot && std::abs(c) > 1e-12 * scale)
-          expression.emplace_back(dof, -c / a[pivot]);
-      // earlier slaves that depend on the new slave
-      for (auto &[s, terms] : slaves)
-      {
-        std::map<unsigned int, double> merged;
-        bool depends = false;
-        for (const auto &[master, c] : terms)
-          if (master == pivot)
-          {
-            depends = true;
-            for (const auto &[m, cm] : expression)
-              merged[m] += c * cm;
-          }
-          else
-            merged[master] += c;
-        if (depends)
-          terms.assign(merged.begin(), merged.end());
-      }
-      slaves[pivot] = expression;
-    }
-  }
-
-  /**
-   * `T^T A T` on the full numbering: rows and columns of slaves keep only
-   * their diagonal entry @p slave_diagonal[s] (so that they act as fixed
-   * DoFs), other entries collect the contributions of the slaves.
-   */
-  void condense(const SparseMatrix<double> &A,
-                const std::vector<double> &slave_diagonal,
-                SparsityPattern &pattern,
-                SparseMatrix<double> &result) const
-  {
-    const unsigned int n = A.m();
-    auto expansion = [&](const unsigned int i)
-    {
-      const auto s = slaves.find(i);
-      return s == slaves.end() ? std::vector<std::pair<unsigned int, double>>{{i, 1.}}
-                               : s->second;
-    };
-    if (pattern.n_rows() == 0)
-    {
-      DynamicSparsityPattern dsp(n, n);
-      for (unsigned int i = 0; i < n; ++i)
-      {
-        dsp.add(i, i);
-        const auto ei = expansion(i);
-        for (auto it = A.begin(i); it != A.end(i); ++it)
-          for (const auto &[p, cp] : ei)
-            for (const auto &[q, cq] : expansion(it->column()))
-              dsp.add(p, q);
-      }
-      pattern.copy_from(dsp);
-    }
-    result.reinit(pattern);
-    for (unsigned int i = 0; i < n; ++i)
-    {
-      const auto ei = expansion(i);
-      for (auto it = A.begin(i); it != A.end(i); ++it)
-        if (it->value() != 0.)
-          for (const auto &[p, cp] : ei)
-            for (const auto &[q, cq] : expansion(it->column()))
-              result.add(p, q, cp * it->value() * cq);
-    }
-    for (const auto &entry : slaves)
-      result.set(entry.first, entry.first, slave_diagonal[entry.first]);
-  }
-
-  /** Back-substitution `U = T q`: the slaves from their masters. */
-  void distribute(Vector<double> &phi) const
-  {
-    for (const auto &[s, terms] : slaves)
-    {
-      double value = 0.;
-      for (const auto &[master, c] : terms)
-        value += c * phi[master];
-      phi[s] = value;
-    }
-  }
-};
-
-/**
  * K and M of the eigenproblem on one pattern (a diagonal one for a model
  * without stiffness; M the consistent mass if the system has one, else the
  * lumped diagonal). Fixed DoFs: K keeps a positive diagonal, M rows and
@@ -490,7 +336,7 @@ ModalResult compute_modes(const DiscreteSystem &system,
                           const bool close_contacts,
                           const Vector<double> *rope_state,
                           const std::string &linear_solver,
-                          const std::vector<unsigned int> *held)
+                          const std::vector<SparseRow> *held)
 {
   const unsigned int n = system.n_dofs();
   AssertThrow(system.fixed.size() == n,
@@ -503,15 +349,12 @@ ModalResult compute_modes(const DiscreteSystem &system,
 
   // closed contacts (doc/theory.md 7.3): K_r = T^T K T, M_r = T^T M T on the
   // full numbering, the eliminated (slave) DoFs held like fixed ones
-  ContactElimination elimination =
-      close_contacts ? ContactElimination(system) : ContactElimination();
+  RowElimination elimination = close_contacts ? RowElimination(system) : RowElimination();
   result.n_closed_contacts = elimination.n_closed;
   result.n_constraints = elimination.slaves.size();
-  // held DoFs: slaves of nothing, U_s = 0
   if (held)
-    for (const unsigned int i : *held)
-      if (!system.fixed[i])
-        elimination.slaves.emplace(i, std::vector<std::pair<unsigned int, double>>());
+    for (const SparseRow &row : *held)
+      elimination.eliminate(system.fixed, row, false);
   std::vector<bool> fixed = system.fixed;
   SparsityPattern condensed_pattern;
   SparseMatrix<double> K_condensed, M_condensed;

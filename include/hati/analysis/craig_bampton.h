@@ -4,6 +4,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <hati/contact/sparse_rows.h>
 #include <hati/model/discrete_system.h>
 
 #include <string>
@@ -12,6 +13,9 @@
 namespace hati
 {
 using namespace dealii;
+
+/** One unit row per DoF of @p dofs: DoFs as boundary rows of a reduction. */
+std::vector<SparseRow> unit_rows(const std::vector<unsigned int> &dofs);
 
 /** What a Craig-Bampton reduction keeps (CraigBamptonReduction). */
 struct CraigBamptonSettings
@@ -29,17 +33,20 @@ struct CraigBamptonSettings
 };
 
 /**
- * The Craig-Bampton reduction of a linear system (C1, doc/theory.md 12.1):
- * boundary DoFs `b` (given: the interface DoFs of the implicit part), the
- * free DoFs `i` that remain, the constraint modes `Psi = -K_ii^-1 K_ib` (one
- * static solve per boundary DoF with one factorisation of `K_ii`), the
- * fixed-interface modes `K_ii phi = omega^2 M_ii phi` up to the cut-off
- * (shift-invert Lanczos, compute_modes() with the boundary held), the basis
- * `T = [[I, 0], [Psi, Phi]]` and the dense reduced matrices `M_r = T^T M T`,
- * `K_r = T^T K T`. Reduced coordinates `q = (u_b, eta)`: the boundary
- * displacements first, then the modal amplitudes. Fixed DoFs are zero in
- * every column. Exact for static loads at the boundary; below the cut-off
- * the dynamics are those of the unreduced system up to the truncation.
+ * The Craig-Bampton reduction of a linear system (C1, doc/theory.md 12.1)
+ * on boundary rows `g_k = L_k U` (the implicit side's interface rows of
+ * G3'': one row a DoF for a Boolean interface, six rows for a tie whatever
+ * its face; a unit row holds a DoF with a point load): the constraint modes
+ * `Psi_k`, the static displacements with `L Psi_k = e_k` and no other load
+ * (one sparse solve each with one factorisation of the stiffness
+ * condensed on `L U = 0`), the fixed-interface modes `K phi = omega^2 M phi`
+ * on `L phi = 0` up to the cut-off (shift-invert Lanczos, compute_modes()
+ * with the rows held), the basis `T = [Psi, Phi]` and the dense reduced
+ * matrices `M_r = T^T M T`, `K_r = T^T K T`. Reduced coordinates `q = (g,
+ * eta)`: the boundary values first, then the modal amplitudes; an interface
+ * force `L^T Lambda` reduces to `(Lambda, 0)`. Fixed DoFs are zero in every
+ * column. Exact for static loads `L^T f`; below the cut-off the dynamics are
+ * those of the unreduced system up to the truncation.
  *
  * The system's consistent mass is used if it has one, else its lumped mass.
  */
@@ -47,23 +54,24 @@ class CraigBamptonReduction
 {
 public:
   /**
-   * Reduce @p system with the boundary DoFs @p boundary (indices into the
-   * system, none fixed, no duplicates) as @p settings say. Throws ExcMessage
-   * when the cut-off needs more than settings.maximum_modes modes, naming
-   * `Model/Decomposition/Reduction maximum modes`.
+   * Reduce @p system on the boundary rows @p boundary (over its DoFs,
+   * linearly independent on its free DoFs) as @p settings say. Throws
+   * ExcMessage for dependent rows, and when the cut-off needs more than
+   * settings.maximum_modes modes, naming `Model/Decomposition/Reduction
+   * maximum modes`.
    */
   CraigBamptonReduction(const DiscreteSystem &system,
-                        const std::vector<unsigned int> &boundary,
+                        const std::vector<SparseRow> &boundary,
                         const CraigBamptonSettings &settings);
 
-  /** Number of boundary DoFs (-). */
+  /** Number of boundary rows (-). */
   unsigned int n_boundary() const { return boundary.size(); }
   /** Number of fixed-interface modes kept (-). */
   unsigned int n_modes() const { return modal_frequencies.size(); }
   /** Number of reduced coordinates, boundary DoFs plus modes (-). */
   unsigned int size() const { return columns.size(); }
-  /** The boundary DoFs, in the order of the reduced coordinates. */
-  const std::vector<unsigned int> &boundary_dofs() const { return boundary; }
+  /** The boundary rows, in the order of the reduced coordinates. */
+  const std::vector<SparseRow> &boundary_rows() const { return boundary; }
 
   /** `M_r = T^T M T` (kg, kg m, ... per pair of coordinates). */
   const FullMatrix<double> &mass() const { return reduced_mass; }
@@ -95,13 +103,13 @@ public:
   double set_up_time() const { return seconds; }
 
 private:
-  std::vector<unsigned int> boundary;
+  std::vector<SparseRow> boundary;
   std::vector<Vector<double>> columns;
   std::vector<double> modal_frequencies;
   FullMatrix<double> reduced_mass, reduced_stiffness;
   double seconds = 0.;
 
-  /** The constraint modes `Psi` (one column per boundary DoF). */
+  /** The constraint modes `Psi` (one column per boundary row). */
   void add_constraint_modes(const DiscreteSystem &system, const std::string &package);
   /** The fixed-interface modes up to the cut-off. */
   void add_fixed_interface_modes(const DiscreteSystem &system,

@@ -64,16 +64,17 @@ struct ModalResult
  *        solver` (auto, KLU, MUMPS, direct or iterative), which chooses the
  *        factorisation of the shift-invert (direct_solver_package(); with
  *        iterative, that of auto).
- * @param held DoFs held at zero besides the fixed ones (null: none): the
- *        boundary DoFs of the fixed-interface modes of a Craig-Bampton
- *        reduction (C1, doc/theory.md 12.1).
+ * @param held rows held at zero, `L U = 0`, besides the fixed DoFs (null:
+ *        none), eliminated as the closed contacts are: the boundary rows of
+ *        the fixed-interface modes of a Craig-Bampton reduction (C1,
+ *        doc/theory.md 12.1).
  */
 ModalResult compute_modes(const DiscreteSystem &system,
                           const unsigned int n_modes,
                           const bool close_contacts = true,
                           const Vector<double> *rope_state = nullptr,
                           const std::string &linear_solver = "auto",
-                          const std::vector<unsigned int> *held = nullptr);
+                          const std::vector<SparseRow> *held = nullptr);
 } // namespace hati
 
 #endif
