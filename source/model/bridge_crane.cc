@@ -357,6 +357,7 @@ void BridgeCrane::Parameters::declare_parameters(ParameterHandler &prm)
   declare_contacts_and_damping(prm);
   declare_mesh(prm);
   declare_girder_model(prm);
+  declare_heights(prm);
 }
 
 void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
@@ -490,6 +491,7 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   check_section(end_carriage_section, "End carriage section");
   check_section(trolley_section, "Trolley section");
   parse_girder_model(prm);
+  parse_heights(prm);
   if (girder_model == "solid")
     check_section(rail_section, "Rail section");
   if (!(mass_bridge() <= max_structure_mass))
@@ -509,18 +511,22 @@ double BridgeCrane::Parameters::mass_bridge() const
   const double girders = girder_model == "solid"
                              ? 2. * solid_girder_volume()
                              : 2. * section_area(girder_section, "Girder section") * span;
-  return rho *
-             (girders + 2. * section_area(end_carriage_section, "End carriage section") *
-                            end_carriage_wheelbase) +
-         2. * rail_mass_per_metre * span;
+  const double m =
+      rho * (girders + 2. * section_area(end_carriage_section, "End carriage section") *
+                           end_carriage_wheelbase) +
+      2. * rail_mass_per_metre * span;
+  // the crane wheel and rail posts of the true heights
+  return eccentricities ? m + offset_mass(true) : m;
 }
 
 double BridgeCrane::Parameters::mass_trolley() const
 {
   // frame: two sides (wheelbase), two ends and the hoist beam (gauge)
-  return rho * section_area(trolley_section, "Trolley section") *
-             (2. * trolley_wheelbase + 3. * girder_spacing) +
-         trolley_mass + hoist_mass;
+  const double m = rho * section_area(trolley_section, "Trolley section") *
+                       (2. * trolley_wheelbase + 3. * girder_spacing) +
+                   trolley_mass + hoist_mass;
+  // the trolley wheel posts of the true heights
+  return eccentricities ? m + offset_mass(false) : m;
 }
 
 BridgeCrane::BridgeCrane(const Parameters &parameters)
@@ -605,6 +611,16 @@ DecompositionParameters BridgeCrane::default_decomposition() const
                "trolley_end_2",
                "trolley_beam_1",
                "trolley_beam_2"};
+  // the true heights' posts where the wheels are explicit (add_offsets())
+  for (unsigned int k = 1; k <= 4 && crane.eccentricities; ++k)
+  {
+    const std::string n = std::to_string(k);
+    d.members.push_back("trolley_wheel_post_" + n);
+    if (crane.girder_model != "solid")
+      d.members.push_back("rail_post_" + n);
+    if (crane.crane_wheels == "contacts")
+      d.members.push_back("crane_wheel_post_" + n);
+  }
   return d;
 }
 

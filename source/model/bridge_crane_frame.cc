@@ -134,10 +134,13 @@ void add_end_carriages(const CraneParameters &p, FrameDescription &f)
     for (unsigned int i = 0; i < xs.size(); ++i)
     {
       std::string name = "end_carriage_" + std::to_string(c) + "_" + std::to_string(i);
+      // with eccentricities the crane wheels' nodes cw<k> lie on the rail
+      // head below these (add_offsets())
+      const std::string axis = p.eccentricities ? "_axis" : "";
       if (i == 0)
-        name = "cw" + std::to_string(2 * c - 1);
+        name = "cw" + std::to_string(2 * c - 1) + axis;
       else if (i + 1 == xs.size())
-        name = "cw" + std::to_string(2 * c);
+        name = "cw" + std::to_string(2 * c) + axis;
       else if (i == joint_1)
         name = "joint_1_" + std::to_string(c);
       else if (i == joint_2)
@@ -174,6 +177,9 @@ void add_girders(const CraneParameters &p, FrameDescription &f)
   // the rail nodes' stations, found once (not a search per station)
   const unsigned int rail_1 = station_index(ys, y1), rail_2 = station_index(ys, y2);
   const std::string prefix = solid ? "trolley_rail_" : "girder_";
+  // beam girders with eccentricities: the girder node under a trolley wheel
+  // is rail_<k>_axis, rail_<k> is the rail head above it (add_offsets())
+  const std::string axis = p.eccentricities && !solid ? "_axis" : "";
   for (unsigned int g = 1; g <= 2; ++g)
   {
     std::vector<std::string> path;
@@ -185,9 +191,9 @@ void add_girders(const CraneParameters &p, FrameDescription &f)
       else if (i + 1 == ys.size() && !solid)
         name = "joint_" + std::to_string(g) + "_2";
       else if (i == rail_1)
-        name = "rail_" + std::to_string(2 * g - 1);
+        name = "rail_" + std::to_string(2 * g - 1) + axis;
       else if (i == rail_2)
-        name = "rail_" + std::to_string(2 * g);
+        name = "rail_" + std::to_string(2 * g) + axis;
       else
         add_node(f, name, g == 1 ? -a : a, ys[i], zr);
       path.push_back(name);
@@ -207,8 +213,8 @@ void add_girders(const CraneParameters &p, FrameDescription &f)
       if (p.rail_mass_per_metre > 0.)
         add_point_mass(f, name, p.rail_mass_per_metre * tributary);
     }
-    add_node(f, "rail_" + std::to_string(2 * g - 1), g == 1 ? -a : a, y1, zr);
-    add_node(f, "rail_" + std::to_string(2 * g), g == 1 ? -a : a, y2, zr);
+    add_node(f, "rail_" + std::to_string(2 * g - 1) + axis, g == 1 ? -a : a, y1, zr);
+    add_node(f, "rail_" + std::to_string(2 * g) + axis, g == 1 ? -a : a, y2, zr);
     if (solid)
       add_path_member(f, "trolley_rail_" + std::to_string(g), path, "rail");
     else
@@ -225,12 +231,17 @@ void add_trolley(const CraneParameters &p, FrameDescription &f)
 {
   const double S = p.span, a = 0.5 * p.girder_spacing, yc = p.trolley_position * S,
                y1 = yc - 0.5 * p.trolley_wheelbase, y2 = yc + 0.5 * p.trolley_wheelbase;
-  // above the rails (the girder axes for beam girders)
-  const double zt = p.rail_height() + BridgeCrane::trolley_height;
-  add_node(f, "tw1", -a, y1, zt);
-  add_node(f, "tw2", -a, y2, zt);
-  add_node(f, "tw3", a, y1, zt);
-  add_node(f, "tw4", a, y2, zt);
+  // above the rails (the girder axes for beam girders without eccentricities;
+  // with them the frame's corners are tw<k>_frame, the wheels tw<k> on the
+  // rail heads below them, add_offsets())
+  const double zt = p.trolley_frame_height();
+  const std::string corner = p.eccentricities ? "_frame" : "";
+  const std::string tw1 = "tw1" + corner, tw2 = "tw2" + corner, tw3 = "tw3" + corner,
+                    tw4 = "tw4" + corner;
+  add_node(f, tw1, -a, y1, zt);
+  add_node(f, tw2, -a, y2, zt);
+  add_node(f, tw3, a, y1, zt);
+  add_node(f, tw4, a, y2, zt);
   add_node(f, "ts1", -a, yc, zt);
   add_node(f, "ts2", a, yc, zt);
   add_node(f, "hoist", 0., yc, zt);
@@ -249,15 +260,15 @@ void add_trolley(const CraneParameters &p, FrameDescription &f)
         1u, static_cast<unsigned int>(std::ceil(length / p.element_length - 1e-9)));
     f.members.push_back(m);
   };
-  straight("trolley_side_1a", "tw1", "ts1", 0.5 * p.trolley_wheelbase);
-  straight("trolley_side_1b", "ts1", "tw2", 0.5 * p.trolley_wheelbase);
-  straight("trolley_side_2a", "tw3", "ts2", 0.5 * p.trolley_wheelbase);
-  straight("trolley_side_2b", "ts2", "tw4", 0.5 * p.trolley_wheelbase);
-  straight("trolley_end_1", "tw1", "tw3", p.girder_spacing);
-  straight("trolley_end_2", "tw2", "tw4", p.girder_spacing);
+  straight("trolley_side_1a", tw1, "ts1", 0.5 * p.trolley_wheelbase);
+  straight("trolley_side_1b", "ts1", tw2, 0.5 * p.trolley_wheelbase);
+  straight("trolley_side_2a", tw3, "ts2", 0.5 * p.trolley_wheelbase);
+  straight("trolley_side_2b", "ts2", tw4, 0.5 * p.trolley_wheelbase);
+  straight("trolley_end_1", tw1, tw3, p.girder_spacing);
+  straight("trolley_end_2", tw2, tw4, p.girder_spacing);
   straight("trolley_beam_1", "ts1", "hoist", a);
   straight("trolley_beam_2", "hoist", "ts2", a);
-  for (const char *n : {"tw1", "tw2", "tw3", "tw4"})
+  for (const std::string &n : {tw1, tw2, tw3, tw4})
     if (p.trolley_mass > 0.)
       add_point_mass(f, n, 0.25 * p.trolley_mass);
   if (p.hoist == "rigid")
@@ -276,6 +287,61 @@ void add_trolley(const CraneParameters &p, FrameDescription &f)
   rope.stiffness = p.rope_stiffness;
   rope.rest_length = p.rope_length;
   f.ropes.push_back(rope);
+}
+
+/**
+ * Eccentricities = true: the offsets of the true heights. Each is a post,
+ * a member of one element between an axis node and the point where a wheel
+ * acts, and a rigid link that makes the post rigid:
+ * - crane wheel k: post `crane_wheel_post_<k>` (End carriage section) from
+ *   the rail head node cw<k>, End carriage height below the end carriage's
+ *   end cw<k>_axis; the link's master is cw<k>, which carries the wheel
+ *   contact and the supports of Travel = tied or Crane wheels = pinned (a
+ *   support on a rigid link's slave is refused);
+ * - beam girders, trolley rail k: post `rail_post_<k>` (Trolley section)
+ *   from the girder node rail_<k>_axis (master) up to the rail head node
+ *   rail_<k> (slave), half the girder height plus the rail above;
+ * - trolley wheel k: post `trolley_wheel_post_<k>` (Trolley section) from
+ *   the frame's corner tw<k>_frame (master) down to the wheel tw<k> (slave)
+ *   on the rail head, so that both nodes of a trolley wheel's contacts lie
+ *   at the same point (a pair of contact nodes at different heights would
+ *   put a spurious couple into every horizontal contact force).
+ * The rigid link needs both its nodes on members (FrameDescription::
+ * validate()): the posts give the offset nodes their member, and their
+ * mass (offset_mass()), the wheel blocks'.
+ */
+void add_offsets(const CraneParameters &p, FrameDescription &f)
+{
+  if (!p.eccentricities)
+    return;
+  const double S = p.span, a = 0.5 * p.girder_spacing, w = 0.5 * p.end_carriage_wheelbase,
+               yc = p.trolley_position * S, y1 = yc - 0.5 * p.trolley_wheelbase,
+               y2 = yc + 0.5 * p.trolley_wheelbase, zh = p.rail_head_height();
+  const bool solid = p.girder_model == "solid";
+  for (unsigned int k = 1; k <= 4; ++k)
+  {
+    const std::string n = std::to_string(k);
+    // wheels 1, 2 at Y = 0; odd wheels at x = -w (crane) or on girder_1 (trolley)
+    add_node(f, "cw" + n, k % 2 == 1 ? -w : w, k <= 2 ? 0. : S, -p.end_carriage_height);
+    add_path_member(
+        f, "crane_wheel_post_" + n, {"cw" + n, "cw" + n + "_axis"}, "end_carriage");
+    f.solids.rigid_links.push_back(
+        {"crane_wheel_link_" + n, "cw" + n, "cw" + n + "_axis"});
+    const double xt = k <= 2 ? -a : a, yt = k % 2 == 1 ? y1 : y2;
+    if (!solid)
+    {
+      add_node(f, "rail_" + n, xt, yt, zh);
+      add_path_member(
+          f, "rail_post_" + n, {"rail_" + n + "_axis", "rail_" + n}, "trolley");
+      f.solids.rigid_links.push_back(
+          {"rail_link_" + n, "rail_" + n + "_axis", "rail_" + n});
+    }
+    add_node(f, "tw" + n, xt, yt, zh);
+    add_path_member(
+        f, "trolley_wheel_post_" + n, {"tw" + n + "_frame", "tw" + n}, "trolley");
+    f.solids.rigid_links.push_back(
+        {"trolley_wheel_link_" + n, "tw" + n + "_frame", "tw" + n});
+  }
 }
 
 /** Supports: tied crane wheels along the runway; pinned wheels. */
@@ -358,6 +424,7 @@ FrameDescription BridgeCrane::Parameters::frame() const
   add_end_carriages(*this, f);
   add_girders(*this, f);
   add_trolley(*this, f);
+  add_offsets(*this, f);
   add_supports(*this, f);
   add_wheel_contacts(*this, f);
   f.monitor_nodes = {"hoist", "tw1", "tw2", "tw3", "tw4", "cw1", "cw2", "cw3", "cw4"};

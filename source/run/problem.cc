@@ -182,7 +182,10 @@ void Problem::prepare_transient()
             system.initial_contact_reaction[part.global_dofs[i]];
     }
   if (decomposition && system.initial_contact_reaction.size() == system.n_dofs())
+  {
     add_eliminated_contact_reactions();
+    add_explicit_link_reactions();
+  }
   const DefaultDamping defaults = model->default_damping();
   if (!damping.frequency_range() && defaults.type == "Rayleigh")
     for (const auto &entry : apply_default_damping(defaults.ratio,
@@ -356,6 +359,41 @@ void Problem::add_eliminated_contact_reactions()
       }
     ++k;
   }
+}
+
+void Problem::add_explicit_link_reactions()
+{
+  auto &E = decomposition->parts[0];
+  const unsigned int n = E.global_dofs.size();
+  // the DoFs of the explicit part's constraint rows (rigid links and ties
+  // inside it, eliminated in the whole system's static solve), not on the
+  // interface (whose rows carry the implicit part's share)
+  std::vector<bool> touched(n, false);
+  bool any = false;
+  for (const ContactRow &row : E.system.contacts)
+    if (row.constraint)
+    {
+      any = true;
+      for (const auto i : row.dofs)
+        touched[i] = true;
+    }
+  if (!any || E.system.initial_contact_reaction.size() != n)
+    return;
+  for (const SparseRow &row : decomposition->rows[0])
+    for (const auto i : row.dofs)
+      touched[i] = false;
+  // R_E = K_E U_0 - F_E - F_r(U_0) under the explicit part's loads (the
+  // lumped gravity correction of the static state): every row's force on
+  // these DoFs, the constraints' and the contacts' at once
+  Vector<double> f(E.system.constant_force), reaction(n);
+  f += E.system.lumped_gravity_correction();
+  for (const Rope &rope : E.system.ropes)
+    rope.add_force(E.system.initial_displacement, f);
+  E.system.stiffness.vmult(reaction, E.system.initial_displacement);
+  reaction -= f;
+  for (unsigned int i = 0; i < n; ++i)
+    if (touched[i] && !E.system.fixed[i])
+      E.system.initial_contact_reaction[i] = reaction[i];
 }
 
 SummaryValue Problem::report_rope_tensions(const Vector<double> &U)

@@ -119,6 +119,40 @@ public:
     /** Girder model = solid: the trolley rail's section (Model/Frame/Sections syntax). */
     std::string rail_section;
 
+    /**
+     * Model/Bridge crane/Eccentricities: the crane wheels' contact points at
+     * the runway rail head, the trolley rails' heads on the girders' top
+     * flanges, the trolley frame and the hook point at their own heights,
+     * each offset a short member joined to the axis by a rigid link
+     * (bridge_crane_heights.cc); false: every mass and wheel on the member
+     * axes, the results of the crane before the option.
+     */
+    bool eccentricities = true;
+    /** Height of the end carriages' axis above the runway rail head (m). */
+    double end_carriage_height = 0.5;
+
+    /** The entries Eccentricities and End carriage height. */
+    static void declare_heights(ParameterHandler &prm);
+    /** Parse and check the entries of declare_heights(). */
+    void parse_heights(ParameterHandler &prm);
+    /**
+     * The height of the trolley wheels' contact points above the girder
+     * axes (m): rail_height() without eccentricities; with them the rail
+     * head, half the girder height plus trolley_rail_height for beam
+     * girders, the rail beam's nodes (half the girder height) for solid
+     * ones.
+     */
+    double rail_head_height() const;
+    /** The height of the trolley frame above the girder axes (m). */
+    double trolley_frame_height() const;
+    /**
+     * The mass of the offsets' members (kg, 0 without eccentricities): the
+     * four crane wheel posts and, for beam girders, the four rail posts
+     * (part of mass_bridge()) if @p bridge, else the four trolley wheel
+     * posts (part of mass_trolley()).
+     */
+    double offset_mass(const bool bridge) const;
+
     /** The frame: nodes, members, sections, masses, supports, contacts. */
     FrameDescription frame() const;
     /** The entries of Girder model = solid (bridge_crane_girders.cc). */
@@ -235,8 +269,18 @@ public:
     return 4. * 1.0e11 * 0.583 * 0.02 * 0.02 / length;
   }
 
-  /** Height above the girder axes at which the trolley frame is drawn (m). */
+  /**
+   * Height of the trolley frame above the trolley wheels' contact points
+   * (m): above the girder axes without eccentricities, above the rail heads
+   * with them.
+   */
   static constexpr double trolley_height = 0.5;
+  /**
+   * Height of the trolley rail (m) from the top flange to its head, with
+   * Eccentricities and beam girders: the A55 crane rail's 65 mm (DIN 536,
+   * the default Rail section of the solid girders).
+   */
+  static constexpr double trolley_rail_height = 0.065;
 
 private:
   const Parameters crane;

@@ -162,6 +162,14 @@ private:
    * normal forces only.
    */
   void add_eliminated_contact_reactions();
+  /**
+   * HATI: on the DoFs of the explicit part's constraint rows (rigid links
+   * and ties inside it, which the whole system's static solve eliminates),
+   * the explicit part's initial contact reaction is its own equilibrium
+   * residual `K_E U_0 - F_E - F_r(U_0)`: the static forces of those rows and
+   * of the contacts at the same DoFs, so that the part starts at rest.
+   */
+  void add_explicit_link_reactions();
 
   /** The static contact force per contact row of the initial state (N). */
   std::vector<double> static_forces;
