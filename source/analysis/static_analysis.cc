@@ -322,6 +322,8 @@ struct StaticSolve
   const HeldRows &held;
   const std::string linear_solver, package;
   std::vector<double> *contact_forces;
+  /** Where the sticking tangents' forces go (nullptr: nowhere). */
+  std::vector<std::array<double, 2>> *tangent_forces;
   /** The centred pairs the load pushes to a side (closed_contact_forces()). */
   std::vector<PushedPair> *pushed;
   /** Their block of the inverse saddle matrix (solve_closed()). */
@@ -356,6 +358,19 @@ void solve_linear(const StaticSolve &s,
     check_static_friction(s.system, s.contacts, s.held.sticking, lambda);
     if (s.contact_forces != nullptr)
       *s.contact_forces = forces;
+    if (s.tangent_forces == nullptr)
+      return;
+    // the sticking tangents' multipliers; the held rows point into the
+    // contact's own tangents (sticking_tangents() skips the held ones)
+    s.tangent_forces->assign(s.system.contacts.size(), {{0., 0.}});
+    for (const auto &[r, first, count] : s.held.sticking)
+    {
+      const ContactRow &c = s.system.contacts[s.contacts.closed[r]];
+      for (unsigned int t = 0; t < count; ++t)
+        for (unsigned int i = 0; i < c.tangents.size() && i < 2; ++i)
+          if (s.held.rows[first + t] == &c.tangents[i])
+            (*s.tangent_forces)[s.contacts.closed[r]][i] = lambda[first + t];
+    }
     return;
   }
 
@@ -527,7 +542,8 @@ void solve_static(const DiscreteSystem &system,
                   Vector<double> &U,
                   const std::string &linear_solver,
                   const bool constant_loads_only,
-                  std::vector<double> *contact_forces)
+                  std::vector<double> *contact_forces,
+                  std::vector<std::array<double, 2>> *tangent_forces)
 {
   const unsigned int n = system.n_dofs();
   const std::string solver = resolve_linear_solver(linear_solver, n),
@@ -536,6 +552,8 @@ void solve_static(const DiscreteSystem &system,
   U.reinit(n);
   if (contact_forces != nullptr)
     contact_forces->assign(system.contacts.size(), 0.);
+  if (tangent_forces != nullptr)
+    tangent_forces->assign(system.contacts.size(), {{0., 0.}});
   unsigned int n_free = 0;
   for (unsigned int i = 0; i < n; ++i)
     n_free += fixed[i] ? 0 : 1;
@@ -558,11 +576,17 @@ void solve_static(const DiscreteSystem &system,
   PlayProbe probe;
   HeldRows held = held_rows(system, contacts);
   check_rigid_translations(system, held.rows);
-  solve_held(
-      StaticSolve{
-          system, contacts, held, solver, package, contact_forces, &pushed, &probe},
-      F,
-      U);
+  solve_held(StaticSolve{system,
+                         contacts,
+                         held,
+                         solver,
+                         package,
+                         contact_forces,
+                         tangent_forces,
+                         &pushed,
+                         &probe},
+             F,
+             U);
   if (pushed.empty())
     return;
   // pairs pushed to a side of their play: free those whose release leaves
@@ -583,11 +607,17 @@ void solve_static(const DiscreteSystem &system,
     held = held_rows(system, contacts);
     try
     {
-      solve_held(
-          StaticSolve{
-              system, contacts, held, solver, package, contact_forces, &pushed, &probe},
-          F,
-          U);
+      solve_held(StaticSolve{system,
+                             contacts,
+                             held,
+                             solver,
+                             package,
+                             contact_forces,
+                             tangent_forces,
+                             &pushed,
+                             &probe},
+                 F,
+                 U);
     }
     catch (const ExceptionBase &)
     {

@@ -280,6 +280,10 @@ void Problem::set_static_initial_state()
     const Vector<double> c = E.system.lumped_gravity_correction();
     for (unsigned int i = 0; i < c.size(); ++i)
       correction[E.global_dofs[i]] += c[i];
+    // on a node the whole system eliminates (a rail node tied to a solid
+    // across the interface): through its constraint line, as the assembly
+    // condenses the loads (doc/theory.md 6.1)
+    model->condense_force(correction);
   }
   system.constant_force += correction;
   std::vector<double> forces;
@@ -288,7 +292,8 @@ void Problem::set_static_initial_state()
                system.initial_displacement,
                newmark_parameters.linear_solver,
                true,
-               &forces);
+               &forces,
+               &static_tangent_forces);
   set_static_contact_reaction(forces);
   static_forces = forces;
   system.constant_force -= correction;
@@ -348,15 +353,27 @@ void Problem::add_eliminated_contact_reactions()
       ++k;
     if (k == whole.size())
       break;
-    if (k < static_forces.size() && static_forces[k] != 0.)
-      for (unsigned int j = 0; j < row.dofs.size(); ++j)
+    // the normal row, then the tangent rows of a sticking contact (A9)
+    auto add = [&](const SparseRow &part_row, const SparseRow &whole_row, const double f)
+    {
+      if (f == 0.)
+        return;
+      for (unsigned int j = 0; j < part_row.dofs.size(); ++j)
       {
-        const auto g = E.global_dofs[row.dofs[j]];
-        if (std::find(whole[k].dofs.begin(), whole[k].dofs.end(), g) ==
-            whole[k].dofs.end())
-          E.system.initial_contact_reaction[row.dofs[j]] +=
-              static_forces[k] * row.coefficients[j];
+        const auto g = E.global_dofs[part_row.dofs[j]];
+        if (std::find(whole_row.dofs.begin(), whole_row.dofs.end(), g) ==
+            whole_row.dofs.end())
+          E.system.initial_contact_reaction[part_row.dofs[j]] +=
+              f * part_row.coefficients[j];
       }
+    };
+    if (k < static_forces.size())
+      add(row, whole[k], static_forces[k]);
+    if (k < static_tangent_forces.size())
+      for (unsigned int t = 0;
+           t < row.tangents.size() && t < whole[k].tangents.size() && t < 2;
+           ++t)
+        add(row.tangents[t], whole[k].tangents[t], static_tangent_forces[k][t]);
     ++k;
   }
 }

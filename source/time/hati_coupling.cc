@@ -148,6 +148,8 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
           explicit_view.add_dof_force(rows_E[k].dofs[i],
                                       rows_E[k].coefficients[i] * lambda);
     }
+    explicit_view.finish_step();
+    // (G3') C_E V^E_m, the impulses of the last micro step included
     if (j == m)
       for (unsigned int k = 0; k < n_gamma; ++k)
       {
@@ -157,7 +159,6 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
                explicit_view.integer_velocity(rows_E[k].dofs[i]);
         v_end[k] = v;
       }
-    explicit_view.finish_step();
     if (pass)
       record.record_load_weights(j, explicit_view);
     if (record_damping)

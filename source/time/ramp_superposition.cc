@@ -170,10 +170,11 @@ void RampSuperposition::compute_ramp(const std::vector<bool> &active_set,
       ramp.predict();
       ramp.free_velocity(false);
       ramp.add_force(rows_E[l], double(j) / m); // unit ramp (j/m) e_l
+      ramp.finish_step(with_contacts);
+      // (G3') with the impulses of the pushing set's rows of the last step
       if (j == m)
         for (unsigned int k = 0; k < n_gamma; ++k)
           H_E(k, l) = integer_velocity(rows_E[k], ramp);
-      ramp.finish_step(with_contacts);
       for (unsigned int c = 0; c < nrc; ++c)
       {
         const auto &row = system.contacts[reach_contacts[c]];

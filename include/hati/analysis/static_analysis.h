@@ -5,6 +5,7 @@
 
 #include <hati/model/discrete_system.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,11 @@ using namespace dealii;
  * @param contact_forces if not null, resized to the number of contact rows
  *        and filled with the static contact forces (N, >= 0 pushing the
  *        bodies apart; 0 for open rows).
+ * @param tangent_forces if not null, resized to the number of contact rows
+ *        and filled with the static forces along each tangent row of the
+ *        closed contacts with friction (N, `K U = F + ... + T^T f_t`; 0 for
+ *        a tangent that a support or a parallel held row holds instead, and
+ *        for every other row).
  *
  * Contacts with a zero initial gap are closed (doc/theory.md 1.2 with the
  * static limit): the saddle-point problem `[K L_c^T; L_c 0] [U; -lambda] =
@@ -64,7 +70,8 @@ void solve_static(const DiscreteSystem &system,
                   Vector<double> &U,
                   const std::string &linear_solver = "auto",
                   const bool constant_loads_only = false,
-                  std::vector<double> *contact_forces = nullptr);
+                  std::vector<double> *contact_forces = nullptr,
+                  std::vector<std::array<double, 2>> *tangent_forces = nullptr);
 } // namespace hati
 
 #endif

@@ -234,6 +234,7 @@ public:
     return frame.interface_rows();
   }
   void complete_solution(Vector<double> &U) const override { frame.complete_solution(U); }
+  void condense_force(Vector<double> &f) const override { frame.condense_force(f); }
   /** @} */
 
   /** Model/Bridge crane/Damping ratio, Damping type and Damping band. */

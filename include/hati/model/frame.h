@@ -105,6 +105,8 @@ public:
   std::vector<SparseRow> interface_rows() const override;
   /** The constraints of the ties and rigid links eliminated here, distributed. */
   void complete_solution(Vector<double> &U) const override { constraints.distribute(U); }
+  /** A force on constrained DoFs moved onto their masters (homogeneous lines). */
+  void condense_force(Vector<double> &f) const override { constraints.condense(f); }
   /** The solids of the frame (null if it has none). */
   const FrameSolids *solid_part() const { return solids.get(); }
 

@@ -199,6 +199,16 @@ public:
    */
   virtual void complete_solution(Vector<double> &U) const { (void)U; }
 
+  /**
+   * The dual of complete_solution(): move the entries of the force @p f on
+   * the DoFs the model eliminates as affine constraints onto the DoFs they
+   * follow, `f_j += c_ij f_i` for `u_i = sum_j c_ij u_j`, and zero them (the
+   * equivalent load of the condensed system, doc/theory.md 6.1), e.g. a
+   * force of HATI's explicit part on a tied node, which the whole system
+   * eliminates. Nothing by default.
+   */
+  virtual void condense_force(Vector<double> &f) const { (void)f; }
+
   /** One line describing the model for the terminal and summary.json. */
   virtual std::string description() const = 0;
 

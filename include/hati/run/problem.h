@@ -158,8 +158,8 @@ private:
    * HATI: the static forces of the contact rows that the whole system
    * wrote through a constraint (at a tied node, eliminated there) added to
    * the explicit part's initial contact reaction on the DoFs its plain row
-   * has and the whole system's does not (the tied node, free there); their
-   * normal forces only.
+   * has and the whole system's does not (the tied node, free there): the
+   * normal forces and the sticking friction forces along the tangent rows.
    */
   void add_eliminated_contact_reactions();
   /**
@@ -173,6 +173,8 @@ private:
 
   /** The static contact force per contact row of the initial state (N). */
   std::vector<double> static_forces;
+  /** The static friction force along each tangent row of a contact (N, A9). */
+  std::vector<std::array<double, 2>> static_tangent_forces;
 
   ConditionalOStream out;
 };

@@ -287,7 +287,7 @@ private:
  * would. A view refers to its integrator, which must outlive it.
  *
  * A micro step: predict(), free_velocity(), any add_force() or
- * add_dof_force(), integer_velocity() if needed, then finish_step().
+ * add_dof_force(), then finish_step(), then integer_velocity() if needed.
  */
 class CDLagrange::CouplingView
 {
@@ -330,10 +330,14 @@ public:
   }
 
   /**
-   * The velocity at the integer time t_{n+1} of DoF @p i,
-   * `(V_{n+1/2} + V_free) / 2 = V_{n+1/2} + dt/2 M^-1 F_{n+1}` (G2), with
-   * `F_{n+1}` the whole force of the update (damping D_{n+1} included, A7),
-   * valid between free_velocity() and finish_step().
+   * The velocity at the integer time t_{n+1} of DoF @p i (G2, G3'),
+   * `(V_{n+1/2} + V_{n+3/2}) / 2 = V_{n+1/2} + dt/2 M^-1 (F_{n+1} + r_{n+1})`,
+   * valid after finish_step(): `F_{n+1}` the whole force of the update
+   * (damping D_{n+1} included, A7) and `r_{n+1}` the impulses of the step
+   * (contacts, bilateral rows; A4-A6) divided by dt. A DoF without an
+   * impulse has `(V_{n+1/2} + V_free) / 2`; on a DoF that a closed contact
+   * holds the impulse stands for the contact force, which the free velocity
+   * lacks (doc/theory.md 9.2).
    */
   double integer_velocity(const unsigned int i) const
   {
