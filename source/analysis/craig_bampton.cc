@@ -20,6 +20,21 @@ namespace
 {
 const std::string where = "Model/Decomposition/";
 
+/**
+ * The number of modes up to @p cutoff (Hz) that the local modal density
+ * `N ~ f^p` of the ascending @p frequencies predicts (p from the last one
+ * and the middle one).
+ */
+double estimated_mode_count(const std::vector<double> &frequencies, const double cutoff)
+{
+  const unsigned int n = frequencies.size(), half = std::max(1u, n / 2);
+  const double last = frequencies.back(), f_half = frequencies[half - 1];
+  const double p = (last > f_half && f_half > 0. && n > half)
+                       ? std::log(double(n) / half) / std::log(last / f_half)
+                       : 1.;
+  return n * std::pow(cutoff / std::max(last, 1e-300), p);
+}
+
 /** The mass used: the consistent one if assembled, else the lumped diagonal. */
 void apply_mass(const DiscreteSystem &system, const Vector<double> &x, Vector<double> &y)
 {
@@ -54,12 +69,16 @@ CraigBamptonReduction::CraigBamptonReduction(const DiscreteSystem &system,
   AssertThrow(system.ropes.empty() && system.contacts.empty(),
               ExcMessage(where + "Implicit reduction = Craig-Bampton reduces a linear "
                                  "part: the implicit part holds ropes or contacts."));
+  auto since = [](const std::chrono::steady_clock::time_point t)
+  { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
   add_constraint_modes(system,
                        direct_solver_package(settings.linear_solver, system.n_dofs()));
+  phase_seconds[0] = since(start);
   add_fixed_interface_modes(system, settings);
+  phase_seconds[1] = since(start) - phase_seconds[0];
   assemble_reduced_matrices(system);
-  seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  seconds = since(start);
+  phase_seconds[2] = seconds - phase_seconds[0] - phase_seconds[1];
 }
 
 void CraigBamptonReduction::add_constraint_modes(const DiscreteSystem &system,
@@ -143,28 +162,28 @@ void CraigBamptonReduction::add_fixed_interface_modes(
   const unsigned int limit = std::min(settings.maximum_modes, n_free_interior);
   if (limit == 0)
     return;
-  // more modes until the last one is above the cut-off (or the limit)
+  // more modes until the last one is above the cut-off (or the limit): the
+  // next count from the modal density of the modes found, with a margin
+  // (each count is a new Lanczos run), at least twice the last
   unsigned int wanted = std::min(limit, 12u);
   ModalResult modes;
   while (true)
   {
     modes =
         compute_modes(system, wanted, false, nullptr, settings.linear_solver, &boundary);
+    ++n_lanczos_runs;
     if (modes.frequencies.back() > settings.cutoff_frequency || wanted == limit)
       break;
-    wanted = std::min(limit, 2 * wanted);
+    const double needed =
+        estimated_mode_count(modes.frequencies, settings.cutoff_frequency);
+    wanted = static_cast<unsigned int>(
+        std::min<double>(limit, std::max(2. * wanted, std::ceil(1.2 * needed) + 4.)));
   }
   const double last = modes.frequencies.back();
   if (last <= settings.cutoff_frequency && wanted < n_free_interior)
   {
-    // the count needed, from the local modal density N ~ f^p of the modes
-    // found (p from the last and the middle one)
-    const unsigned int half = std::max(1u, wanted / 2);
-    const double f_half = modes.frequencies[half - 1];
-    const double p = (last > f_half && f_half > 0.)
-                         ? std::log(double(wanted) / half) / std::log(last / f_half)
-                         : 1.;
-    const double needed = wanted * std::pow(settings.cutoff_frequency / last, p);
+    const double needed =
+        estimated_mode_count(modes.frequencies, settings.cutoff_frequency);
     std::ostringstream m;
     m << where << "Reduction cutoff frequency = " << settings.cutoff_frequency
       << " Hz needs more than Reduction maximum modes = " << settings.maximum_modes
@@ -202,6 +221,8 @@ void CraigBamptonReduction::assemble_reduced_matrices(const DiscreteSystem &syst
 void CraigBamptonReduction::expand(const Vector<double> &q, Vector<double> &u) const
 {
   AssertThrow(q.size() == size(), ExcMessage("CraigBamptonReduction::expand: size"));
+  if (size() > 0 && u.size() != columns[0].size())
+    u.reinit(columns[0].size());
   u = 0.;
   for (unsigned int k = 0; k < size(); ++k)
     if (q[k] != 0.)

@@ -146,6 +146,27 @@ void DecompositionParameters::declare_parameters(ParameterHandler &prm)
       "...' (members of a mesh file by their physical name), and of solids to put "
       "there (Model/Frame/Solids; by default solids are implicit); added to the "
       "cells of the Explicit region. Ignored by single-domain methods.");
+  prm.declare_entry(
+      "Implicit reduction",
+      "none",
+      Patterns::Selection("none|Craig-Bampton"),
+      "Method = HATI: 'none' integrates the implicit subdomain on all its DoFs; "
+      "'Craig-Bampton' on reduced coordinates (doc/theory.md 12.1, C1): the "
+      "interface DoFs (6 per tie to a solid face) and DoFs with a time-dependent "
+      "point load as boundary DoFs, plus the fixed-interface normal modes up to the "
+      "Reduction cutoff frequency. For a large, linear implicit part (solid "
+      "girders): one dense solve of the reduced size per macro step.");
+  prm.declare_entry("Reduction cutoff frequency",
+                    "150",
+                    Patterns::Double(0., 1e9),
+                    "Implicit reduction = Craig-Bampton: every fixed-interface "
+                    "normal mode up to this frequency is kept (Hz, > 0).");
+  prm.declare_entry("Reduction maximum modes",
+                    "500",
+                    Patterns::Integer(1, 100000),
+                    "Implicit reduction = Craig-Bampton: at most this many "
+                    "fixed-interface modes (-); a cut-off that needs more is "
+                    "refused with the count it would need.");
 }
 
 void DecompositionParameters::parse_parameters(ParameterHandler &prm)
@@ -192,6 +213,12 @@ void DecompositionParameters::parse_parameters(ParameterHandler &prm)
        Utilities::split_string_list(prm.get("Explicit members"), ','))
     if (!Utilities::trim(m).empty())
       members.push_back(Utilities::trim(m));
+  implicit_reduction = prm.get("Implicit reduction");
+  reduction_cutoff_frequency = prm.get_double("Reduction cutoff frequency");
+  AssertThrow(reduction_cutoff_frequency > 0.,
+              ExcMessage("Model/Decomposition/Reduction cutoff frequency must be > 0 "
+                         "Hz (the fixed-interface modes kept), not 0"));
+  reduction_maximum_modes = prm.get_integer("Reduction maximum modes");
 }
 
 double Model::size() const

@@ -2,6 +2,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
+#include <hati/analysis/reduced_part.h>
 #include <hati/run/analysis_registry.h>
 #include <hati/run/problem.h>
 #include <hati/run/time_loop.h>
@@ -74,8 +75,14 @@ void run_hati(Problem &problem, RunDirectory &directory)
             << ", G3'): explicit subdomain " << parts[0].system.n_dofs()
             << " DoFs (CD-Lagrange, dt = " << coupling->micro_time_step()
             << " s, dt_crit = " << coupling->critical_time_step()
-            << " s), implicit subdomain " << parts[1].system.n_dofs()
-            << " DoFs (Newmark, DT = " << coupling->time_step()
+            << " s), implicit subdomain " << parts[1].system.n_dofs() << " DoFs"
+            << (problem.decomposition->reduced
+                    ? " in " +
+                          std::to_string(
+                              implicit_system(*problem.decomposition).n_dofs()) +
+                          " Craig-Bampton coordinates"
+                    : std::string())
+            << " (Newmark, DT = " << coupling->time_step()
             << " s, m = " << coupling->time_step_ratio() << "), "
             << coupling->n_interface_dofs() << " interface DoFs" << std::endl;
   {

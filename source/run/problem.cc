@@ -143,7 +143,12 @@ void Problem::decompose()
 {
   decomposition = std::make_unique<Decomposition>();
   if (decomposition_parameters.boxes.empty() && decomposition_parameters.members.empty())
-    decomposition_parameters = model->default_decomposition();
+  {
+    // the model's explicit cells, with the reduction asked for
+    DecompositionParameters cells = model->default_decomposition();
+    decomposition_parameters.boxes = cells.boxes;
+    decomposition_parameters.members = cells.members;
+  }
   hati::decompose(*model, common_parameters, decomposition_parameters, *decomposition);
   for (auto &part : decomposition->parts)
     add_base_excitation(part.system, ground_acceleration);
@@ -200,6 +205,8 @@ void Problem::prepare_transient()
                          "CD-Lagrange and Newmark integrators only; remove it for "
                          "Method = event-driven."));
   add_damping_summary();
+  if (decomposition && decomposition_parameters.implicit_reduction == "Craig-Bampton")
+    reduce_implicit_part();
 }
 
 void Problem::check_spectrum_request() const

@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <hati/analysis/reduced_part.h>
 #include <hati/time/hati_coupling.h>
 
 #include <algorithm>
@@ -65,7 +66,7 @@ HATICoupling::HATICoupling(const Decomposition &decomposition,
                           damping.rayleigh,
                           damping.branches),
       explicit_view(explicit_integrator.coupling_view()),
-      implicit(decomposition.parts[1].system,
+      implicit(implicit_system(decomposition),
                m * dt,
                newmark_parameters,
                damping.rayleigh,
@@ -308,14 +309,26 @@ const Vector<double> &HATICoupling::to_global(const Vector<double> &implicit_par
   return global;
 }
 
+const Vector<double> &HATICoupling::implicit_dofs(const Vector<double> &state) const
+{
+  if (!decomposition.reduced)
+    return state;
+  // C1: the full subdomain's values from the reduced coordinates, u = T q
+  decomposition.reduced->expand(state, expanded);
+  return expanded;
+}
+
 const Vector<double> &HATICoupling::displacement() const
 {
-  return to_global(implicit.displacement(), explicit_integrator.displacement(), global_U);
+  return to_global(implicit_dofs(implicit.displacement()),
+                   explicit_integrator.displacement(),
+                   global_U);
 }
 
 const Vector<double> &HATICoupling::velocity() const
 {
-  return to_global(implicit.velocity(), explicit_integrator.velocity(), global_V);
+  return to_global(
+      implicit_dofs(implicit.velocity()), explicit_integrator.velocity(), global_V);
 }
 
 Energies HATICoupling::energies() const
@@ -341,13 +354,13 @@ unsigned int HATICoupling::state_size() const
 {
   const unsigned int n_branches = explicit_integrator.memory().n_branches();
   return (2 + n_branches) * decomposition.parts[0].system.n_dofs() +
-         (3 + n_branches) * decomposition.parts[1].system.n_dofs() + interface->size();
+         (3 + n_branches) * implicit_system(decomposition).n_dofs() + interface->size();
 }
 
 void HATICoupling::get_state(Vector<double> &x) const
 {
   const unsigned int nE = decomposition.parts[0].system.n_dofs(),
-                     nI = decomposition.parts[1].system.n_dofs();
+                     nI = implicit_system(decomposition).n_dofs();
   const double dt = explicit_integrator.time_step(), DT = m * dt;
   x.reinit(state_size());
   unsigned int o = 0;
@@ -373,7 +386,7 @@ void HATICoupling::set_state(const Vector<double> &x)
 {
   AssertThrow(x.size() == state_size(), ExcDimensionMismatch(x.size(), state_size()));
   const unsigned int nE = decomposition.parts[0].system.n_dofs(),
-                     nI = decomposition.parts[1].system.n_dofs();
+                     nI = implicit_system(decomposition).n_dofs();
   const double dt = explicit_integrator.time_step(), DT = m * dt;
   auto E = explicit_integrator.linear_state();
   auto I = implicit.linear_state();

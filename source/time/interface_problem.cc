@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <hati/analysis/reduced_part.h>
 #include <hati/time/interface_problem.h>
 
 #include <algorithm>
@@ -29,10 +30,10 @@ InterfaceProblem::InterfaceProblem(const Decomposition &decomposition,
   // (G3'') C_E and C_I sparse rows (Decomposition)
   const unsigned int n_gamma = decomposition.n_interface_dofs();
   rows_E = decomposition.rows[0];
-  rows_I = decomposition.rows[1];
+  rows_I = implicit_rows(decomposition);
   for (auto *v : {&free_jump, &implicit_guess, &solve_work, &u_old, &implicit_part})
     v->reinit(n_gamma);
-  const unsigned int n_I = decomposition.parts[1].system.n_dofs();
+  const unsigned int n_I = implicit_system(decomposition).n_dofs();
   link_force.reinit(n_I);
 
   // (G3') the implicit part gamma DT C_I M_eff^-1 C_I^T of the interface
@@ -94,7 +95,7 @@ void InterfaceProblem::initial_multiplier(CDLagrange &explicit_integrator,
                rows_I[k].apply(*state_I[2]));
   if (rhs.linfty_norm() == 0.)
     return;
-  const unsigned int n_I = decomposition.parts[1].system.n_dofs();
+  const unsigned int n_I = implicit_system(decomposition).n_dofs();
   const Vector<double> &minv = explicit_integrator.inverse_mass();
   std::vector<Vector<double>> columns(n_gamma, Vector<double>(n_I));
   LAPACKFullMatrix<double> B(n_gamma, n_gamma);

@@ -7,6 +7,7 @@
 #include <hati/contact/sparse_rows.h>
 #include <hati/model/discrete_system.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -101,6 +102,14 @@ public:
 
   /** Wall time of the reduction (s): factorisation, solves, modes, products. */
   double set_up_time() const { return seconds; }
+  /**
+   * Its parts (s): the constraint modes (factorisation and one solve per
+   * boundary row), the fixed-interface modes (lanczos_runs() shift-invert
+   * Lanczos runs), the reduced matrices.
+   */
+  const std::array<double, 3> &set_up_phases() const { return phase_seconds; }
+  /** Shift-invert Lanczos runs to reach the cut-off (-). */
+  unsigned int lanczos_runs() const { return n_lanczos_runs; }
 
 private:
   std::vector<SparseRow> boundary;
@@ -108,6 +117,8 @@ private:
   std::vector<double> modal_frequencies;
   FullMatrix<double> reduced_mass, reduced_stiffness;
   double seconds = 0.;
+  std::array<double, 3> phase_seconds = {{0., 0., 0.}};
+  unsigned int n_lanczos_runs = 0;
 
   /** The constraint modes `Psi` (one column per boundary row). */
   void add_constraint_modes(const DiscreteSystem &system, const std::string &package);

@@ -5,10 +5,13 @@
 #include <hati/model/model.h>
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace hati
 {
+class ReducedImplicitPart;
+
 /**
  * One subdomain of a decomposed model: its own DiscreteSystem, numbered
  * from 0, holding the free DoFs of the model that its cells touch, and the
@@ -42,6 +45,14 @@ struct Decomposition
 
   /** Number of interface rows. */
   unsigned int n_interface_dofs() const { return rows[0].size(); }
+
+  /**
+   * The implicit subdomain in Craig-Bampton coordinates (C1,
+   * doc/theory.md 12.1; include/hati/analysis/reduced_part.h), set after
+   * the initial state when `Implicit reduction = Craig-Bampton`; null: HATI
+   * steps parts[1] itself (implicit_system(), implicit_rows()).
+   */
+  std::shared_ptr<const ReducedImplicitPart> reduced;
 };
 
 /**

@@ -78,6 +78,17 @@ struct DecompositionParameters
   std::vector<std::array<double, 6>> boxes;
   /** Frame members (by name) that are explicit. */
   std::vector<std::string> members;
+
+  /**
+   * `Implicit reduction`: "none" or "Craig-Bampton" (C1, doc/theory.md
+   * 12.1): the implicit subdomain of HATI integrated in the reduced
+   * coordinates of its interface DoFs and fixed-interface modes.
+   */
+  std::string implicit_reduction = "none";
+  /** `Reduction cutoff frequency` (Hz): the fixed-interface modes kept. */
+  double reduction_cutoff_frequency = 150.;
+  /** `Reduction maximum modes` (-): a cut-off that needs more is refused. */
+  unsigned int reduction_maximum_modes = 500;
 };
 
 /** A DoF vector to write, with its name. */

@@ -76,6 +76,16 @@ public:
   void decompose();
 
   /**
+   * `Model/Decomposition/Implicit reduction = Craig-Bampton` (C1,
+   * doc/theory.md 12.1): reduce HATI's implicit subdomain, with its initial
+   * state, to Craig-Bampton coordinates (Decomposition::reduced); print the
+   * reduction, its frequency check against the unreduced part (the first
+   * five flexible free-interface modes) and the `reduction` entry of
+   * summary.json. Called by prepare_transient() after the initial state.
+   */
+  void reduce_implicit_part();
+
+  /**
    * Print the static contact forces @p forces (N, one per contact row of
    * the system, summed per contact name) as a table, remember them
    * (static_contact_forces) and return the `static_contact_forces` entry of

@@ -209,6 +209,11 @@ private:
   void redo_micro_steps(const DenseColumns &H_inverse);
   /** Fill @p sample from the explicit integrator. */
   void take_sample(ContactSample &sample) const;
+  /**
+   * The implicit subdomain's DoF values of the implicit integrator's
+   * @p state: itself, or expanded from reduced coordinates (C1).
+   */
+  const Vector<double> &implicit_dofs(const Vector<double> &state) const;
   /** @p global = the implicit and explicit parts in the global numbering. */
   const Vector<double> &to_global(const Vector<double> &implicit_part,
                                   const Vector<double> &explicit_part,
@@ -244,7 +249,7 @@ private:
   unsigned int max_iterations = 0;
   double seconds[3] = {0., 0., 0.};
   double setup = 0.;
-  mutable Vector<double> global_U, global_V;
+  mutable Vector<double> global_U, global_V, expanded;
   CDLagrange::Snapshot snapshot;
 };
 } // namespace hati

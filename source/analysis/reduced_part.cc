@@ -1,0 +1,203 @@
+// The implicit subdomain of HATI in Craig-Bampton coordinates (C1,
+// doc/theory.md 12.1).
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <hati/analysis/reduced_part.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hati
+{
+namespace
+{
+/** A load acting on at most this many DoFs is a point load (a node's 6). */
+constexpr unsigned int point_load_dofs = 6;
+/**
+ * The constant force less gravity (`f - sum_d g_d M r_d`) is a point load
+ * on the DoFs where it exceeds this fraction of the largest constant force
+ * (round-off of the gravity part), if they are at most
+ * max_constant_load_dofs; more are a distributed load, projected.
+ */
+constexpr double constant_load_tolerance = 1e-9;
+constexpr unsigned int max_constant_load_dofs = 60;
+
+/** y = M x with the consistent mass if the system has one, else the lumped one. */
+void reduced_part_mass(const DiscreteSystem &system,
+                       const Vector<double> &x,
+                       Vector<double> &y)
+{
+  if (system.has_consistent_mass())
+    system.consistent_mass.vmult(y, x);
+  else
+    for (unsigned int i = 0; i < x.size(); ++i)
+      y[i] = system.lumped_mass[i] * x[i];
+}
+} // namespace
+
+std::vector<SparseRow>
+ReducedImplicitPart::boundary_rows(const DiscreteSystem &full,
+                                   const std::vector<SparseRow> &interface,
+                                   unsigned int &n_load_rows)
+{
+  std::vector<SparseRow> boundary = interface;
+  // DoFs already a boundary row of their own (a Boolean interface DoF)
+  std::vector<bool> held(full.n_dofs(), false);
+  for (const SparseRow &row : interface)
+    if (row.dofs.size() == 1)
+      held[row.dofs[0]] = true;
+  n_load_rows = 0;
+  auto add_dofs = [&](const std::vector<unsigned int> &dofs)
+  {
+    for (const unsigned int i : dofs)
+      if (!held[i])
+      {
+        held[i] = true;
+        boundary.push_back(unit_rows({i})[0]);
+        ++n_load_rows;
+      }
+  };
+  // constant point loads: the constant force less its gravity part
+  if (full.constant_force.size() == full.n_dofs())
+  {
+    Vector<double> point(full.constant_force);
+    for (unsigned int d = 0; d < 3; ++d)
+      if (full.gravity[d] != 0. && full.mass_influence[d].size() == full.n_dofs())
+        point.add(-full.gravity[d], full.mass_influence[d]);
+    const double scale = full.constant_force.linfty_norm();
+    std::vector<unsigned int> dofs;
+    for (unsigned int i = 0; i < point.size(); ++i)
+      if (!full.fixed[i] && std::abs(point[i]) > constant_load_tolerance * scale)
+        dofs.push_back(i);
+    if (dofs.size() <= max_constant_load_dofs)
+      add_dofs(dofs);
+  }
+  for (const TimeDependentLoad &load : full.time_dependent_loads)
+  {
+    if (load.acceleration_direction >= 0)
+      continue;
+    std::vector<unsigned int> dofs;
+    for (unsigned int i = 0; i < load.shape.size(); ++i)
+      if (load.shape[i] != 0. && !full.fixed[i])
+        dofs.push_back(i);
+    if (dofs.size() <= point_load_dofs) // else distributed: projected as T^T f
+      add_dofs(dofs);
+  }
+  return boundary;
+}
+
+ReducedImplicitPart::ReducedImplicitPart(const DiscreteSystem &full,
+                                         const std::vector<SparseRow> &interface_rows,
+                                         const CraigBamptonSettings &settings)
+    : basis(full, boundary_rows(full, interface_rows, n_load_rows), settings)
+{
+  const unsigned int nb = basis.n_boundary(), nm = basis.n_modes(), n = full.n_dofs();
+  mass_modes.assign(nm, Vector<double>(n));
+  FullMatrix<double> modal_mass(nm, nm);
+  for (unsigned int a = 0; a < nm; ++a)
+  {
+    reduced_part_mass(full, basis.column(nb + a), mass_modes[a]);
+    for (unsigned int b = 0; b < nm; ++b)
+      modal_mass(a, b) = basis.mass()(nb + a, nb + b);
+  }
+  modal_mass_inverse.reinit(nm, nm);
+  if (nm > 0)
+    modal_mass_inverse.invert(modal_mass);
+  build_system(full);
+  // the interface rows are the first boundary coordinates, with coefficient 1
+  rows = unit_rows(
+      [&]
+      {
+        std::vector<unsigned int> k(interface_rows.size());
+        for (unsigned int i = 0; i < k.size(); ++i)
+          k[i] = i;
+        return k;
+      }());
+}
+
+void ReducedImplicitPart::coordinates(const Vector<double> &u, Vector<double> &q) const
+{
+  const unsigned int nb = basis.n_boundary(), nm = basis.n_modes();
+  q.reinit(basis.size());
+  Vector<double> interior(u);
+  for (unsigned int k = 0; k < nb; ++k)
+  {
+    q[k] = basis.boundary_rows()[k].apply(u);
+    interior.add(-q[k], basis.column(k));
+  }
+  Vector<double> p(nm), eta(nm);
+  for (unsigned int a = 0; a < nm; ++a)
+    p[a] = mass_modes[a] * interior;
+  modal_mass_inverse.vmult(eta, p);
+  for (unsigned int a = 0; a < nm; ++a)
+    q[nb + a] = eta[a];
+}
+
+void ReducedImplicitPart::build_system(const DiscreteSystem &full)
+{
+  const unsigned int r = basis.size();
+  reduced.reinit(r);
+  DynamicSparsityPattern dsp(r, r);
+  for (unsigned int i = 0; i < r; ++i)
+    for (unsigned int j = 0; j < r; ++j)
+      dsp.add(i, j);
+  reduced.stiffness_pattern.copy_from(dsp);
+  reduced.stiffness.reinit(reduced.stiffness_pattern);
+  reduced.consistent_mass.reinit(reduced.stiffness_pattern);
+  for (unsigned int i = 0; i < r; ++i)
+  {
+    for (unsigned int j = 0; j < r; ++j)
+    {
+      reduced.stiffness.set(i, j, basis.stiffness()(i, j));
+      reduced.consistent_mass.set(i, j, basis.mass()(i, j));
+    }
+    reduced.lumped_mass[i] = basis.mass()(i, i);
+  }
+  reduced.fixed.assign(r, false);
+  reduced.lumped_mass_refusal =
+      "a Craig-Bampton reduced implicit part (Model/Decomposition/Implicit reduction) "
+      "has no lumped mass: use Time integration/Newmark/Mass = consistent";
+  auto project = [&](const Vector<double> &f, Vector<double> &reduced_f)
+  {
+    if (f.size() == full.n_dofs())
+      basis.project(f, reduced_f);
+    else
+      reduced_f.reinit(0);
+  };
+  project(full.constant_force, reduced.constant_force);
+  reduced.gravity = full.gravity;
+  for (unsigned int d = 0; d < 3; ++d)
+  {
+    if (full.influence[d].size() == full.n_dofs())
+      coordinates(full.influence[d], reduced.influence[d]);
+    project(full.mass_influence[d], reduced.mass_influence[d]);
+    project(full.excited_mass_influence[d], reduced.excited_mass_influence[d]);
+  }
+  for (const TimeDependentLoad &load : full.time_dependent_loads)
+  {
+    TimeDependentLoad l;
+    basis.project(load.shape, l.shape);
+    l.amplitude = load.amplitude;
+    l.acceleration_direction = load.acceleration_direction;
+    reduced.time_dependent_loads.push_back(std::move(l));
+  }
+  if (full.initial_displacement.size() == full.n_dofs())
+    coordinates(full.initial_displacement, reduced.initial_displacement);
+  if (full.initial_velocity.size() == full.n_dofs())
+    coordinates(full.initial_velocity, reduced.initial_velocity);
+}
+
+const DiscreteSystem &implicit_system(const Decomposition &decomposition)
+{
+  return decomposition.reduced ? decomposition.reduced->system()
+                               : decomposition.parts[1].system;
+}
+
+const std::vector<SparseRow> &implicit_rows(const Decomposition &decomposition)
+{
+  return decomposition.reduced ? decomposition.reduced->interface_rows()
+                               : decomposition.rows[1];
+}
+} // namespace hati
