@@ -251,11 +251,48 @@ void HATICoupling::step()
   seconds[1] += seconds_since(start);
 }
 
+void HATICoupling::broyden_step(const DenseColumns &H_inverse,
+                                FullMatrix<double> &B,
+                                Vector<double> &step,
+                                const Vector<double> &last_residual,
+                                const Vector<double> &residual) const
+{
+  // doc/theory.md 9.6: B ~ H_true^-1 from H^-1 and the secant condition
+  // B (r_{k-1} - r_k) = dLambda_{k-1} (Broyden's inverse update); @p step
+  // holds dLambda_{k-1} on entry
+  const unsigned int n = residual.size();
+  if (B.m() != n)
+  {
+    B.reinit(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        B(i, j) = H_inverse(i, j);
+  }
+  Vector<double> y(last_residual), By(n);
+  y -= residual;
+  const double yy = y * y;
+  if (yy > 0.)
+  {
+    B.vmult(By, y);
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      const double c = (step[i] - By[i]) / yy;
+      for (unsigned int j = 0; j < n; ++j)
+        B(i, j) += c * y[j];
+    }
+  }
+  B.vmult(step, residual);
+}
+
 void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
 {
   ++n_redone;
   unsigned int iterations = 0;
-  Vector<double> residual(interface->size());
+  const unsigned int n_gamma = interface->size();
+  Vector<double> residual(n_gamma), last_residual(n_gamma), step(n_gamma),
+      update(n_gamma);
+  // the correction matrix of the accelerated corrections (Broyden)
+  FullMatrix<double> B;
   for (;; ++iterations)
   {
     explicit_integrator.restore(snapshot);
@@ -279,8 +316,16 @@ void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
                  "Time step ratio";
       AssertThrow(false, ExcMessage(message.str()));
     }
-    interface->solve(H_inverse, residual);
-    lambda_m += residual;
+    if (iterations < RampSuperposition::plain_corrections)
+    {
+      // Lambda += H^-1 r with the interface matrix of the ramp response
+      step = residual;
+      interface->solve(H_inverse, step);
+    }
+    else
+      broyden_step(H_inverse, B, step, last_residual, residual);
+    last_residual = residual;
+    lambda_m += step;
   }
   max_iterations = std::max(max_iterations, iterations + 1);
   if (after_micro_step)

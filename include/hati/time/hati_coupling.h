@@ -2,6 +2,7 @@
 #define hati_time_hati_coupling_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <hati/model/decomposition.h>
@@ -207,6 +208,20 @@ private:
    * until the macro-end continuity holds (doc/theory.md 9.6).
    */
   void redo_micro_steps(const DenseColumns &H_inverse);
+  /**
+   * The correction of a redone macro step after
+   * RampSuperposition::plain_corrections plain ones: Broyden's inverse
+   * update of @p B (set to @p H_inverse on first use) with the secant
+   * `B (r_{k-1} - r_k) = dLambda_{k-1}` (@p step on entry), then @p step =
+   * `B r_k` (doc/theory.md 9.6). Converges where the plain correction with
+   * the ramp's H^-1 contracts slowly (sticking friction within reach, an
+   * implicit part stiffer at the interface than the ramp assumes).
+   */
+  void broyden_step(const DenseColumns &H_inverse,
+                    FullMatrix<double> &B,
+                    Vector<double> &step,
+                    const Vector<double> &last_residual,
+                    const Vector<double> &residual) const;
   /** Fill @p sample from the explicit integrator. */
   void take_sample(ContactSample &sample) const;
   /**

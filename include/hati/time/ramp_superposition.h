@@ -99,6 +99,12 @@ public:
   static constexpr double continuity_tolerance = 1e-8;
   /** Redone macro steps: corrections of Lambda_{n+m} before giving up. */
   static constexpr unsigned int max_corrections = 50;
+  /**
+   * Redone macro steps: corrections with the ramp's H^-1 before the
+   * secant (Broyden) ones (HATICoupling::broyden_step()); a macro step
+   * that converges within them is computed as before the secant update.
+   */
+  static constexpr unsigned int plain_corrections = 3;
   /** @} */
 
   /**
