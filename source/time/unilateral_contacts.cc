@@ -43,6 +43,9 @@ void UnilateralContacts::start_rows(const Vector<double> &U,
                            "' acts only on fixed or massless degrees of freedom"));
     gap[k] = c.initial_gap + c.apply(U);
   }
+  was_closed.resize(nc);
+  for (unsigned int k = 0; k < nc; ++k)
+    was_closed[k] = gap[k] <= closed_gap_tolerance;
   // the DoFs a contact's impulse acts on: its row, and its tangent rows
   // with friction (A9)
   auto shares_dof = [&](const SparseRow &a, const SparseRow &b)
@@ -92,14 +95,17 @@ void UnilateralContacts::apply_impulses(const Vector<double> &U,
     frictional_contacts.begin_step(v_before);
 
   // (A4) active set from the position-level gap (or the prescribed one),
-  // round-off gaps closed (closed_gap_tolerance)
+  // round-off gaps closed (closed_gap_tolerance; held_gap_tolerance for a
+  // contact in the previous step's set)
   active_list.clear();
   for (unsigned int k = 0; k < nc; ++k)
   {
     const auto &c = contacts[k];
     gap[k] = c.initial_gap + c.apply(U);
-    is_active[k] = c.bilateral || (prescribed ? bool((*prescribed)[k])
-                                              : (gap[k] <= closed_gap_tolerance));
+    const double tolerance = was_closed[k] ? held_gap_tolerance : closed_gap_tolerance;
+    is_active[k] =
+        c.bilateral || (prescribed ? bool((*prescribed)[k]) : (gap[k] <= tolerance));
+    was_closed[k] = is_active[k];
     lambda[k] = 0.;
     if (is_active[k])
       active_list.push_back(k);
@@ -215,6 +221,7 @@ void UnilateralContacts::save(std::any &state) const
   s->gap = gap;
   s->lambda = lambda;
   s->is_active = is_active;
+  s->was_closed = was_closed;
   s->contact_work = contact_work;
   frictional_contacts.save(s->friction);
 }
@@ -225,6 +232,7 @@ void UnilateralContacts::restore(const std::any &state)
   gap = s.gap;
   lambda = s.lambda;
   is_active = s.is_active;
+  was_closed = s.was_closed;
   contact_work = s.contact_work;
   frictional_contacts.restore(s.friction);
 }
