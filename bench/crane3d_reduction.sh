@@ -53,12 +53,11 @@ names, ref = history(work + "/none")
 fref = forces(work + "/none")
 sref = json.load(open(work + "/none/summary.json"))
 cols = [i for i, n in enumerate(names) if "." in n and n.split(".")[1] in ("ux", "uy", "uz")]
-print("unreduced: %d implicit DoFs, stepping %.1f s, set-up %.1f s" % (
-    sref["n_dofs_implicit"], sref["stepping_wall_time"],
-    sref["wall_time"] - sref["stepping_wall_time"] - sref["wall_time_output"]))
-print("%8s %6s %8s %-28s %10s %-22s %9s %9s" % ("cut-off", "modes", "f_max", "worst displacement",
-                                             "err/peak", "worst contact force",
-                                             "err/peak", "set-up"))
+print("unreduced: %d implicit DoFs, stepping %.1f s" % (sref["n_dofs_implicit"],
+                                                     sref["stepping_wall_time"]))
+print("%8s %6s %8s %-28s %9s %-18s %9s %9s %9s %9s" % (
+    "cut-off", "modes", "f_max", "worst displacement", "err/peak", "worst wheel force",
+    "err/peak", "travel/lat", "set-up", "stepping"))
 for f in cutoffs:
     d = work + "/cb" + f
     _, h = history(d)
@@ -71,13 +70,19 @@ for f in cutoffs:
         e = max(abs(a[i] - b[i]) for a, b in zip(h, ref)) / peak
         worst = max(worst, (e, names[i]))
     fc = forces(d)
-    worst_f = (0.0, "")
+    # the wheels' vertical contacts (their travel and lateral flange rows
+    # carry small, noisy forces: the worst of those in the last column)
+    worst_f, worst_o = (0.0, ""), (0.0, "")
     for c, v in fref.items():
         peak = max(abs(x) for x in v)
         if peak > 0.0 and c in fc and len(fc[c]) == len(v):
-            worst_f = max(worst_f, (max(abs(a - b) for a, b in zip(fc[c], v)) / peak, c))
+            e = (max(abs(a - b) for a, b in zip(fc[c], v)) / peak, c)
+            if c.endswith(("_travel", "_lateral")):
+                worst_o = max(worst_o, e)
+            else:
+                worst_f = max(worst_f, e)
     r = s["reduction"]
-    print("%8s %6d %8.1f %-28s %10.2e %-22s %9.2e %8.1fs" % (
+    print("%8s %6d %8.1f %-28s %9.2e %-18s %9.2e %9.2e %8.1fs %8.1fs" % (
         f, r["modes"], r["highest_kept_frequency"], worst[1], worst[0], worst_f[1], worst_f[0],
-        r["set_up_time"]))
+        worst_o[0], r["set_up_time"], s["stepping_wall_time"]))
 PY
