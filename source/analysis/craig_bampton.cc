@@ -35,8 +35,11 @@ double estimated_mode_count(const std::vector<double> &frequencies, const double
   return n * std::pow(cutoff / std::max(last, 1e-300), p);
 }
 
-/** The mass used: the consistent one if assembled, else the lumped diagonal. */
-void apply_mass(const DiscreteSystem &system, const Vector<double> &x, Vector<double> &y)
+} // namespace
+
+void reduction_mass_vmult(const DiscreteSystem &system,
+                          const Vector<double> &x,
+                          Vector<double> &y)
 {
   if (system.has_consistent_mass())
     system.consistent_mass.vmult(y, x);
@@ -44,7 +47,6 @@ void apply_mass(const DiscreteSystem &system, const Vector<double> &x, Vector<do
     for (unsigned int i = 0; i < x.size(); ++i)
       y[i] = system.lumped_mass[i] * x[i];
 }
-} // namespace
 
 std::vector<SparseRow> unit_rows(const std::vector<unsigned int> &dofs)
 {
@@ -208,7 +210,7 @@ void CraigBamptonReduction::assemble_reduced_matrices(const DiscreteSystem &syst
   Vector<double> Mt(n), Kt(n);
   for (unsigned int b = 0; b < r; ++b)
   {
-    apply_mass(system, columns[b], Mt);
+    reduction_mass_vmult(system, columns[b], Mt);
     system.stiffness.vmult(Kt, columns[b]);
     for (unsigned int a = 0; a <= b; ++a)
     {

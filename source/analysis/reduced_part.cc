@@ -24,17 +24,6 @@ constexpr unsigned int point_load_dofs = 6;
 constexpr double constant_load_tolerance = 1e-9;
 constexpr unsigned int max_constant_load_dofs = 60;
 
-/** y = M x with the consistent mass if the system has one, else the lumped one. */
-void reduced_part_mass(const DiscreteSystem &system,
-                       const Vector<double> &x,
-                       Vector<double> &y)
-{
-  if (system.has_consistent_mass())
-    system.consistent_mass.vmult(y, x);
-  else
-    for (unsigned int i = 0; i < x.size(); ++i)
-      y[i] = system.lumped_mass[i] * x[i];
-}
 } // namespace
 
 std::vector<SparseRow>
@@ -98,7 +87,7 @@ ReducedImplicitPart::ReducedImplicitPart(const DiscreteSystem &full,
   FullMatrix<double> modal_mass(nm, nm);
   for (unsigned int a = 0; a < nm; ++a)
   {
-    reduced_part_mass(full, basis.column(nb + a), mass_modes[a]);
+    reduction_mass_vmult(full, basis.column(nb + a), mass_modes[a]);
     for (unsigned int b = 0; b < nm; ++b)
       modal_mass(a, b) = basis.mass()(nb + a, nb + b);
   }

@@ -15,6 +15,14 @@ namespace hati
 {
 using namespace dealii;
 
+/**
+ * `y = M x` with the mass a reduction uses (C1): the consistent mass of
+ * @p system if it has one, else its lumped diagonal.
+ */
+void reduction_mass_vmult(const DiscreteSystem &system,
+                          const Vector<double> &x,
+                          Vector<double> &y);
+
 /** One unit row per DoF of @p dofs: DoFs as boundary rows of a reduction. */
 std::vector<SparseRow> unit_rows(const std::vector<unsigned int> &dofs);
 
