@@ -13,7 +13,14 @@
 // - the fixed-interface frequencies of the modes kept: the modal block of
 //   (K_r, M_r) gives them back to 1e-6 (the reduced matrices assembled
 //   right), and that block of M_r is the identity (mass-normalised modes);
-// - a cut-off beyond Reduction maximum modes is refused, naming it.
+// - a cut-off beyond Reduction maximum modes is refused, naming it;
+// - spectrum slicing (Lanczos runs of few modes around successive shifts):
+//   the fixed-interface modes against one Lanczos run of all of them
+//   (compute_modes() with the boundary rows held), frequencies 1e-8
+//   relative, the kept modes M-orthonormal (1e-8) and K-orthogonal, on the
+//   box girder and on a cantilever of square box section whose bending
+//   modes come in exact pairs (several run sizes: with 4 modes per run the
+//   first slice ends inside the pair at 185.9 Hz).
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
@@ -135,6 +142,102 @@ void check_tie_rows()
             (reduced[k] - full.frequencies[k]) / full.frequencies[k],
             0.,
             5e-3);
+}
+
+/**
+ * The fixed-interface modes of @p system on @p rows up to @p cutoff (Hz),
+ * sliced in Lanczos runs of @p per_run modes, against one run of all of
+ * them: the same count, frequencies within 1e-8 relative, the modal block
+ * of M_r the identity and that of K_r diagonal (1e-8 of its largest entry).
+ * Returns the number of double eigenvalues below the cut-off.
+ */
+unsigned int check_slicing(const std::string &name,
+                           const DiscreteSystem &system,
+                           const std::vector<SparseRow> &rows,
+                           const double cutoff,
+                           const unsigned int per_run)
+{
+  CraigBamptonSettings settings;
+  settings.cutoff_frequency = cutoff;
+  settings.modes_per_run = per_run;
+  const CraigBamptonReduction reduction(system, rows, settings);
+  const std::vector<double> &f = reduction.fixed_interface_frequencies();
+  const unsigned int nb = reduction.n_boundary(), nm = reduction.n_modes();
+  const std::string what = name + ", " + std::to_string(per_run) + " modes per run: ";
+  std::cout << what << nm << " modes up to " << cutoff << " Hz in "
+            << reduction.lanczos_runs() << " Lanczos runs" << std::endl;
+  expect(reduction.lanczos_runs() >= 3, what + "at least three Lanczos runs");
+
+  // the reference: one run with a few modes above the cut-off
+  const ModalResult single = compute_modes(system, nm + 4, false, nullptr, "auto", &rows);
+  unsigned int n_reference = 0, n_pairs = 0;
+  for (unsigned int k = 0; k < single.frequencies.size(); ++k)
+  {
+    n_reference += single.frequencies[k] <= cutoff;
+    if (k > 0 && single.frequencies[k] <= cutoff &&
+        single.frequencies[k] - single.frequencies[k - 1] < 1e-8 * single.frequencies[k])
+      ++n_pairs;
+  }
+  std::cout << "  single run: " << n_reference << " modes up to " << cutoff << " Hz, "
+            << n_pairs << " double eigenvalues" << std::endl;
+  expect(nm == n_reference, what + "as many modes as the single run");
+  double frequency_error = 0.;
+  for (unsigned int k = 0; k < std::min(nm, n_reference); ++k)
+    frequency_error = std::max(
+        frequency_error, std::abs(f[k] - single.frequencies[k]) / single.frequencies[k]);
+  check(what + "frequencies against the single run, relative", frequency_error, 0., 1e-8);
+
+  double mass_error = 0., coupling = 0., largest = 0.;
+  for (unsigned int a = 0; a < nm; ++a)
+  {
+    largest = std::max(largest, reduction.stiffness()(nb + a, nb + a));
+    for (unsigned int b = 0; b < nm; ++b)
+    {
+      mass_error = std::max(
+          mass_error, std::abs(reduction.mass()(nb + a, nb + b) - (a == b ? 1. : 0.)));
+      if (a != b)
+        coupling = std::max(coupling, std::abs(reduction.stiffness()(nb + a, nb + b)));
+    }
+  }
+  check(what + "modal block of M_r against the identity", mass_error, 0., 1e-8);
+  check(what + "off-diagonal modal block of K_r, relative", coupling / largest, 0., 1e-8);
+  return n_pairs;
+}
+
+/**
+ * A cantilever of square box section (40 beam elements, 4 m), its tip's
+ * translations the boundary DoFs (held: clamped-pinned both ways): its
+ * bending modes come in exact pairs.
+ */
+void check_slicing_with_pairs()
+{
+  const char *const text = "subsection Model\n  set Type = frame\n  subsection Frame\n"
+                           "    set Nodes = A: 0, 0, 0; B: 4, 0, 0\n"
+                           "    set Materials = steel: 2.1e11, 0.3, 7850\n"
+                           "    set Sections = square: box, 0.2, 0.2, 0.01, 0.01\n"
+                           "    set Members = beam: A, B, square, steel, 40\n"
+                           "    set Supports = A: clamped\n"
+                           "    set Nodal loads = B: 1000, 1000, 1000\n"
+                           "  end\nend\n"
+                           "subsection Loading\n  set Gravity = 0, 0, 0\nend\n"
+                           "subsection Time integration\n  set Method = Newmark\nend\n";
+  ParameterHandler prm;
+  Problem::declare_parameters(prm);
+  prm.parse_input_from_string(text);
+  Problem problem(prm, ConditionalOStream(std::cout, false));
+  problem.build_system();
+  const DiscreteSystem &system = problem.system;
+  std::vector<unsigned int> boundary;
+  for (unsigned int i = 0; i < system.n_dofs(); ++i)
+    if (system.constant_force[i] != 0. && !system.fixed[i])
+      boundary.push_back(i);
+  expect(boundary.size() == 3, "square cantilever: three boundary DoFs (the tip's)");
+  for (const unsigned int per_run : {4u, 5u, 7u, 16u})
+  {
+    const unsigned int n_pairs =
+        check_slicing("square cantilever", system, unit_rows(boundary), 3000., per_run);
+    expect(n_pairs >= 5, "square cantilever: double eigenvalues below the cut-off");
+  }
 }
 } // namespace
 
@@ -261,5 +364,7 @@ int main(int argc, char **argv)
            "the refusal names Reduction maximum modes");
   }
   check_tie_rows();
+  check_slicing("box girder", system, unit_rows(boundary), settings.cutoff_frequency, 4);
+  check_slicing_with_pairs();
   return finish();
 }

@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <numeric>
 #include <sstream>
 
 namespace hati
@@ -47,6 +49,169 @@ void reduction_mass_vmult(const DiscreteSystem &system,
     for (unsigned int i = 0; i < x.size(); ++i)
       y[i] = system.lumped_mass[i] * x[i];
 }
+namespace
+{
+
+/** f = omega / (2 pi) (Hz) of an eigenvalue lambda = omega^2 (0 below 0). */
+double frequency_of(const double lambda)
+{
+  return std::sqrt(std::max(lambda, 0.)) / (2. * M_PI);
+}
+
+/**
+ * Merge the slice @p found into the ascending @p kept modes, keeping the
+ * new ones: Gram-Schmidt in the M inner product against the kept modes
+ * (the modes where a slice overlaps the previous ones come again, those of
+ * a multiple eigenvalue in another basis of its eigenspace). A candidate is
+ * new if at least half of its M-norm is left; the candidates with most left
+ * go first, so that of the two copies of a double eigenvalue found again,
+ * the one with the missing direction is kept and the other is then a
+ * repeat. The new modes are M-orthogonal to the kept ones to round-off, as
+ * those of one Lanczos run are; those of a multiple eigenvalue are then
+ * mass-normalised again, their eigenvalue the Rayleigh quotient. Returns
+ * the number of modes added.
+ */
+unsigned int merge_slice(const DiscreteSystem &system,
+                         std::vector<Eigenpair> &found,
+                         std::vector<Eigenpair> &kept)
+{
+  const unsigned int n = system.n_dofs();
+  const std::size_t n_kept = kept.size();
+  // the candidates' M-products with the kept modes and the part of their
+  // M-norm^2 left
+  std::vector<std::vector<double>> coefficients(found.size());
+  std::vector<double> left(found.size(), 1.);
+  for (unsigned int c = 0; c < found.size(); ++c)
+    for (std::size_t k = 0; k < n_kept; ++k)
+    {
+      coefficients[c].push_back(kept[k].phi * found[c].Mphi);
+      left[c] -= coefficients[c].back() * coefficients[c].back();
+    }
+  std::vector<unsigned int> order(found.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(),
+                   order.end(),
+                   [&left](const unsigned int a, const unsigned int b)
+                   { return left[a] > left[b]; });
+
+  std::vector<Eigenpair> added;
+  for (const unsigned int c : order)
+  {
+    if (left[c] < 0.25)
+      continue; // a repeat of kept modes
+    Eigenpair pair = std::move(found[c]);
+    // this slice's modes kept meanwhile too
+    for (const Eigenpair &other : added)
+      coefficients[c].push_back(other.phi * pair.Mphi);
+    double removed = 0.;
+    for (std::size_t k = 0; k < coefficients[c].size(); ++k)
+    {
+      const Eigenpair &other = k < n_kept ? kept[k] : added[k - n_kept];
+      pair.phi.add(-coefficients[c][k], other.phi);
+      pair.Mphi.add(-coefficients[c][k], other.Mphi);
+      removed += coefficients[c][k] * coefficients[c][k];
+    }
+    if (removed > 1e-8)
+    {
+      // a new direction of a multiple eigenvalue
+      const double mass = pair.phi * pair.Mphi;
+      if (!(mass >= 0.25))
+        continue;
+      pair.phi /= std::sqrt(mass);
+      pair.Mphi /= std::sqrt(mass);
+      Vector<double> Kv(n);
+      system.stiffness.vmult(Kv, pair.phi);
+      pair.lambda = pair.phi * Kv;
+      unsigned int largest = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        if (std::abs(pair.phi[i]) > std::abs(pair.phi[largest]))
+          largest = i;
+      if (pair.phi[largest] < 0.)
+      {
+        pair.phi *= -1.;
+        pair.Mphi *= -1.;
+      }
+    }
+    added.push_back(std::move(pair));
+  }
+  for (Eigenpair &pair : added)
+    kept.push_back(std::move(pair));
+  std::stable_sort(kept.begin(),
+                   kept.end(),
+                   [](const Eigenpair &a, const Eigenpair &b)
+                   { return a.lambda < b.lambda; });
+  return added.size();
+}
+
+/**
+ * The fixed-interface modes of @p problem up to @p cutoff (Hz), or at least
+ * @p limit of them, by spectrum slicing: shift-invert Lanczos runs of
+ * @p per_run modes nearest a shift, from the lowest ones up, the operator
+ * deflated of the kept modes near the shift (from `deflated_from` up), so
+ * that a slice holds modes not kept yet (merge_slice() drops the repeats).
+ * Every eigenvalue within a slice's radius of its shift (the distance to the
+ * farthest one found) is then kept; once a slice reaches strictly below
+ * `covered` (a multiple eigenvalue at `covered`, perhaps cut by the last
+ * slice, then lies inside it), every eigenvalue up to its shift + radius is.
+ * The next shift lies 0.4 of the slice's width above `covered`, so that the
+ * next slice, at a similar modal density, reaches below it; if it does not
+ * (the density grew), again at the same shift (the factorisation is kept),
+ * these modes deflated too. A slice has fewer modes when the modal density
+ * of the kept ones says that fewer remain below the cut-off. Counts the runs
+ * in @p runs; returns the kept modes, ascending.
+ */
+std::vector<Eigenpair> slice_spectrum(const DiscreteSystem &system,
+                                      const ModalProblem &problem,
+                                      const unsigned int per_run,
+                                      const unsigned int limit,
+                                      const double cutoff,
+                                      unsigned int &runs)
+{
+  std::vector<Eigenpair> kept;
+  double shift = problem.lowest_shift(), covered = -std::numeric_limits<double>::max();
+  double deflated_from = covered;
+  unsigned int n_run = per_run, repeats = 0;
+  while (true)
+  {
+    std::vector<const Eigenpair *> deflated;
+    for (auto pair = kept.rbegin(); pair != kept.rend() && pair->lambda >= deflated_from;
+         ++pair)
+      deflated.push_back(&*pair);
+    while (!deflated.empty() && !problem.lanczos_applies(n_run, deflated.size()))
+      deflated.pop_back(); // (a small system) the farthest ones may come again
+    std::vector<Eigenpair> found = problem.modes_near(shift, n_run, deflated);
+    ++runs;
+    const double lowest = found.front().lambda, highest = found.back().lambda;
+    const double radius = std::max(highest - shift, shift - lowest);
+    merge_slice(system, found, kept);
+    if (covered > -std::numeric_limits<double>::max() &&
+        shift - radius >= covered - 1e-8 * std::abs(covered))
+    {
+      AssertThrow(++repeats < 8,
+                  ExcMessage(where +
+                             "Implicit reduction = Craig-Bampton: the "
+                             "fixed-interface modes above " +
+                             std::to_string(frequency_of(covered)) +
+                             " Hz are not contiguous across 8 Lanczos runs."));
+      continue;
+    }
+    repeats = 0;
+    covered = std::max(covered, shift + radius);
+    if (frequency_of(covered) > cutoff || kept.size() >= limit)
+      return kept;
+    std::vector<double> frequencies;
+    for (const Eigenpair &pair : kept)
+      frequencies.push_back(frequency_of(pair.lambda));
+    const double remaining = estimated_mode_count(frequencies, cutoff) - kept.size();
+    const unsigned int next = static_cast<unsigned int>(std::min<double>(
+        per_run,
+        std::max<double>(std::min(per_run, 8u), std::ceil(1.25 * remaining) + 4.)));
+    deflated_from = covered - 2. * (highest - lowest);
+    shift = covered + 0.4 * (highest - lowest) * next / n_run;
+    n_run = next;
+  }
+}
+} // namespace
 
 std::vector<SparseRow> unit_rows(const std::vector<unsigned int> &dofs)
 {
@@ -164,41 +329,39 @@ void CraigBamptonReduction::add_fixed_interface_modes(
   const unsigned int limit = std::min(settings.maximum_modes, n_free_interior);
   if (limit == 0)
     return;
-  // more modes until the last one is above the cut-off (or the limit): the
-  // next count from the modal density of the modes found, with a margin
-  // (each count is a new Lanczos run), at least twice the last
-  unsigned int wanted = std::min(limit, 12u);
-  ModalResult modes;
-  while (true)
+  const ModalProblem problem(system, false, nullptr, settings.linear_solver, &boundary);
+  const unsigned int per_run = std::min(std::max(settings.modes_per_run, 4u), limit);
+  std::vector<Eigenpair> kept;
+  if (problem.lanczos_applies(per_run))
+    kept = slice_spectrum(
+        system, problem, per_run, limit, settings.cutoff_frequency, n_lanczos_runs);
+  else
   {
-    modes =
-        compute_modes(system, wanted, false, nullptr, settings.linear_solver, &boundary);
+    // a small system: one dense solve gives every mode up to the limit
+    kept = problem.modes_near(problem.lowest_shift(), limit);
     ++n_lanczos_runs;
-    if (modes.frequencies.back() > settings.cutoff_frequency || wanted == limit)
-      break;
-    const double needed =
-        estimated_mode_count(modes.frequencies, settings.cutoff_frequency);
-    wanted = static_cast<unsigned int>(
-        std::min<double>(limit, std::max(2. * wanted, std::ceil(1.2 * needed) + 4.)));
   }
-  const double last = modes.frequencies.back();
-  if (last <= settings.cutoff_frequency && wanted < n_free_interior)
+  if (kept.size() >= limit &&
+      frequency_of(kept[limit - 1].lambda) <= settings.cutoff_frequency &&
+      limit < n_free_interior)
   {
-    const double needed =
-        estimated_mode_count(modes.frequencies, settings.cutoff_frequency);
+    std::vector<double> frequencies;
+    for (unsigned int k = 0; k < limit; ++k)
+      frequencies.push_back(frequency_of(kept[k].lambda));
+    const double needed = estimated_mode_count(frequencies, settings.cutoff_frequency);
     std::ostringstream m;
     m << where << "Reduction cutoff frequency = " << settings.cutoff_frequency
       << " Hz needs more than Reduction maximum modes = " << settings.maximum_modes
-      << " fixed-interface modes (mode " << wanted << " is at " << last << " Hz): about "
-      << static_cast<unsigned long>(std::ceil(needed))
+      << " fixed-interface modes (mode " << limit << " is at " << frequencies.back()
+      << " Hz): about " << static_cast<unsigned long>(std::ceil(needed))
       << " by the modal density; raise Reduction maximum modes or lower the cut-off";
     AssertThrow(false, ExcMessage(m.str()));
   }
-  for (unsigned int k = 0; k < modes.frequencies.size(); ++k)
-    if (modes.frequencies[k] <= settings.cutoff_frequency)
+  for (Eigenpair &pair : kept)
+    if (frequency_of(pair.lambda) <= settings.cutoff_frequency)
     {
-      modal_frequencies.push_back(modes.frequencies[k]);
-      columns.push_back(std::move(modes.modes[k]));
+      modal_frequencies.push_back(frequency_of(pair.lambda));
+      columns.push_back(std::move(pair.phi));
     }
 }
 

@@ -36,6 +36,7 @@
 #include <complex>
 #include <limits>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <random>
 #include <sstream>
@@ -46,20 +47,46 @@ namespace
 {
 /**
  * The shift-invert operator (K - sigma M)^-1 of ARPACK's mode 3: one
- * factorisation with the Amesos @p package (Amesos_Klu or Amesos_Mumps), one
- * forward/backward substitution per vmult().
+ * factorisation of `K - sigma M` with the Amesos @p package (Amesos_Klu or
+ * Amesos_Mumps), one forward/backward substitution per vmult(). A positive
+ * shift (inside the spectrum: the factorisation is indefinite) is nudged
+ * upwards by 1e-6 relative, at most twice, if the factorisation fails (the
+ * shift on an eigenvalue).
  */
 class ShiftedInverse
 {
 public:
-  ShiftedInverse(const SparseMatrix<double> &shifted_matrix, const std::string &package)
-      : solver(package)
+  ShiftedInverse(const SparseMatrix<double> &K,
+                 const SparseMatrix<double> &M,
+                 const double shift,
+                 const std::string &package)
+      : sigma(shift), solver(package)
   {
-    solver.factorize(shifted_matrix,
-                     "modal analysis: " + package +
-                         " found a zero pivot in the shifted stiffness K - sigma M (a "
-                         "free DoF without stiffness and without mass?).");
+    // fixed rows: K keeps a positive diagonal, M is zero there
+    SparseMatrix<double> shifted(K.get_sparsity_pattern());
+    for (unsigned int attempt = 0;; ++attempt)
+    {
+      shifted.copy_from(K);
+      shifted.add(-sigma, M);
+      try
+      {
+        solver.factorize(shifted,
+                         "modal analysis: " + package +
+                             " found a zero pivot in the shifted stiffness K - sigma M "
+                             "(a free DoF without stiffness and without mass?).");
+        return;
+      }
+      catch (const std::exception &)
+      {
+        if (sigma <= 0. || attempt == 2)
+          throw;
+        sigma *= 1. + 1e-6;
+      }
+    }
   }
+
+  /** The shift factorised (1/s^2). */
+  double shift() const { return sigma; }
 
   /** dst = (K - sigma M)^-1 src. */
   void vmult(Vector<double> &dst, const Vector<double> &src) const
@@ -68,14 +95,41 @@ public:
   }
 
 private:
+  double sigma;
   DirectSolver solver;
 };
 
-/** One eigenpair before sorting. */
-struct Eigenpair
+/**
+ * The shift-invert operator deflated of the M-orthonormal vectors Z:
+ * `P (K - sigma M)^-1 P^T` with `P = I - Z Z^T M`, applied to `b = M x` as
+ * ARPACK does: `P (K - sigma M)^-1 M P x`, whose eigenvalues are those of
+ * the shift-invert operator but 0 on span(Z). (@p MZ: the products M Z.)
+ */
+class DeflatedInverse
 {
-  double lambda;
-  Vector<double> phi;
+public:
+  DeflatedInverse(const ShiftedInverse &inverse,
+                  const std::vector<Vector<double>> &Z,
+                  const std::vector<const Vector<double> *> &MZ)
+      : inverse(inverse), Z(Z), MZ(MZ)
+  {
+  }
+
+  /** dst = P (K - sigma M)^-1 P^T src. */
+  void vmult(Vector<double> &dst, const Vector<double> &src) const
+  {
+    Vector<double> projected(src);
+    for (unsigned int k = 0; k < Z.size(); ++k)
+      projected.add(-(Z[k] * src), *MZ[k]);
+    inverse.vmult(dst, projected);
+    for (unsigned int k = 0; k < Z.size(); ++k)
+      dst.add(-(*MZ[k] * dst), Z[k]);
+  }
+
+private:
+  const ShiftedInverse &inverse;
+  const std::vector<Vector<double>> &Z;
+  const std::vector<const Vector<double> *> &MZ;
 };
 
 /** Dense generalized eigenproblem on the free DoFs (LAPACK dsygv). */
@@ -128,35 +182,39 @@ std::vector<Eigenpair> dense_modes(const SparseMatrix<double> &K,
 }
 
 /**
- * ARPACK shift-invert Lanczos with ncv Lanczos vectors, the shifted stiffness
- * factorised with the Amesos @p package.
+ * The shift of the lowest modes: sigma = -s < 0, so that K - sigma M = K +
+ * s M is positive definite even if the model has rigid-body modes (K only
+ * semi-definite), and the wanted eigenvalues lambda >= 0 > sigma are the
+ * largest nu = 1/(lambda - sigma) in magnitude. s is tiny next to the
+ * stiffness scale: the accuracy of the elastic eigenvalues does not depend
+ * on it (round-off eps ||K||).
  */
+double shift_below_spectrum(const SparseMatrix<double> &K,
+                            const SparseMatrix<double> &M,
+                            const std::vector<bool> &fixed)
+{
+  double ratio = std::numeric_limits<double>::max();
+  for (unsigned int i = 0; i < K.m(); ++i)
+    if (!fixed[i] && M.diag_element(i) > 0. && K.diag_element(i) > 0.)
+      ratio = std::min(ratio, K.diag_element(i) / M.diag_element(i));
+  return -(ratio < std::numeric_limits<double>::max() ? 1e-8 * ratio : 1e-8);
+}
+
+/**
+ * ARPACK shift-invert Lanczos with ncv Lanczos vectors: the @p n_modes
+ * eigenpairs nearest the shift @p sigma of @p inverse (its shift-invert operator,
+ * ShiftedInverse, or deflated, DeflatedInverse).
+ */
+template <typename Inverse>
 std::vector<Eigenpair> arpack_modes(const SparseMatrix<double> &K,
                                     const SparseMatrix<double> &M,
                                     const std::vector<bool> &fixed,
+                                    const Inverse &inverse,
+                                    const double sigma,
                                     const unsigned int n_modes,
-                                    const unsigned int ncv,
-                                    const std::string &package)
+                                    const unsigned int ncv)
 {
   const unsigned int n = K.m();
-  // Shift sigma = -s < 0: K - sigma M = K + s M is positive definite even if
-  // the model has rigid-body modes (K only semi-definite), and the wanted
-  // eigenvalues lambda >= 0 > sigma are the largest nu = 1/(lambda - sigma)
-  // in magnitude. s is tiny next to the stiffness scale: the accuracy of the
-  // elastic eigenvalues does not depend on it (round-off eps ||K||).
-  double ratio = std::numeric_limits<double>::max();
-  for (unsigned int i = 0; i < n; ++i)
-    if (!fixed[i] && M.diag_element(i) > 0. && K.diag_element(i) > 0.)
-      ratio = std::min(ratio, K.diag_element(i) / M.diag_element(i));
-  const double sigma =
-      -(ratio < std::numeric_limits<double>::max() ? 1e-8 * ratio : 1e-8);
-
-  SparseMatrix<double> shifted(K.get_sparsity_pattern());
-  shifted.copy_from(K);
-  shifted.add(-sigma, M);
-  // fixed rows: K keeps a positive diagonal, M is zero there
-  const ShiftedInverse inverse(shifted, package);
-
   SolverControl control(10000, 1e-13);
   ArpackSolver::AdditionalData data(ncv, ArpackSolver::largest_magnitude, true);
   ArpackSolver eigensolver(control, data);
@@ -288,7 +346,7 @@ double max_row_sum(const SparseMatrix<double> &A)
  * Zero mode @p k (counted from 0) on the @p fixed DoFs, mass-normalise it
  * and check `K phi = lambda M phi` on the free DoFs (relative 1e-6, plus
  * 1e-10 `||K||_inf ||phi||`, @p norm_K); throws if it has no kinetic energy
- * or is not an eigenpair.
+ * or is not an eigenpair. @p Mphi: M phi of the normalised mode.
  */
 void normalise_and_check(const unsigned int k,
                          const double lambda,
@@ -296,10 +354,12 @@ void normalise_and_check(const unsigned int k,
                          const SparseMatrix<double> &M,
                          const std::vector<bool> &fixed,
                          const double norm_K,
-                         Vector<double> &phi)
+                         Vector<double> &phi,
+                         Vector<double> &Mphi)
 {
   const unsigned int n = phi.size();
-  Vector<double> Kphi(n), Mphi(n), r(n);
+  Vector<double> Kphi(n), r(n);
+  Mphi.reinit(n);
   for (unsigned int i = 0; i < n; ++i)
     if (fixed[i])
       phi[i] = 0.;
@@ -331,6 +391,200 @@ void normalise_and_check(const unsigned int k,
 }
 } // namespace
 
+/**
+ * The eigenproblem on the free DoFs: K and M, and with closed contacts or
+ * held rows `K_r = T^T K T`, `M_r = T^T M T` on the full numbering, the
+ * eliminated (slave) DoFs held like fixed ones (doc/theory.md 7.3).
+ */
+struct ModalProblem::Data
+{
+  const unsigned int n;
+  const std::string package;
+  const ModalMatrices matrices;
+  RowElimination elimination;
+  unsigned int n_closed_contacts = 0, n_constraints = 0;
+  std::vector<bool> fixed;
+  SparsityPattern condensed_pattern;
+  SparseMatrix<double> K_condensed, M_condensed;
+  unsigned int n_free = 0;
+  /** The last factorisation, of the shift @p factorised_shift asked for. */
+  mutable std::unique_ptr<ShiftedInverse> inverse;
+  mutable double factorised_shift = 0.;
+
+  Data(const DiscreteSystem &system,
+       const bool close_contacts,
+       const Vector<double> *rope_state,
+       const std::string &linear_solver,
+       const std::vector<SparseRow> *held)
+      : n(system.n_dofs()), package(direct_solver_package(linear_solver, n)),
+        matrices(system, rope_state),
+        elimination(close_contacts ? RowElimination(system) : RowElimination())
+  {
+    n_closed_contacts = elimination.n_closed;
+    n_constraints = elimination.slaves.size();
+    if (held)
+      for (const SparseRow &row : *held)
+        elimination.eliminate(system.fixed, row, false);
+    fixed = system.fixed;
+    if (!elimination.slaves.empty())
+    {
+      std::vector<double> diagonal(n, 1.), zero(n, 0.);
+      for (const auto &entry : elimination.slaves)
+      {
+        fixed[entry.first] = true;
+        if (matrices.K.diag_element(entry.first) > 0.)
+          diagonal[entry.first] = matrices.K.diag_element(entry.first);
+      }
+      elimination.condense(matrices.K, diagonal, condensed_pattern, K_condensed);
+      elimination.condense(matrices.M, zero, condensed_pattern, M_condensed);
+    }
+    n_free = std::count(fixed.begin(), fixed.end(), false);
+  }
+
+  /** K of the eigenproblem solved (condensed if rows are eliminated). */
+  const SparseMatrix<double> &K() const
+  {
+    return elimination.slaves.empty() ? matrices.K : K_condensed;
+  }
+  /** M of the eigenproblem solved (condensed if rows are eliminated). */
+  const SparseMatrix<double> &M() const
+  {
+    return elimination.slaves.empty() ? matrices.M : M_condensed;
+  }
+  /**
+   * ARPACK's ncv for @p n_modes with @p n_deflated vectors deflated: 2
+   * n_modes + 1 < ncv < n and ncv <= n_free - n_deflated.
+   */
+  unsigned int ncv(const unsigned int n_modes, const unsigned int n_deflated) const
+  {
+    // ncv <= n_free keeps the Lanczos basis inside the space of the free DoFs
+    return std::min({n_free - std::min(n_deflated, n_free),
+                     n - 1,
+                     std::max(2 * n_modes + 2, n_modes + 20)});
+  }
+};
+
+ModalProblem::ModalProblem(const DiscreteSystem &system,
+                           const bool close_contacts,
+                           const Vector<double> *rope_state,
+                           const std::string &linear_solver,
+                           const std::vector<SparseRow> *held)
+{
+  AssertThrow(system.fixed.size() == system.n_dofs(),
+              ExcMessage("modal analysis: the DiscreteSystem has no fixed flags."));
+  data = std::make_unique<Data>(system, close_contacts, rope_state, linear_solver, held);
+}
+
+ModalProblem::~ModalProblem() = default;
+
+unsigned int ModalProblem::n_free() const { return data->n_free; }
+
+unsigned int ModalProblem::n_closed_contacts() const { return data->n_closed_contacts; }
+
+unsigned int ModalProblem::n_constraints() const { return data->n_constraints; }
+
+const SparseMatrix<double> &ModalProblem::mass() const { return data->matrices.M; }
+
+double ModalProblem::lowest_shift() const
+{
+  return shift_below_spectrum(data->K(), data->M(), data->fixed);
+}
+
+bool ModalProblem::lanczos_applies(const unsigned int n_modes,
+                                   const unsigned int n_deflated) const
+{
+  return data->ncv(n_modes, n_deflated) >= 2 * n_modes + 2;
+}
+
+std::vector<Eigenpair>
+ModalProblem::modes_near(const double shift,
+                         const unsigned int n_modes,
+                         const std::vector<const Eigenpair *> &deflated) const
+{
+  AssertThrow(n_modes <= data->n_free,
+              ExcMessage("modal analysis: " + std::to_string(n_modes) +
+                         " modes requested, but the model has only " +
+                         std::to_string(data->n_free) + " free degrees of freedom" +
+                         (data->elimination.slaves.empty()
+                              ? std::string()
+                              : " once its closed contacts hold " +
+                                    std::to_string(data->elimination.slaves.size())) +
+                         " (the number of modes)."));
+  if (n_modes == 0)
+    return {};
+  const SparseMatrix<double> &K = data->K(), &M = data->M();
+  const std::vector<bool> &fixed = data->fixed;
+  const unsigned int ncv = data->ncv(n_modes, deflated.size());
+  const bool lanczos = lanczos_applies(n_modes, deflated.size());
+  AssertThrow(lanczos || deflated.empty(),
+              ExcMessage("modal analysis: " + std::to_string(deflated.size()) +
+                         " modes deflated leave too few free DoFs for " +
+                         std::to_string(n_modes) + " modes with ARPACK."));
+  std::vector<Eigenpair> pairs;
+  if (lanczos)
+  {
+    if (!data->inverse || data->factorised_shift != shift)
+    {
+      data->inverse.reset();
+      data->inverse = std::make_unique<ShiftedInverse>(K, M, shift, data->package);
+      data->factorised_shift = shift;
+    }
+    const ShiftedInverse &inverse = *data->inverse;
+    if (deflated.empty())
+      pairs = arpack_modes(K, M, fixed, inverse, inverse.shift(), n_modes, ncv);
+    else
+    {
+      // the deflated modes on the condensed problem: zero on its fixed DoFs
+      std::vector<Vector<double>> Z(deflated.size());
+      std::vector<const Vector<double> *> MZ(deflated.size());
+      for (unsigned int k = 0; k < deflated.size(); ++k)
+      {
+        Z[k] = deflated[k]->phi;
+        for (unsigned int i = 0; i < Z[k].size(); ++i)
+          if (fixed[i])
+            Z[k][i] = 0.;
+        MZ[k] = &deflated[k]->Mphi;
+      }
+      pairs = arpack_modes(
+          K, M, fixed, DeflatedInverse(inverse, Z, MZ), inverse.shift(), n_modes, ncv);
+    }
+  }
+  else
+    pairs = dense_modes(K, M, fixed);
+  std::sort(pairs.begin(),
+            pairs.end(),
+            [](const Eigenpair &a, const Eigenpair &b) { return a.lambda < b.lambda; });
+  // the n_modes nearest the shift: a window of the ascending eigenvalues
+  // (the lowest ones for a shift below the spectrum)
+  std::size_t first = 0;
+  while (first + n_modes < pairs.size() &&
+         std::abs(pairs[first + n_modes].lambda - shift) <
+             std::abs(pairs[first].lambda - shift))
+    ++first;
+  pairs.erase(pairs.begin(), pairs.begin() + first);
+  pairs.resize(n_modes);
+
+  // mass-normalise and check (on the free DoFs of the condensed problem),
+  // back-substitute the slaves, fix the sign (largest entry positive)
+  const double norm_K = max_row_sum(K);
+  for (unsigned int k = 0; k < n_modes; ++k)
+  {
+    Vector<double> &phi = pairs[k].phi;
+    normalise_and_check(k, pairs[k].lambda, K, M, fixed, norm_K, phi, pairs[k].Mphi);
+    data->elimination.distribute(phi);
+    unsigned int largest = 0;
+    for (unsigned int i = 0; i < phi.size(); ++i)
+      if (std::abs(phi[i]) > std::abs(phi[largest]))
+        largest = i;
+    if (phi[largest] < 0.)
+    {
+      phi *= -1.;
+      pairs[k].Mphi *= -1.;
+    }
+  }
+  return pairs;
+}
+
 ModalResult compute_modes(const DiscreteSystem &system,
                           const unsigned int n_modes,
                           const bool close_contacts,
@@ -339,92 +593,27 @@ ModalResult compute_modes(const DiscreteSystem &system,
                           const std::vector<SparseRow> *held)
 {
   const unsigned int n = system.n_dofs();
-  AssertThrow(system.fixed.size() == n,
-              ExcMessage("modal analysis: the DiscreteSystem has no fixed flags."));
-  const std::string package = direct_solver_package(linear_solver, n);
-  const ModalMatrices matrices(system, rope_state);
-  const SparseMatrix<double> &K = matrices.K, &M = matrices.M;
+  const ModalProblem problem(system, close_contacts, rope_state, linear_solver, held);
   ModalResult result;
-  const std::array<Vector<double>, 3> Mr = influence_masses(system, M, result.total_mass);
+  const std::array<Vector<double>, 3> Mr =
+      influence_masses(system, problem.mass(), result.total_mass);
+  result.n_closed_contacts = problem.n_closed_contacts();
+  result.n_constraints = problem.n_constraints();
 
-  // closed contacts (doc/theory.md 7.3): K_r = T^T K T, M_r = T^T M T on the
-  // full numbering, the eliminated (slave) DoFs held like fixed ones
-  RowElimination elimination = close_contacts ? RowElimination(system) : RowElimination();
-  result.n_closed_contacts = elimination.n_closed;
-  result.n_constraints = elimination.slaves.size();
-  if (held)
-    for (const SparseRow &row : *held)
-      elimination.eliminate(system.fixed, row, false);
-  std::vector<bool> fixed = system.fixed;
-  SparsityPattern condensed_pattern;
-  SparseMatrix<double> K_condensed, M_condensed;
-  if (!elimination.slaves.empty())
+  std::vector<Eigenpair> pairs = problem.modes_near(problem.lowest_shift(), n_modes);
+  for (Eigenpair &pair : pairs)
   {
-    std::vector<double> diagonal(n, 1.), zero(n, 0.);
-    for (const auto &entry : elimination.slaves)
-    {
-      fixed[entry.first] = true;
-      if (K.diag_element(entry.first) > 0.)
-        diagonal[entry.first] = K.diag_element(entry.first);
-    }
-    elimination.condense(K, diagonal, condensed_pattern, K_condensed);
-    elimination.condense(M, zero, condensed_pattern, M_condensed);
-  }
-  const SparseMatrix<double> &Kw = elimination.slaves.empty() ? K : K_condensed;
-  const SparseMatrix<double> &Mw = elimination.slaves.empty() ? M : M_condensed;
-
-  const unsigned int n_free = std::count(fixed.begin(), fixed.end(), false);
-  AssertThrow(n_modes <= n_free,
-              ExcMessage("modal analysis: " + std::to_string(n_modes) +
-                         " modes requested, but the model has only " +
-                         std::to_string(n_free) + " free degrees of freedom" +
-                         (elimination.slaves.empty()
-                              ? std::string()
-                              : " once its closed contacts hold " +
-                                    std::to_string(elimination.slaves.size())) +
-                         " (the number of modes)."));
-  if (n_modes == 0)
-    return result;
-
-  // ARPACK needs 2 n_modes + 1 < ncv < n; ncv <= n_free keeps the Lanczos
-  // basis inside the space of the free DoFs
-  const unsigned int ncv =
-      std::min({n_free, n - 1, std::max(2 * n_modes + 2, n_modes + 20)});
-  std::vector<Eigenpair> pairs = (ncv >= 2 * n_modes + 2)
-                                     ? arpack_modes(Kw, Mw, fixed, n_modes, ncv, package)
-                                     : dense_modes(Kw, Mw, fixed);
-  std::sort(pairs.begin(),
-            pairs.end(),
-            [](const Eigenpair &a, const Eigenpair &b) { return a.lambda < b.lambda; });
-  pairs.resize(n_modes);
-
-  // mass-normalise and check (on the free DoFs of the condensed problem),
-  // back-substitute the slaves, fix the sign (largest entry positive)
-  const double norm_K = max_row_sum(Kw);
-  for (unsigned int k = 0; k < n_modes; ++k)
-  {
-    Vector<double> &phi = pairs[k].phi;
-    const double lambda = pairs[k].lambda;
-    normalise_and_check(k, lambda, Kw, Mw, fixed, norm_K, phi);
-    elimination.distribute(phi);
-    unsigned int largest = 0;
-    for (unsigned int i = 0; i < n; ++i)
-      if (std::abs(phi[i]) > std::abs(phi[largest]))
-        largest = i;
-    if (phi[largest] < 0.)
-      phi *= -1.;
-
-    result.frequencies.push_back(std::sqrt(std::max(lambda, 0.)) / (2. * M_PI));
+    result.frequencies.push_back(std::sqrt(std::max(pair.lambda, 0.)) / (2. * M_PI));
     std::array<double, 3> gamma{{0., 0., 0.}}, effective{{0., 0., 0.}};
     for (unsigned int d = 0; d < 3; ++d)
       if (Mr[d].size() == n)
       {
-        gamma[d] = phi * Mr[d];
+        gamma[d] = pair.phi * Mr[d];
         effective[d] = gamma[d] * gamma[d];
       }
     result.participation.push_back(gamma);
     result.effective_mass.push_back(effective);
-    result.modes.push_back(std::move(phi));
+    result.modes.push_back(std::move(pair.phi));
   }
   return result;
 }

@@ -43,8 +43,8 @@ SummaryValue frequency_check(const DiscreteSystem &full,
   const unsigned int n_rigid = std::count_if(
       all.begin(), all.end(), [&](double f) { return f < rigid_mode_fraction * cutoff; });
   const unsigned int n_free = std::count(full.fixed.begin(), full.fixed.end(), false);
-  const unsigned int n =
-      std::min<unsigned int>({checked_modes, all.size() - n_rigid, n_free - n_rigid});
+  const unsigned int n = std::min<unsigned int>(
+      {checked_modes, static_cast<unsigned int>(all.size()) - n_rigid, n_free - n_rigid});
   SummaryValue check = SummaryValue::object();
   if (n == 0)
     return check;

@@ -26,6 +26,17 @@ void reduction_mass_vmult(const DiscreteSystem &system,
 /** One unit row per DoF of @p dofs: DoFs as boundary rows of a reduction. */
 std::vector<SparseRow> unit_rows(const std::vector<unsigned int> &dofs);
 
+/**
+ * Modes per shift-invert Lanczos run of the spectrum slicing of the
+ * fixed-interface modes (CraigBamptonSettings::modes_per_run). ARPACK's
+ * orthogonalisation costs O(n ncv^2) per restart (ncv = 2 nev + 2), each
+ * run one factorisation of `K - sigma M`. The 182 modes below 150 Hz of
+ * the 3D crane's implicit part (54186 DoFs, reference BLAS, a shared
+ * machine): 100-127 s in 3 runs of 64, 130-145 s in 4 runs of 48, 384 s in
+ * a run of 12 then one of 220 before the slicing.
+ */
+constexpr unsigned int default_modes_per_run = 64;
+
 /** What a Craig-Bampton reduction keeps (CraigBamptonReduction). */
 struct CraigBamptonSettings
 {
@@ -39,6 +50,12 @@ struct CraigBamptonSettings
    * iterative): the factorisations of `K_ii` and of the shift-invert.
    */
   std::string linear_solver = "auto";
+  /**
+   * Modes per shift-invert Lanczos run (-), at least 4: the fixed-interface
+   * modes come in slices of this many (fewer for the last ones), each
+   * around its own shift.
+   */
+  unsigned int modes_per_run = default_modes_per_run;
 };
 
 /**
@@ -49,13 +66,15 @@ struct CraigBamptonSettings
  * `Psi_k`, the static displacements with `L Psi_k = e_k` and no other load
  * (one sparse solve each with one factorisation of the stiffness
  * condensed on `L U = 0`), the fixed-interface modes `K phi = omega^2 M phi`
- * on `L phi = 0` up to the cut-off (shift-invert Lanczos, compute_modes()
- * with the rows held), the basis `T = [Psi, Phi]` and the dense reduced
- * matrices `M_r = T^T M T`, `K_r = T^T K T`. Reduced coordinates `q = (g,
- * eta)`: the boundary values first, then the modal amplitudes; an interface
- * force `L^T Lambda` reduces to `(Lambda, 0)`. Fixed DoFs are zero in every
- * column. Exact for static loads `L^T f`; below the cut-off the dynamics are
- * those of the unreduced system up to the truncation.
+ * on `L phi = 0` up to the cut-off (spectrum slicing: shift-invert
+ * Lanczos runs of CraigBamptonSettings::modes_per_run modes around
+ * successive shifts, ModalProblem with the rows held), the basis `T = [Psi,
+ * Phi]` and the dense reduced matrices `M_r = T^T M T`, `K_r = T^T K T`.
+ * Reduced coordinates `q = (g, eta)`: the boundary values first, then the
+ * modal amplitudes; an interface force `L^T Lambda` reduces to `(Lambda,
+ * 0)`. Fixed DoFs are zero in every column. Exact for static loads `L^T f`;
+ * below the cut-off the dynamics are those of the unreduced system up to
+ * the truncation.
  *
  * The system's consistent mass is used if it has one, else its lumped mass.
  */
@@ -116,7 +135,7 @@ public:
    * Lanczos runs), the reduced matrices.
    */
   const std::array<double, 3> &set_up_phases() const { return phase_seconds; }
-  /** Shift-invert Lanczos runs to reach the cut-off (-). */
+  /** Shift-invert Lanczos runs (slices) to reach the cut-off (-); 1 for a dense solve. */
   unsigned int lanczos_runs() const { return n_lanczos_runs; }
 
 private:

@@ -6,6 +6,7 @@
 #include <hati/model/discrete_system.h>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -75,6 +76,98 @@ ModalResult compute_modes(const DiscreteSystem &system,
                           const Vector<double> *rope_state = nullptr,
                           const std::string &linear_solver = "auto",
                           const std::vector<SparseRow> *held = nullptr);
+
+/** One eigenpair of ModalProblem::modes_near(). */
+struct Eigenpair
+{
+  /** The eigenvalue lambda = omega^2 (1/s^2). */
+  double lambda = 0.;
+  /**
+   * The mode phi on the system's DoFs, mass-normalised (phi.M phi = 1), zero
+   * on fixed DoFs, the eliminated rows distributed back, its largest entry
+   * positive.
+   */
+  Vector<double> phi;
+  /**
+   * M phi in the eigenproblem's space (zero on fixed DoFs and on the
+   * eliminated ones): `psi.Mphi = psi^T M phi` for every mode psi of the
+   * same ModalProblem.
+   */
+  Vector<double> Mphi;
+};
+
+/**
+ * The eigenproblem of compute_modes() set up once (K, M, the closed contacts
+ * and held rows eliminated), then solved for the modes nearest any shift:
+ * spectrum slicing (doc/theory.md 12.1), one shift-invert Lanczos run of
+ * moderate size per slice instead of one large run, whose orthogonalisation
+ * costs O(n ncv^2) per restart. compute_modes() is modes_near() at
+ * lowest_shift().
+ */
+class ModalProblem
+{
+public:
+  /**
+   * Assemble and condense the eigenproblem; the parameters are those of
+   * compute_modes().
+   */
+  ModalProblem(const DiscreteSystem &system,
+               const bool close_contacts = true,
+               const Vector<double> *rope_state = nullptr,
+               const std::string &linear_solver = "auto",
+               const std::vector<SparseRow> *held = nullptr);
+  ~ModalProblem();
+
+  /** Free DoFs less the eliminated ones: the number of eigenpairs (-). */
+  unsigned int n_free() const;
+  /** Closed contact rows (ModalResult::n_closed_contacts). */
+  unsigned int n_closed_contacts() const;
+  /** Independent constraints among them (ModalResult::n_constraints). */
+  unsigned int n_constraints() const;
+  /** The mass matrix M of the eigenproblem on the system's DoFs (zero on fixed DoFs). */
+  const SparseMatrix<double> &mass() const;
+
+  /**
+   * The shift of compute_modes() (1/s^2): tiny and negative, so that `K -
+   * sigma M` is positive definite and modes_near() gives the lowest modes.
+   */
+  double lowest_shift() const;
+
+  /**
+   * Whether modes_near() runs ARPACK for @p n_modes modes with @p n_deflated
+   * modes deflated (its constraint `2 n_modes + 1 < ncv <= n_free() -
+   * n_deflated`); otherwise it solves the dense problem.
+   */
+  bool lanczos_applies(const unsigned int n_modes,
+                       const unsigned int n_deflated = 0) const;
+
+  /**
+   * The @p n_modes eigenpairs whose eigenvalues are nearest @p shift, but
+   * for the @p deflated modes, ascending, each checked as compute_modes()
+   * checks its modes (or an exception is thrown).
+   *
+   * A shift inside the spectrum makes `K - sigma M` indefinite: the LU
+   * factorisation (KLU or MUMPS, with pivoting) handles it; should it fail
+   * (the shift on an eigenvalue), the shift is nudged upwards by 1e-6
+   * relative, at most twice. The factorisation is kept for the next call
+   * with the same shift.
+   *
+   * @param shift sigma (1/s^2).
+   * @param n_modes number of eigenpairs (-), at most n_free().
+   * @param deflated modes found before by modes_near() (M-orthonormal)
+   *        that the shift-invert operator is deflated of: ARPACK then finds
+   *        the eigenpairs nearest the shift among the others. ARPACK only
+   *        (lanczos_applies()).
+   */
+  std::vector<Eigenpair>
+  modes_near(const double shift,
+             const unsigned int n_modes,
+             const std::vector<const Eigenpair *> &deflated = {}) const;
+
+private:
+  struct Data;
+  std::unique_ptr<Data> data;
+};
 } // namespace hati
 
 #endif
