@@ -394,6 +394,16 @@ void CraigBamptonReduction::expand(const Vector<double> &q, Vector<double> &u) c
       u.add(q[k], columns[k]);
 }
 
+FullMatrix<double>
+CraigBamptonReduction::basis_rows(const std::vector<unsigned int> &rows) const
+{
+  FullMatrix<double> B(rows.size(), size());
+  for (unsigned int k = 0; k < size(); ++k)
+    for (unsigned int i = 0; i < rows.size(); ++i)
+      B(i, k) = columns[k][rows[i]];
+  return B;
+}
+
 void CraigBamptonReduction::project(const Vector<double> &f, Vector<double> &r) const
 {
   r.reinit(size());

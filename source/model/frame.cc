@@ -567,6 +567,30 @@ void Frame::write_section_forces(std::ostream *out,
     solids->cuts().write(out, time, u, gravity, section_force_output);
 }
 
+std::vector<types::global_dof_index> Frame::section_force_dofs() const
+{
+  std::vector<types::global_dof_index> dofs;
+  for (const auto &name : frame.section_force_members)
+    for (const auto &cell : cells)
+      if (frame.members[cell.member].name == name)
+        dofs.insert(dofs.end(), cell.dofs.begin(), cell.dofs.end());
+  if (solids)
+  {
+    const auto cut_dofs = solids->cuts().dofs();
+    dofs.insert(dofs.end(), cut_dofs.begin(), cut_dofs.end());
+  }
+  // write_section_forces() distributes the constraints: their sources too
+  // (closed constraints: one level)
+  const std::size_t n_read = dofs.size();
+  for (std::size_t k = 0; k < n_read; ++k)
+    if (const auto *entries = constraints.get_constraint_entries(dofs[k]))
+      for (const auto &entry : *entries)
+        dofs.push_back(entry.first);
+  std::sort(dofs.begin(), dofs.end());
+  dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+  return dofs;
+}
+
 DofDescription Frame::describe_dof(const types::global_dof_index dof) const
 {
   static const char *const components[6] = {"ux", "uy", "uz", "rx", "ry", "rz"};

@@ -106,7 +106,10 @@ void SolidStressOutput::write_vtu(std::ostream &out,
   if (subdomain.size() > 0)
     data_out.add_data_vector(subdomain, "subdomain", DataOut<3>::type_cell_data);
   data_out.build_patches(solids.dofs().get_fe().degree);
-  data_out.set_flags(DataOutBase::VtkFlags(time, cycle));
+  // the fastest zlib level: a snapshot of the 3D crane's solids took 0.3 s
+  // at the best compression, most of it in deflate
+  data_out.set_flags(
+      DataOutBase::VtkFlags(time, cycle, true, DataOutBase::VtkFlags::best_speed));
   data_out.write_vtu(out);
 }
 

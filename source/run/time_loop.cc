@@ -44,8 +44,11 @@ void set_law_columns(const LawSample &l, OutputState &s)
   s.friction_states = l.friction_states;
 }
 
-/** The output row of CD-Lagrange: its state and its laws' sample (into @p sample). */
-OutputState output_state(const CDLagrange &integrator, LawSample &sample)
+/**
+ * The output row of CD-Lagrange: its state and its laws' sample (into
+ * @p sample). (`history_dofs_only`: see the HATI overload.)
+ */
+OutputState output_state(const CDLagrange &integrator, LawSample &sample, const bool)
 {
   OutputState s;
   s.time = integrator.time();
@@ -73,15 +76,62 @@ const std::vector<std::unique_ptr<ForceLaw>> &force_laws_of(const Newmark &)
   return none;
 }
 
-OutputState output_state(const HATICoupling &integrator, LawSample &)
+/**
+ * The output row of HATI. With @p history_dofs_only (a history row without
+ * section forces and VTU), a reduced implicit part recovers only the DoFs
+ * that the row reads (HATICoupling::set_history_dofs()).
+ */
+OutputState
+output_state(const HATICoupling &integrator, LawSample &, const bool history_dofs_only)
 {
   // contacts.csv is written at the micro steps (connect_micro_steps())
-  OutputState s = contact_state(integrator, integrator.micro_time_step());
+  OutputState s;
+  s.time = integrator.time();
+  s.displacement = &integrator.displacement(history_dofs_only);
+  s.velocity = &integrator.velocity(history_dofs_only);
+  s.gaps = integrator.gaps();
+  s.normal_velocities = integrator.normal_velocities();
+  s.impulses = integrator.impulses();
+  s.active = integrator.active();
+  s.impulse_duration = integrator.micro_time_step();
   s.contact_rows = false;
   return s;
 }
 
-OutputState output_state(const Newmark &integrator, LawSample &)
+/** The DoFs of the monitors (history.csv, the acceleration peaks, the spectra). */
+std::vector<types::global_dof_index> monitor_dofs(const DiscreteSystem &system)
+{
+  std::vector<types::global_dof_index> dofs;
+  for (const auto &monitor : system.monitors)
+  {
+    dofs.insert(dofs.end(), monitor.dofs.begin(), monitor.dofs.end());
+    for (const auto &row : monitor.rows)
+      dofs.insert(dofs.end(), row.dofs.begin(), row.dofs.end());
+  }
+  return dofs;
+}
+
+/**
+ * The state of the checks between the output rows: with HATI, a reduced
+ * implicit part recovers only its history DoFs (its others were checked at
+ * the last full row; non-finite reduced coordinates are recovered in full).
+ */
+template <class Integrator>
+const Vector<double> &checked_displacement(const Integrator &i)
+{
+  return i.displacement();
+}
+template <class Integrator> const Vector<double> &checked_velocity(const Integrator &i)
+{
+  return i.velocity();
+}
+const Vector<double> &checked_displacement(const HATICoupling &i)
+{
+  return i.displacement(true);
+}
+const Vector<double> &checked_velocity(const HATICoupling &i) { return i.velocity(true); }
+
+OutputState output_state(const Newmark &integrator, LawSample &, const bool)
 {
   OutputState s;
   s.time = integrator.time();
@@ -300,17 +350,29 @@ TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
             {problem.system, problem.ground_acceleration, problem.output_parameters}))
       postprocessors.push_back(std::move(p));
   if constexpr (std::is_same_v<Integrator, HATICoupling>)
+  {
+    // a history row without section forces and VTU reads the monitors and
+    // the DoFs of Model::write_section_forces() (its envelope)
+    std::vector<types::global_dof_index> displacement_dofs =
+        problem.model->section_force_dofs();
+    const auto velocity_dofs = monitor_dofs(system);
+    displacement_dofs.insert(
+        displacement_dofs.end(), velocity_dofs.begin(), velocity_dofs.end());
+    integrator.set_history_dofs(displacement_dofs, velocity_dofs);
     connect_micro_steps();
+  }
 }
 
 template <class Integrator> void TimeLoop<Integrator>::write(const unsigned long step)
 {
   const WallClock::Scope scope(output_clock);
-  OutputState s = output_state(integrator, row_sample);
+  const bool section_force_row = step % every_section_row == 0 || step == n_steps;
+  const bool vtu_row = every_vtu > 0 && (step % every_vtu == 0 || step == n_steps);
+  OutputState s = output_state(integrator, row_sample, !section_force_row && !vtu_row);
   check_state(watchdog, writer, *s.displacement, s.velocity, s.time);
   if (step % every_history == 0 || step == n_steps)
   {
-    s.section_force_rows = step % every_section_row == 0 || step == n_steps;
+    s.section_force_rows = section_force_row;
     for (const auto &p : postprocessors)
       p->history_row(s);
     writer.write_history(s);
@@ -319,7 +381,7 @@ template <class Integrator> void TimeLoop<Integrator>::write(const unsigned long
     if constexpr (std::is_same_v<Integrator, HATICoupling>)
       interface_guard.check(e, integrator, !system.contacts.empty(), problem, writer);
   }
-  if (every_vtu > 0 && (step % every_vtu == 0 || step == n_steps))
+  if (vtu_row)
     writer.write_vtu(s);
 }
 
@@ -379,8 +441,8 @@ template <class Integrator> void TimeLoop<Integrator>::run(TimerOutput &timer)
     else if (step % every_check == 0)
       check_state(watchdog,
                   writer,
-                  integrator.displacement(),
-                  &integrator.velocity(),
+                  checked_displacement(integrator),
+                  &checked_velocity(integrator),
                   integrator.time());
     if ((!explicit_scheme || (step & 255) == 0) && progress.due())
     {

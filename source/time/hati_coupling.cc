@@ -354,26 +354,72 @@ const Vector<double> &HATICoupling::to_global(const Vector<double> &implicit_par
   return global;
 }
 
-const Vector<double> &HATICoupling::implicit_dofs(const Vector<double> &state) const
+const Vector<double> &HATICoupling::implicit_dofs(const Vector<double> &state,
+                                                  Vector<double> &buffer,
+                                                  const PartialExpansion *partial) const
 {
   if (!decomposition.reduced)
     return state;
   // C1: the full subdomain's values from the reduced coordinates, u = T q
-  decomposition.reduced->expand(state, expanded);
-  return expanded;
+  const unsigned int n = decomposition.parts[1].global_dofs.size();
+  if (partial != nullptr && buffer.size() == n &&
+      std::all_of(
+          state.begin(), state.end(), [](const double x) { return std::isfinite(x); }))
+  {
+    // only the rows the history reads; the others keep the last full values
+    partial->values.reinit(partial->rows.size());
+    partial->basis.vmult(partial->values, state);
+    for (unsigned int i = 0; i < partial->rows.size(); ++i)
+      buffer[partial->rows[i]] = partial->values[i];
+  }
+  else
+    decomposition.reduced->expand(state, buffer);
+  return buffer;
 }
 
-const Vector<double> &HATICoupling::displacement() const
+const Vector<double> &HATICoupling::displacement(const bool history_dofs_only) const
 {
-  return to_global(implicit_dofs(implicit.displacement()),
+  return to_global(implicit_dofs(implicit.displacement(),
+                                 expanded_U,
+                                 history_dofs_only ? &history_displacement : nullptr),
                    explicit_integrator.displacement(),
                    global_U);
 }
 
-const Vector<double> &HATICoupling::velocity() const
+const Vector<double> &HATICoupling::velocity(const bool history_dofs_only) const
 {
-  return to_global(
-      implicit_dofs(implicit.velocity()), explicit_integrator.velocity(), global_V);
+  return to_global(implicit_dofs(implicit.velocity(),
+                                 expanded_V,
+                                 history_dofs_only ? &history_velocity : nullptr),
+                   explicit_integrator.velocity(),
+                   global_V);
+}
+
+void HATICoupling::set_history_dofs(
+    const std::vector<types::global_dof_index> &displacement_dofs,
+    const std::vector<types::global_dof_index> &velocity_dofs)
+{
+  if (!decomposition.reduced)
+    return;
+  const auto &implicit_global = decomposition.parts[1].global_dofs;
+  const auto set =
+      [&](const std::vector<types::global_dof_index> &dofs, PartialExpansion &partial)
+  {
+    std::vector<bool> wanted(global_U.size(), false);
+    for (const auto dof : dofs)
+    {
+      AssertThrow(dof < wanted.size(),
+                  ExcMessage("HATICoupling::set_history_dofs: a DoF out of range"));
+      wanted[dof] = true;
+    }
+    partial.rows.clear();
+    for (unsigned int i = 0; i < implicit_global.size(); ++i)
+      if (wanted[implicit_global[i]])
+        partial.rows.push_back(i);
+    partial.basis = decomposition.reduced->reduction().basis_rows(partial.rows);
+  };
+  set(displacement_dofs, history_displacement);
+  set(velocity_dofs, history_velocity);
 }
 
 Energies HATICoupling::energies() const

@@ -117,6 +117,9 @@ public:
   /** `u = T q` (m): the system's displacements from reduced coordinates. */
   void expand(const Vector<double> &q, Vector<double> &u) const;
 
+  /** The rows @p rows of `T` (one per entry, in order), for a partial expand. */
+  FullMatrix<double> basis_rows(const std::vector<unsigned int> &rows) const;
+
   /** `r = T^T f`: a load on the system's DoFs as reduced load. */
   void project(const Vector<double> &f, Vector<double> &r) const;
 

@@ -201,6 +201,11 @@ public:
   void write_section_forces(std::ostream *out,
                             const double time,
                             const Vector<double> &U) const override;
+  /** Frame::section_force_dofs(). */
+  std::vector<types::global_dof_index> section_force_dofs() const override
+  {
+    return frame.section_force_dofs();
+  }
   std::string description() const override;
   /** Frame::describe_dof(). */
   DofDescription describe_dof(const types::global_dof_index dof) const override

@@ -73,6 +73,8 @@ public:
   void write_section_forces(std::ostream *out,
                             const double time,
                             const Vector<double> &U) const override;
+  /** The DoFs of the section force members' elements and of the solids' cuts. */
+  std::vector<types::global_dof_index> section_force_dofs() const override;
   /** `solids` for a frame with solids (SolidStressOutput), none otherwise. */
   std::vector<std::string> vtu_series() const override;
   /** The snapshot of `solids` (SolidStressOutput::write_vtu()). */

@@ -288,6 +288,15 @@ public:
   }
 
   /**
+   * The DoFs of `U` that write_section_forces() reads (the sources of the
+   * constrained ones included): a Craig-Bampton reduced implicit part (C1)
+   * recovers only these and the monitors' at the history rows that write
+   * no section forces and no VTU. None by default; a model that overrides
+   * write_section_forces() overrides this too.
+   */
+  virtual std::vector<types::global_dof_index> section_force_dofs() const { return {}; }
+
+  /**
    * Names of the VTU series the model writes next to `solution`, each as
    * `<name>.pvd` and `<name>-NNNNN.vtu` with the cycles and times of
    * `solution.pvd` (a frame with solids: `solids`); none by default.

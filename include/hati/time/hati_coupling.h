@@ -125,10 +125,24 @@ public:
   /** Critical step of the explicit subdomain (s). */
   double critical_time_step() const { return explicit_integrator.critical_time_step(); }
 
-  /** Displacement of the whole model (global numbering; interface: explicit copy). */
-  const Vector<double> &displacement() const;
+  /**
+   * Displacement of the whole model (global numbering; interface: explicit
+   * copy). With @p history_dofs_only and a reduced implicit part, only its
+   * DoFs of set_history_dofs() are recovered from the reduced coordinates;
+   * its others keep the values of the last full call.
+   */
+  const Vector<double> &displacement(const bool history_dofs_only = false) const;
   /** Velocity of the whole model (explicit part at the half step, as CD-Lagrange). */
-  const Vector<double> &velocity() const;
+  const Vector<double> &velocity(const bool history_dofs_only = false) const;
+
+  /**
+   * The DoFs (global numbering) whose displacements and velocities the
+   * history rows read: those of a reduced implicit part (C1) among them
+   * are the ones displacement(true) and velocity(true) recover (a product
+   * with these rows of T only, not the whole basis).
+   */
+  void set_history_dofs(const std::vector<types::global_dof_index> &displacement_dofs,
+                        const std::vector<types::global_dof_index> &velocity_dofs);
 
   /** Contact gaps, normal velocities, impulses, active flags (explicit subdomain). */
   const std::vector<double> &gaps() const { return explicit_integrator.gaps(); }
@@ -226,9 +240,15 @@ private:
   void take_sample(ContactSample &sample) const;
   /**
    * The implicit subdomain's DoF values of the implicit integrator's
-   * @p state: itself, or expanded from reduced coordinates (C1).
+   * @p state: itself, or expanded from reduced coordinates into @p buffer
+   * (C1): all of them, or with @p history_dofs_only those of
+   * set_history_dofs() (once @p buffer holds a full expansion and the
+   * coordinates are finite).
    */
-  const Vector<double> &implicit_dofs(const Vector<double> &state) const;
+  struct PartialExpansion;
+  const Vector<double> &implicit_dofs(const Vector<double> &state,
+                                      Vector<double> &buffer,
+                                      const PartialExpansion *partial) const;
   /** @p global = the implicit and explicit parts in the global numbering. */
   const Vector<double> &to_global(const Vector<double> &implicit_part,
                                   const Vector<double> &explicit_part,
@@ -264,7 +284,15 @@ private:
   unsigned int max_iterations = 0;
   double seconds[3] = {0., 0., 0.};
   double setup = 0.;
-  mutable Vector<double> global_U, global_V, expanded;
+  mutable Vector<double> global_U, global_V, expanded_U, expanded_V;
+  /** Implicit DoFs of set_history_dofs() and their rows of T. */
+  struct PartialExpansion
+  {
+    std::vector<unsigned int> rows;
+    FullMatrix<double> basis;
+    mutable Vector<double> values;
+  };
+  PartialExpansion history_displacement, history_velocity;
   CDLagrange::Snapshot snapshot;
 };
 } // namespace hati
