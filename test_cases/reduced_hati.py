@@ -24,7 +24,13 @@ reduction changes only the implicit part's basis).
 3. a static start (gravity, beam 'b' resting on a contact, the case of
    test_cases/beam_solid_rest_hati.py): the reduced initial state
    (doc/theory.md 12.2) is at rest, velocities below 1e-5 g DT (measured
-   3.8e-8, the unreduced run 2.0e-8)."""
+   3.8e-8, the unreduced run 2.0e-8).
+4. the output rows (doc/theory.md 12.2): the history rows between two
+   rows of `Section force interval` and of the VTU recover only the DoFs
+   they read (monitors, section-force members, the cuts' layers). Reference:
+   the same run with a full expansion at every row (Section force interval
+   = History interval): history.csv, the section force envelope and the
+   rows of section_forces.csv they share equal to 1e-12 of the peak."""
 import numpy as np
 
 from hati_test import Context, read_csv, read_summary
@@ -116,4 +122,29 @@ v = max(np.max(np.abs(h[n])) for n in h.dtype.names
         if n.endswith(("vx", "vy", "vz", "vrx", "vry", "vrz")))
 ctx.check("static start, reduced: largest velocity / (g DT)", v / (g * 5e-5), 0.0, abs_tol=1e-5)
 ctx.check("static start, reduced: impacts", read_summary(out)["n_impacts"], 0, abs_tol=0)
+
+# ---- 4. partial recovery at the history rows = full expansion ----------------
+ROWS = FORWARD + [CB, "Model/Decomposition/Reduction cutoff frequency=3000",
+                  "Model/Frame/Solid cuts=c1: prism, x=0.75; c2: prism, x=1.5",
+                  "Model/Frame/Section force members=a", "Output/Output interval=0"]
+partial, _ = ctx.run(prm, "rows_partial", ROWS + ["Output/Section force interval=1e-3"])
+full, _ = ctx.run(prm, "rows_full", ROWS + ["Output/Section force interval=1e-4"])
+hp, hf = read_csv(partial + "/history.csv"), read_csv(full + "/history.csv")
+ctx.check_true("rows: the same history rows", len(hp) == len(hf) and len(hp) > 100, str(len(hp)))
+worst = max(np.max(np.abs(hp[c] - hf[c])) / max(np.max(np.abs(hf[c])), 1e-300)
+            for c in hf.dtype.names if c != "time")
+ctx.check("rows: history, partial against full recovery / peak", worst, 0.0, abs_tol=1e-12)
+ep = read_summary(partial)["section_force_envelope"]
+ef = read_summary(full)["section_force_envelope"]
+for k in ("N", "My", "Mz"):
+    ctx.check("rows: section force envelope %s, partial / full" % k,
+              ep[k]["max_abs"], ef[k]["max_abs"], rel=1e-12)
+sp, sf = read_csv(partial + "/section_forces.csv"), read_csv(full + "/section_forces.csv")
+shared = np.isin(sf["time"], sp["time"])
+ctx.check_true("rows: section_forces.csv rows shared", np.count_nonzero(shared) == len(sp),
+               "%d of %d" % (np.count_nonzero(shared), len(sp)))
+for c in ("N", "My", "Mz"):
+    peak = max(np.max(np.abs(sf[c])), 1e-300)
+    ctx.check("rows: section_forces.csv %s, partial against full / peak" % c,
+              np.max(np.abs(sp[c] - sf[c][shared])) / peak, 0.0, abs_tol=1e-12)
 ctx.finish()
