@@ -85,15 +85,10 @@ OutputState
 output_state(const HATICoupling &integrator, LawSample &, const bool history_dofs_only)
 {
   // contacts.csv is written at the micro steps (connect_micro_steps())
-  OutputState s;
-  s.time = integrator.time();
-  s.displacement = &integrator.displacement(history_dofs_only);
-  s.velocity = &integrator.velocity(history_dofs_only);
-  s.gaps = integrator.gaps();
-  s.normal_velocities = integrator.normal_velocities();
-  s.impulses = integrator.impulses();
-  s.active = integrator.active();
-  s.impulse_duration = integrator.micro_time_step();
+  OutputState s = contact_state(integrator,
+                                integrator.micro_time_step(),
+                                integrator.displacement(history_dofs_only),
+                                integrator.velocity(history_dofs_only));
   s.contact_rows = false;
   return s;
 }

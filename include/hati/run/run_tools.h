@@ -99,22 +99,34 @@ void check_state(const Watchdog &watchdog,
                  const double t);
 
 /**
- * The state of an integrator with contacts for the output writer; the
- * impulses act over @p impulse_duration (s: the step, or 0 for an instant).
+ * The state of an integrator with contacts for the output writer, with the
+ * displacement @p U and velocity @p V it gives; the impulses act over
+ * @p impulse_duration (s: the step, or 0 for an instant).
  */
 template <class Integrator>
-OutputState contact_state(const Integrator &integrator, const double impulse_duration)
+OutputState contact_state(const Integrator &integrator,
+                          const double impulse_duration,
+                          const dealii::Vector<double> &U,
+                          const dealii::Vector<double> &V)
 {
   OutputState s;
   s.time = integrator.time();
-  s.displacement = &integrator.displacement();
-  s.velocity = &integrator.velocity();
+  s.displacement = &U;
+  s.velocity = &V;
   s.gaps = integrator.gaps();
   s.normal_velocities = integrator.normal_velocities();
   s.impulses = integrator.impulses();
   s.active = integrator.active();
   s.impulse_duration = impulse_duration;
   return s;
+}
+
+/** contact_state() with the integrator's displacement() and velocity(). */
+template <class Integrator>
+OutputState contact_state(const Integrator &integrator, const double impulse_duration)
+{
+  return contact_state(
+      integrator, impulse_duration, integrator.displacement(), integrator.velocity());
 }
 
 /** Progress lines of a long run, at most every @p interval seconds of wall time. */
