@@ -468,13 +468,15 @@ void TimeLoop<Integrator>::add_coupling_summary(SummaryEntries &summary) const
                     {"wall_time_setup", integrator.setup_seconds()},
                     {"interface_velocity_jump", integrator.interface_velocity_jump()},
                     {"redone_macro_steps", integrator.redone_macro_steps()},
+                    {"hati_redone_macro_steps", integrator.redone_macro_steps()},
                     {"interface_iterations", integrator.interface_iterations()},
                     {"ramp_patterns", integrator.ramp_patterns()}});
     std::cout << "  HATI wall time: explicit " << integrator.explicit_seconds()
               << " s, implicit " << integrator.implicit_seconds() << " s, interface "
               << integrator.interface_seconds() << " s, set-up "
               << integrator.setup_seconds() << " s; interface velocity jump "
-              << integrator.interface_velocity_jump() << " m/s" << std::endl;
+              << integrator.interface_velocity_jump() << " m/s; "
+              << integrator.redone_macro_steps() << " macro steps redone" << std::endl;
   }
   else
     (void)summary;

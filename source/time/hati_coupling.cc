@@ -38,6 +38,17 @@ void HATIParameters::declare_parameters(ParameterHandler &prm)
       "Interface problem of the coupling. macro-linear (G3'): velocity continuity at "
       "the macro-step ends, the interface force linear in time over the macro step; "
       "stable (spectral radius of a macro step <= 1) and energy-consistent.");
+  prm.declare_entry(
+      "Superposition",
+      "true",
+      Patterns::Bool(),
+      "true: a macro step with contacts or ropes within reach of the interface whose "
+      "pushing contacts stay the same and stick over the macro step (and whose ropes "
+      "the correction moves by less than round-off) adds the interface correction by "
+      "superposition of the unit-ramp responses (doc/theory.md 9.6); the others are "
+      "redone with the full multiplier. false (a check, slower): every such macro step "
+      "is redone; the results agree with true to round-off and the friction solver's "
+      "tolerance.");
 }
 
 void HATIParameters::parse_parameters(ParameterHandler &prm)
@@ -50,6 +61,7 @@ void HATIParameters::parse_parameters(ParameterHandler &prm)
                          std::to_string(ratio)));
   time_step_ratio = ratio;
   coupling_method = prm.get("Coupling method");
+  superposition = prm.get_bool("Superposition");
 }
 
 HATICoupling::HATICoupling(const Decomposition &decomposition,
@@ -60,6 +72,7 @@ HATICoupling::HATICoupling(const Decomposition &decomposition,
                            const NewmarkParameters &newmark_parameters,
                            const DampingModel &damping)
     : decomposition(decomposition), m(parameters.time_step_ratio),
+      superpose_steps(parameters.superposition),
       explicit_integrator(decomposition.parts[0].system,
                           dt,
                           safety_factor,
@@ -170,7 +183,7 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
         contact_record.emplace_back();
       ContactSample &s = contact_record[n_recorded++];
       take_sample(s);
-      record.record_contacts(j, s);
+      record.record_contacts(j, s, explicit_integrator.velocity());
     }
     else if (after_micro_step)
     {
@@ -214,9 +227,9 @@ void HATICoupling::step()
 
   // the correction added by superposition, or the micro steps redone
   start = Clock::now();
-  // friction within reach of the ramp (A9) is not linear in the
-  // multiplier: those macro steps are redone with the full multiplier
-  if (same_active_set && !superposition->friction_in_reach() &&
+  // friction within reach of the ramp (A9) is linear in the multiplier while
+  // its contacts stick: response_for_pass() and superpose() check it
+  if (same_active_set && superpose_steps &&
       superposition->superpose(ramp,
                                delta_lambda,
                                explicit_integrator,

@@ -43,6 +43,9 @@ RampSuperposition::RampSuperposition(const DiscreteSystem &system,
       ramp_integrator(std::make_unique<CDLagrange>(
           system, dt, std::numeric_limits<double>::infinity(), damping, branches))
 {
+  for (const auto &law : ramp_integrator->force_laws())
+    for (const auto dof : law->nonlinear_dofs())
+      nonlinear_dofs.push_back(dof);
   compute_ramp({}, open_ramp, false);
   find_reach();
   if (contacts_in_reach() || damped)
@@ -53,6 +56,12 @@ RampSuperposition::RampSuperposition(const DiscreteSystem &system,
   pass_normal.resize((m + 2) * nrc);
   pass_active.resize(m * nrc);
   pattern.resize(nrc);
+  if (reach_friction)
+  {
+    pass_tangential.assign(2 * (m + 1) * nrc, 0.);
+    pass_tangential_velocity.assign(2 * (m + 2) * nrc, 0.);
+    pass_stick.assign(m * nrc, false);
+  }
 }
 
 void RampSuperposition::find_reach()
@@ -74,6 +83,7 @@ void RampSuperposition::find_reach()
     if (in_reach)
     {
       reach_contacts.push_back(c);
+      reach_frictional.push_back(system.contacts[c].frictional());
       reach_friction = reach_friction || system.contacts[c].frictional();
     }
   }
@@ -135,12 +145,18 @@ void RampSuperposition::compute_ramp(const std::vector<bool> &active_set,
   FullMatrix<double> increment_sum(n_gamma, n_gamma),
       increment_weighted(n_gamma, n_gamma);
   FullMatrix<double> H_E(n_gamma, n_gamma);
+  // the displacements on the nonlinear laws' DoFs after each micro step
+  FullMatrix<double> nonlinear_displacement(m * nonlinear_dofs.size(), n_gamma);
   r.load_work.assign(shapes.size(),
                      std::vector<Vector<double>>(m, Vector<double>(n_gamma)));
   // filled as dense per micro step, stored sparse
   std::vector<FullMatrix<double>> impulse(m + 1, FullMatrix<double>(nrc, n_gamma)),
       gap(m + 1, FullMatrix<double>(nrc, n_gamma)),
       normal_velocity(m + 2, FullMatrix<double>(nrc, n_gamma)),
+      tangential_impulse(reach_friction ? m + 1 : 0,
+                         FullMatrix<double>(2 * nrc, n_gamma)),
+      tangential_velocity(reach_friction ? m + 2 : 0,
+                          FullMatrix<double>(2 * nrc, n_gamma)),
       velocity_reach(with_damping ? m + 1 : 0, FullMatrix<double>(nR, n_gamma)),
       damping_reach(with_damping ? m + 1 : 0, FullMatrix<double>(nR, n_gamma));
   r.memory.assign(ramp.memory().n_branches(), SparseColumns());
@@ -164,6 +180,8 @@ void RampSuperposition::compute_ramp(const std::vector<bool> &active_set,
       }
       for (unsigned int c = 0; c < nrc; ++c)
         normal_velocity[j](c, l) = system.contacts[reach_contacts[c]].apply(V);
+      if (reach_friction)
+        record_tangential(V, tangential_velocity[j], l);
       if (with_damping)
         for (unsigned int i = 0; i < nR; ++i)
           velocity_reach[j](i, l) = V[reach_dofs[i]];
@@ -175,11 +193,18 @@ void RampSuperposition::compute_ramp(const std::vector<bool> &active_set,
       if (j == m)
         for (unsigned int k = 0; k < n_gamma; ++k)
           H_E(k, l) = integer_velocity(rows_E[k], ramp);
+      for (unsigned int i = 0; i < nonlinear_dofs.size(); ++i)
+        nonlinear_displacement((j - 1) * nonlinear_dofs.size() + i, l) =
+            integrator.displacement()[nonlinear_dofs[i]];
       for (unsigned int c = 0; c < nrc; ++c)
       {
         const auto &row = system.contacts[reach_contacts[c]];
         impulse[j](c, l) = with_contacts ? integrator.impulses()[reach_contacts[c]] : 0.;
         gap[j](c, l) = row.apply(integrator.displacement());
+        if (with_contacts && reach_frictional[c])
+          for (unsigned int t = 0; t < row.tangents.size(); ++t)
+            tangential_impulse[j](2 * c + t, l) =
+                integrator.friction().tangential_impulse(reach_contacts[c], t);
       }
       if (with_damping)
       {
@@ -191,6 +216,8 @@ void RampSuperposition::compute_ramp(const std::vector<bool> &active_set,
     for (unsigned int c = 0; c < nrc; ++c)
       normal_velocity[m + 1](c, l) =
           system.contacts[reach_contacts[c]].apply(integrator.velocity());
+    if (reach_friction)
+      record_tangential(integrator.velocity(), tangential_velocity[m + 1], l);
     const auto state = integrator.linear_state();
     for (unsigned int s = 0; s < state.size(); ++s)
       r.state[s].add_column(*state[s]);
@@ -199,38 +226,38 @@ void RampSuperposition::compute_ramp(const std::vector<bool> &active_set,
   }
   ramp.prescribe_active_set(nullptr);
   // stored sparse with the micro steps stacked, row j nrc + c
-  const auto store = [nrc, n_gamma](const std::vector<FullMatrix<double>> &dense)
+  const auto store = [n_gamma](const std::vector<FullMatrix<double>> &dense)
   {
-    FullMatrix<double> stacked(dense.size() * nrc, n_gamma);
+    const unsigned int n = dense.empty() ? 0 : dense[0].m();
+    FullMatrix<double> stacked(dense.size() * n, n_gamma);
     for (unsigned int j = 0; j < dense.size(); ++j)
-      for (unsigned int c = 0; c < nrc; ++c)
+      for (unsigned int c = 0; c < n; ++c)
         for (unsigned int l = 0; l < n_gamma; ++l)
-          stacked(j * nrc + c, l) = dense[j](c, l);
+          stacked(j * n + c, l) = dense[j](c, l);
     return SparseColumns(stacked);
   };
   r.impulse = store(impulse);
   r.gap = store(gap);
   r.normal_velocity = store(normal_velocity);
+  r.tangential_impulse = store(tangential_impulse);
+  r.tangential_velocity = store(tangential_velocity);
   r.velocity_on_reach.clear();
   r.damping_on_reach.clear();
   r.dissipation_quadratic = DenseColumns();
   if (with_damping)
     store_dissipation(velocity_reach, damping_reach, r);
+  r.nonlinear_displacement = SparseColumns(nonlinear_displacement);
   r.increment_sum = SparseColumns(increment_sum);
   r.increment_weighted = SparseColumns(increment_weighted);
   r.H_E = SparseColumns(H_E);
   interface.invert(H_E, r.H_inverse);
   // whether the response moves a DoF of a nonlinear force law (e.g. a rope's,
-  // R1): then it is not superposed
+  // R1): then superpose() checks how much
   r.moves_nonlinear_law = false;
-  for (const auto &law : integrator.force_laws())
-  {
-    const auto dofs = law->nonlinear_dofs();
-    for (const auto &columns : r.state)
-      for (const auto i : columns.rows())
-        for (const auto dof : dofs)
-          r.moves_nonlinear_law = r.moves_nonlinear_law || dof == i;
-  }
+  for (const auto &columns : r.state)
+    for (const auto i : columns.rows())
+      for (const auto dof : nonlinear_dofs)
+        r.moves_nonlinear_law = r.moves_nonlinear_law || dof == i;
 }
 
 void RampSuperposition::store_dissipation(
@@ -276,6 +303,19 @@ void RampSuperposition::store_dissipation(
       }
 }
 
+void RampSuperposition::record_tangential(const Vector<double> &V,
+                                          FullMatrix<double> &rows,
+                                          const unsigned int l) const
+{
+  for (unsigned int c = 0; c < reach_contacts.size(); ++c)
+  {
+    const auto &tangents = system.contacts[reach_contacts[c]].tangents;
+    if (reach_frictional[c])
+      for (unsigned int t = 0; t < tangents.size(); ++t)
+        rows(2 * c + t, l) = tangents[t].apply(V);
+  }
+}
+
 const RampSuperposition::Response &
 RampSuperposition::ramp_for(const std::vector<bool> &active_set)
 {
@@ -295,7 +335,7 @@ RampSuperposition::ramp_for(const std::vector<bool> &active_set)
 const RampSuperposition::Response &
 RampSuperposition::response_for_pass(bool &same_active_set)
 {
-  same_active_set = !open_ramp.moves_nonlinear_law;
+  same_active_set = true;
   if (!contacts_in_reach())
     return open_ramp;
   same_active_set = true;
@@ -322,8 +362,19 @@ RampSuperposition::response_for_pass(bool &same_active_set)
   if (!same_active_set)
     return open_ramp;
   const Response &r = ramp_for(pattern);
-  same_active_set = !r.moves_nonlinear_law;
-  return same_active_set ? r : open_ramp;
+  // (A9) the response of the set is that of its frictional contacts
+  // sticking: a contact that slipped in a micro step of the pass is not
+  // linear in the multiplier (the micro steps are redone, corrected with
+  // this response's H^-1)
+  if (reach_friction)
+    for (unsigned int j = 0; j < m && same_active_set; ++j)
+      for (unsigned int c = 0; c < nrc; ++c)
+        if (reach_frictional[c] && pattern[c] && !pass_stick[j * nrc + c])
+        {
+          same_active_set = false;
+          break;
+        }
+  return r;
 }
 
 void RampSuperposition::start_pass(const CDLagrange &integrator, const bool contacts)
@@ -335,10 +386,17 @@ void RampSuperposition::start_pass(const CDLagrange &integrator, const bool cont
   if (contacts)
     for (unsigned int c = 0; c < nrc; ++c)
     {
-      pass_impulse[c] = integrator.impulses()[reach_contacts[c]];
-      pass_gap[c] = integrator.gaps()[reach_contacts[c]];
-      pass_normal[nrc + c] =
-          system.contacts[reach_contacts[c]].apply(integrator.velocity());
+      const unsigned int k = reach_contacts[c];
+      pass_impulse[c] = integrator.impulses()[k];
+      pass_gap[c] = integrator.gaps()[k];
+      pass_normal[nrc + c] = system.contacts[k].apply(integrator.velocity());
+      if (reach_frictional[c])
+        for (unsigned int t = 0; t < system.contacts[k].tangents.size(); ++t)
+        {
+          pass_tangential[2 * c + t] = integrator.friction().tangential_impulse(k, t);
+          pass_tangential_velocity[2 * (nrc + c) + t] =
+              system.contacts[k].tangents[t].apply(integrator.velocity());
+        }
     }
 }
 
@@ -349,6 +407,8 @@ bool RampSuperposition::superpose(const Response &r,
                                   std::vector<ContactSample> &samples,
                                   const unsigned int n_samples)
 {
+  if (r.moves_nonlinear_law && !nonlinear_laws_hold(r, lambda, integrator))
+    return false;
   if (contacts_in_reach() &&
       !superpose_contacts(r, lambda, integrator, samples, n_samples))
     return false;
@@ -381,6 +441,23 @@ bool RampSuperposition::superpose(const Response &r,
   view.add_external_work(work);
   if (records_damping())
     view.add_dissipated(ramp_dissipation(r, lambda));
+  return true;
+}
+
+bool RampSuperposition::nonlinear_laws_hold(const Response &r,
+                                            const Vector<double> &lambda,
+                                            const CDLagrange &integrator)
+{
+  // the largest displacement the correction adds to a DoF of a nonlinear
+  // law at a micro step, and the change of each law's force it can cause
+  if (ramp_nonlinear.size() != m * nonlinear_dofs.size())
+    ramp_nonlinear.reinit(m * nonlinear_dofs.size());
+  r.nonlinear_displacement.vmult(ramp_nonlinear, lambda);
+  const double du = ramp_nonlinear.linfty_norm();
+  for (const auto &law : integrator.force_laws())
+    if (!law->nonlinear_dofs().empty() &&
+        !(law->relative_force_change(du) <= nonlinear_force_tolerance))
+      return false;
   return true;
 }
 
@@ -447,6 +524,9 @@ bool RampSuperposition::superpose_contacts(const Response &r,
           return false;
       }
     }
+  if (reach_friction &&
+      !superpose_friction(r, lambda, integrator, samples, n_samples, impulse_tolerance))
+    return false;
 
   // contact work of the total, sum_j 1/2 (L V_{j-1/2}) (lambda_{j-1} +
   // lambda_j), minus what the pass booked
@@ -473,6 +553,85 @@ bool RampSuperposition::superpose_contacts(const Response &r,
       s.impulses[k] = total_impulse[j * nrc + c];
       s.normal_velocities[k] = total_normal[(j + 1) * nrc + c];
     }
+  }
+  return true;
+}
+
+bool RampSuperposition::superpose_friction(const Response &r,
+                                           const Vector<double> &lambda,
+                                           CDLagrange &integrator,
+                                           std::vector<ContactSample> &samples,
+                                           const unsigned int n_samples,
+                                           const double impulse_tolerance)
+{
+  // the tangential impulses and velocities of pass + ramp
+  const unsigned int nrc = reach_contacts.size();
+  if (ramp_tangential.size() != 2 * (m + 1) * nrc)
+    ramp_tangential.reinit(2 * (m + 1) * nrc);
+  if (ramp_tangential_velocity.size() != 2 * (m + 2) * nrc)
+    ramp_tangential_velocity.reinit(2 * (m + 2) * nrc);
+  r.tangential_impulse.vmult(ramp_tangential, lambda);
+  r.tangential_velocity.vmult(ramp_tangential_velocity, lambda);
+  total_tangential = pass_tangential;
+  total_tangential_velocity = pass_tangential_velocity;
+  for (unsigned int i = 2 * nrc; i < total_tangential.size(); ++i)
+    total_tangential[i] += ramp_tangential[i];
+  for (unsigned int i = 2 * nrc; i < total_tangential_velocity.size(); ++i)
+    total_tangential_velocity[i] += ramp_tangential_velocity[i];
+
+  // (A9) a sticking contact stays within its Coulomb cone at every micro
+  // step, |lambda_t| <= mu lambda_n; response_for_pass() has checked that the
+  // frictional contacts of the pushing set stuck in the pass
+  for (unsigned int j = 1; j <= m; ++j)
+    for (unsigned int c = 0; c < nrc; ++c)
+      if (reach_frictional[c] && pass_active[(j - 1) * nrc + c])
+      {
+        const unsigned int i = 2 * (j * nrc + c);
+        const double norm = std::hypot(total_tangential[i], total_tangential[i + 1]);
+        if (norm >
+            system.contacts[reach_contacts[c]].friction * total_impulse[j * nrc + c] +
+                impulse_tolerance)
+          return false;
+      }
+
+  // the friction work of the total, sum_j 1/2 (lambda_t,j-1 + lambda_t,j) .
+  // T V_{j-1/2} (FrictionalContacts: the halves before and after each
+  // impulse), minus what the pass booked; the last micro step's second half
+  // is booked by the next step with the corrected impulses
+  double work = 0.;
+  for (unsigned int j = 1; j <= m; ++j)
+    for (unsigned int c = 0; c < nrc; ++c)
+      if (reach_frictional[c])
+        for (unsigned int t = 0; t < 2; ++t)
+        {
+          const unsigned int i = 2 * (j * nrc + c) + t, h = 2 * ((j - 1) * nrc + c) + t;
+          work += 0.5 * ((total_tangential[h] + total_tangential[i]) *
+                             total_tangential_velocity[i] -
+                         (pass_tangential[h] + pass_tangential[i]) *
+                             pass_tangential_velocity[i]);
+        }
+  FrictionalContacts &friction = integrator.coupling_view().friction();
+  friction.add_work(work);
+  for (unsigned int c = 0; c < nrc; ++c)
+    if (reach_frictional[c])
+      for (unsigned int t = 0; t < 2; ++t)
+        friction.set_tangential_impulse(
+            reach_contacts[c], t, total_tangential[2 * (m * nrc + c) + t]);
+  // the samples: tangential impulses, and the slip velocities |T V_{j+1/2}|
+  // of the contacts that touch
+  for (unsigned int j = 1; j <= m && j <= n_samples; ++j)
+  {
+    ContactSample &s = samples[j - 1];
+    for (unsigned int c = 0; c < nrc; ++c)
+      if (reach_frictional[c])
+      {
+        const unsigned int k = reach_contacts[c], i = 2 * (j * nrc + c);
+        s.tangential_impulses[2 * k] = total_tangential[i];
+        s.tangential_impulses[2 * k + 1] = total_tangential[i + 1];
+        if (s.friction_states[k] != FrictionState::open)
+          s.slip_velocities[k] = std::hypot(total_tangential_velocity[i + 2 * nrc],
+                                            total_tangential_velocity[i + 2 * nrc + 1]);
+      }
   }
   return true;
 }
@@ -548,6 +707,16 @@ double RampSuperposition::ramp_dissipation(const Response &ramp,
         const double impulse = ramp_impulse[j * nrc + c];
         if (impulse != 0.)
           impulse_term += contacts[reach_contacts[c]].apply(dissipation_p) * impulse;
+        // (A9) the tangential impulses of the sticking contacts
+        if (reach_friction && reach_frictional[c])
+          for (unsigned int t = 0; t < contacts[reach_contacts[c]].tangents.size(); ++t)
+          {
+            const double tangential = ramp_tangential[2 * (j * nrc + c) + t];
+            if (tangential != 0.)
+              impulse_term +=
+                  contacts[reach_contacts[c]].tangents[t].apply(dissipation_p) *
+                  tangential;
+          }
       }
     dissipation_p_prev.swap(dissipation_p);
   }

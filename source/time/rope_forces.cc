@@ -2,7 +2,9 @@
 #include <hati/time/rope_forces.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
+#include <limits>
 
 namespace hati
 {
@@ -92,6 +94,21 @@ std::vector<types::global_dof_index> RopeForces::nonlinear_dofs() const
     for (const auto dof : rope.dofs())
       dofs.push_back(dof);
   return dofs;
+}
+
+double RopeForces::relative_force_change(const double du) const
+{
+  if (du == 0.)
+    return 0.;
+  double change = 0.;
+  for (unsigned int r = 0; r < ropes.size(); ++r)
+  {
+    const double scale = r < current.max_tension.size() ? current.max_tension[r] : 0.;
+    if (!(scale > 0.))
+      return std::numeric_limits<double>::infinity();
+    change = std::max(change, 2. * std::sqrt(3.) * ropes[r].stiffness * du / scale);
+  }
+  return change;
 }
 
 void RopeForces::save(std::any &state) const

@@ -11,6 +11,7 @@
 
 #include <any>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -138,6 +139,18 @@ public:
    * responses are linear), it integrates the step instead.
    */
   virtual std::vector<types::global_dof_index> nonlinear_dofs() const { return {}; }
+
+  /**
+   * A bound of the change of the law's force, relative to its force scale,
+   * when every DoF of nonlinear_dofs() moves by at most @p du (m): HATI
+   * superposes a unit-ramp response that moves those DoFs while this is
+   * at most RampSuperposition::nonlinear_force_tolerance (G3'). By default
+   * 0 for @p du = 0 and infinity otherwise (never superposed).
+   */
+  virtual double relative_force_change(const double du) const
+  {
+    return du == 0. ? 0. : std::numeric_limits<double>::infinity();
+  }
   /** @} */
 
   /** @name Rows of the velocity-level operator (A4-A6) */

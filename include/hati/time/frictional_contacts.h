@@ -68,6 +68,15 @@ public:
   {
     return tangential[2 * k + t];
   }
+  /**
+   * Set the tangential impulse of contact @p k in the last step, tangent row
+   * @p t, to @p value (N s): the coupling's superposition (G3', A9).
+   */
+  void
+  set_tangential_impulse(const unsigned int k, const unsigned int t, const double value)
+  {
+    tangential[2 * k + t] = value;
+  }
   /** `||lambda_t||` of contact @p k in the last step (N s). */
   double tangential_impulse_norm(const unsigned int k) const;
   /**

@@ -43,6 +43,11 @@ struct HATIParameters
    * multiplier linear in time over the macro step (the stable variant).
    */
   std::string coupling_method = "macro-linear";
+  /**
+   * "Superposition": whether macro steps with contacts or ropes within reach
+   * are superposed when they may be (true) or always redone (false, a check).
+   */
+  bool superposition = true;
 };
 
 /**
@@ -256,6 +261,8 @@ private:
 
   const Decomposition &decomposition;
   const unsigned int m;
+  /** HATIParameters::superposition. */
+  const bool superpose_steps;
   CDLagrange explicit_integrator;
   /** The coupling's access to the explicit integrator's steps (G2). */
   CDLagrange::CouplingView explicit_view;

@@ -105,6 +105,14 @@ public:
    * that converges within them is computed as before the secant update.
    */
   static constexpr unsigned int plain_corrections = 3;
+  /**
+   * A response that moves a DoF of a nonlinear force law (a rope's, R1) is
+   * superposed only while the change of the law's force it can cause is at
+   * most this fraction of the law's force scale
+   * (ForceLaw::relative_force_change()): the pass's forces of the law then
+   * hold for the corrected micro steps to this fraction.
+   */
+  static constexpr double nonlinear_force_tolerance = 1e-12;
   /** @} */
 
   /**
@@ -154,15 +162,26 @@ public:
     // (rows j * n_contacts + c: contact c of the reach after micro step j,
     // its normal velocity before it)
     SparseColumns impulse, gap, normal_velocity;
+    /**
+     * With friction within reach (A9): the tangential impulses after micro
+     * step j and the tangential velocities `T V_{j-1/2}` before it, rows
+     * `2 (j n_contacts + c) + t` (tangent t of contact c of the reach). The
+     * frictional contacts of the pushing set stick in the response (their
+     * tangent rows are equalities, FrictionalContacts::solve()).
+     */
+    SparseColumns tangential_impulse, tangential_velocity;
     /** H^-1 (inverted once, one product per solve). */
     DenseColumns H_inverse;
     /**
      * Whether the response moves a DoF of a nonlinear force law
      * (ForceLaw::nonlinear_dofs(), e.g. a rope's, R1): the law's forces of
-     * the pass would change with the correction, so the superposition does
-     * not hold and the micro steps are redone.
+     * the pass change with the correction, so superpose() checks that they
+     * change by at most nonlinear_force_tolerance, from the response's
+     * displacements on those DoFs after every micro step (rows
+     * `(j - 1) n_nonlinear + i`), or the micro steps are redone.
      */
     bool moves_nonlinear_law = false;
+    SparseColumns nonlinear_displacement;
   };
 
   /** Whether contacts are within reach of the ramp response. */
@@ -177,8 +196,8 @@ public:
   }
   /**
    * Whether a contact with friction (A9) lies within reach: its response is
-   * not linear in the multiplier, so the coupling redoes the micro steps
-   * instead of superposing.
+   * linear in the multiplier only while it sticks (or stays open), which
+   * response_for_pass() and superpose() check.
    */
   bool friction_in_reach() const { return reach_friction; }
   /** Whether the pass records the damping on the reach (damped). */
@@ -206,8 +225,13 @@ public:
   void record_load_weights(const unsigned int j, const CDLagrange::CouplingView &view);
   /** After micro step @p j (before the first: j = 0): d_j on the reach. */
   void record_damping_force(const unsigned int j, const Vector<double> &d);
-  /** After micro step @p j: the contacts within reach from @p sample. */
-  void record_contacts(const unsigned int j, const ContactSample &sample);
+  /**
+   * After micro step @p j: the contacts within reach from @p sample, and
+   * with friction (A9) their tangential velocities at @p V (`V_{j+1/2}`).
+   */
+  void record_contacts(const unsigned int j,
+                       const ContactSample &sample,
+                       const Vector<double> &V);
   /** @} */
 
   /**
@@ -215,14 +239,20 @@ public:
    * their pushing set if it stayed the same over the pass (computed on
    * first use and cached), else the open response and @p same_active_set
    * false (the micro steps are to be redone). A response that moves a rope
-   * (R1) is not superposed either: @p same_active_set false.
+   * (R1) is not superposed either: @p same_active_set false. Nor is one
+   * whose frictional contacts (A9) of the pushing set did not stick at
+   * every micro step of the pass: then the response of the set is returned
+   * (its H^-1 corrects the redone micro steps) with @p same_active_set false.
    */
   const Response &response_for_pass(bool &same_active_set);
 
   /**
    * Check that the pass plus the ramp response `r lambda` keeps the active
    * set of the pass (impulses of active contacts >= 0, gaps of inactive
-   * ones > 0 at every micro step); if so add it to the state of
+   * ones > 0 at every micro step) and, with friction (A9), that the
+   * sticking contacts' tangential impulses stay within their Coulomb cones
+   * `|lambda_t| <= mu lambda_n` (to lcp_check_tolerance of the largest
+   * impulse); if so add it to the state of
    * @p integrator, its works, @p increments and the @p n_samples recorded
    * contact @p samples of the pass and return true.
    */
@@ -245,10 +275,37 @@ private:
   void store_dissipation(const std::vector<FullMatrix<double>> &velocity_reach,
                          const std::vector<FullMatrix<double>> &damping_reach,
                          Response &r) const;
+  /**
+   * The tangential velocities `T V` of the frictional contacts within reach
+   * at @p V into column @p l of @p rows (row 2 c + t, compute_ramp()).
+   */
+  void record_tangential(const Vector<double> &V,
+                         FullMatrix<double> &rows,
+                         const unsigned int l) const;
   /** The ramp response of @p pattern, computed on first use and cached. */
   const Response &ramp_for(const std::vector<bool> &pattern);
   /** The reach, the contacts within it and the damping records (set-up). */
   void find_reach();
+  /**
+   * Friction within reach (A9) in superpose(): false if a sticking contact's
+   * total tangential impulse leaves its Coulomb cone at a micro step;
+   * otherwise its impulses, the friction work and the samples corrected.
+   */
+  bool superpose_friction(const Response &r,
+                          const Vector<double> &lambda,
+                          CDLagrange &integrator,
+                          std::vector<ContactSample> &samples,
+                          const unsigned int n_samples,
+                          const double impulse_tolerance);
+  /**
+   * Nonlinear force laws in superpose() (@p r moves their DoFs): whether the
+   * correction `r lambda` changes each law's force by at most
+   * nonlinear_force_tolerance of its scale (ForceLaw::relative_force_change()
+   * of the largest displacement it adds to those DoFs at a micro step).
+   */
+  bool nonlinear_laws_hold(const Response &r,
+                           const Vector<double> &lambda,
+                           const CDLagrange &integrator);
   /** The contacts of superpose(): false if the active set does not hold. */
   bool superpose_contacts(const Response &r,
                           const Vector<double> &lambda,
@@ -273,9 +330,23 @@ private:
   std::map<std::vector<bool>, Response> pattern_ramps;
   unsigned long n_patterns = 0;
 
+  /** The DoFs of the nonlinear force laws (ForceLaw::nonlinear_dofs()). */
+  std::vector<types::global_dof_index> nonlinear_dofs;
+  /** Work vector of nonlinear_laws_hold(). */
+  Vector<double> ramp_nonlinear;
   // contacts within reach of the ramp response (indices)
   std::vector<unsigned int> reach_contacts;
   bool reach_friction = false;
+  /** Whether each contact within reach has friction (A9). */
+  std::vector<bool> reach_frictional;
+  // with friction: the pass's tangential impulses after micro step j and
+  // tangential velocities T V_{j-1/2} before it (row 2 (j nrc + c) + t),
+  // whether each contact stuck in micro step j (row (j - 1) nrc + c), the
+  // ramp's part and the totals of superpose_friction()
+  std::vector<double> pass_tangential, pass_tangential_velocity;
+  std::vector<bool> pass_stick;
+  Vector<double> ramp_tangential, ramp_tangential_velocity;
+  std::vector<double> total_tangential, total_tangential_velocity;
   // the pass over the contacts within reach: impulses, gaps, normal
   // velocities and active flags per micro step (row-major, j x contact)
   std::vector<double> pass_impulse, pass_gap, pass_normal;
@@ -342,7 +413,8 @@ inline void RampSuperposition::record_damping_force(const unsigned int j,
 }
 
 inline void RampSuperposition::record_contacts(const unsigned int j,
-                                               const ContactSample &sample)
+                                               const ContactSample &sample,
+                                               const Vector<double> &V)
 {
   const unsigned int nrc = reach_contacts.size();
   for (unsigned int c = 0; c < nrc; ++c)
@@ -351,6 +423,16 @@ inline void RampSuperposition::record_contacts(const unsigned int j,
     pass_impulse[j * nrc + c] = sample.impulses[k];
     pass_gap[j * nrc + c] = sample.gaps[k];
     pass_normal[(j + 1) * nrc + c] = sample.normal_velocities[k];
+    if (reach_frictional[c])
+    {
+      const auto &tangents = system.contacts[k].tangents;
+      for (unsigned int t = 0; t < tangents.size(); ++t)
+      {
+        pass_tangential[2 * (j * nrc + c) + t] = sample.tangential_impulses[2 * k + t];
+        pass_tangential_velocity[2 * ((j + 1) * nrc + c) + t] = tangents[t].apply(V);
+      }
+      pass_stick[(j - 1) * nrc + c] = sample.friction_states[k] == FrictionState::stick;
+    }
   }
 }
 

@@ -71,6 +71,15 @@ public:
 
   /** The translations of both ends of every rope (R1 is nonlinear in them). */
   std::vector<types::global_dof_index> nonlinear_dofs() const override;
+  /**
+   * `max_r 2 sqrt(3) k_r du / T_max,r`: the force `T e` of a rope is
+   * Lipschitz in its chord with the constant `k` (the tangent is at most
+   * `k I`, doc/theory.md 10.2, and a slack rope has none), ends moving by
+   * at most @p du each change the chord by at most `2 sqrt(3) du`, and the
+   * scale is the largest tension so far (infinite if a rope has not been
+   * taut and @p du > 0).
+   */
+  double relative_force_change(const double du) const override;
 
   /**
    * 0: the ropes' bound `k (1/m_a + 1/m_b)` is part of the model's
