@@ -469,6 +469,7 @@ void TimeLoop<Integrator>::add_coupling_summary(SummaryEntries &summary) const
                     {"interface_velocity_jump", integrator.interface_velocity_jump()},
                     {"redone_macro_steps", integrator.redone_macro_steps()},
                     {"hati_redone_macro_steps", integrator.redone_macro_steps()},
+                    {"hati_redo_passes", integrator.redo_passes()},
                     {"interface_iterations", integrator.interface_iterations()},
                     {"ramp_patterns", integrator.ramp_patterns()}});
     std::cout << "  HATI wall time: explicit " << integrator.explicit_seconds()

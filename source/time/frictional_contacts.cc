@@ -57,6 +57,7 @@ void FrictionalContacts::solve(const std::vector<unsigned int> &cluster,
                                const Vector<double> &inverse_mass,
                                const Vector<double> &v_before,
                                const bool prescribed,
+                               const std::vector<bool> *sliding,
                                Vector<double> &v,
                                std::vector<double> &lambda)
 {
@@ -70,10 +71,13 @@ void FrictionalContacts::solve(const std::vector<unsigned int> &cluster,
     const ContactRow &c = contacts[k];
     first.push_back(rows.size());
     rows.push_back(&c);
-    if (c.frictional())
+    // a prescribed sliding contact: its normal row alone (no tangential
+    // impulse in the linear response)
+    const bool slides = prescribed && sliding != nullptr && (*sliding)[k];
+    if (c.frictional() && !slides)
       for (const auto &t : c.tangents)
         rows.push_back(&t);
-    mu.push_back(c.frictional() ? c.friction : 0.);
+    mu.push_back(c.frictional() && !slides ? c.friction : 0.);
     bilateral.push_back(c.bilateral);
   }
   first.push_back(rows.size());

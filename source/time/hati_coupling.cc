@@ -229,13 +229,14 @@ void HATICoupling::step()
   start = Clock::now();
   // friction within reach of the ramp (A9) is linear in the multiplier while
   // its contacts stick: response_for_pass() and superpose() check it
-  if (same_active_set && superpose_steps &&
-      superposition->superpose(ramp,
-                               delta_lambda,
-                               explicit_integrator,
-                               increments,
-                               contact_record,
-                               n_recorded))
+  const bool superposed = same_active_set && superpose_steps &&
+                          superposition->superpose(ramp,
+                                                   delta_lambda,
+                                                   explicit_integrator,
+                                                   increments,
+                                                   contact_record,
+                                                   n_recorded);
+  if (superposed)
   {
     if (after_micro_step)
       for (unsigned int j = 0; j < n_recorded; ++j)
@@ -341,6 +342,7 @@ void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
     lambda_m += step;
   }
   max_iterations = std::max(max_iterations, iterations + 1);
+  n_redo_passes += iterations + 1;
   if (after_micro_step)
     for (unsigned int j = 0; j < n_recorded; ++j)
       after_micro_step(contact_record[j]);

@@ -55,7 +55,7 @@ RampSuperposition::RampSuperposition(const DiscreteSystem &system,
   pass_gap.resize((m + 1) * nrc);
   pass_normal.resize((m + 2) * nrc);
   pass_active.resize(m * nrc);
-  pattern.resize(nrc);
+  pattern.assign(reach_friction ? 2 * nrc : nrc, false);
   if (reach_friction)
   {
     pass_tangential.assign(2 * (m + 1) * nrc, 0.);
@@ -136,10 +136,17 @@ void RampSuperposition::compute_ramp(const std::vector<bool> &active_set,
   CDLagrange::CouplingView ramp = integrator.coupling_view();
   const auto &shapes = ramp.applied_load_shapes();
   const bool with_contacts = !active_set.empty();
-  std::vector<bool> prescribed(system.contacts.size(), false);
-  for (unsigned int c = 0; c < active_set.size(); ++c)
+  // the pattern: the active flags of the contacts within reach, then
+  // (with friction) their sliding flags
+  std::vector<bool> prescribed(system.contacts.size(), false),
+      sliding(system.contacts.size(), false);
+  for (unsigned int c = 0; c < nrc && with_contacts; ++c)
+  {
     prescribed[reach_contacts[c]] = active_set[c];
-  ramp.prescribe_active_set(with_contacts ? &prescribed : nullptr);
+    sliding[reach_contacts[c]] = active_set.size() == 2 * nrc && active_set[nrc + c];
+  }
+  ramp.prescribe_active_set(with_contacts ? &prescribed : nullptr,
+                            with_contacts ? &sliding : nullptr);
 
   r.state.assign(integrator.linear_state().size(), SparseColumns());
   FullMatrix<double> increment_sum(n_gamma, n_gamma),
@@ -319,7 +326,8 @@ void RampSuperposition::record_tangential(const Vector<double> &V,
 const RampSuperposition::Response &
 RampSuperposition::ramp_for(const std::vector<bool> &active_set)
 {
-  if (std::find(active_set.begin(), active_set.end(), true) == active_set.end())
+  if (std::find(active_set.begin(), active_set.begin() + reach_contacts.size(), true) ==
+      active_set.begin() + reach_contacts.size())
     return open_ramp;
   auto it = pattern_ramps.find(active_set);
   if (it != pattern_ramps.end())
@@ -361,20 +369,22 @@ RampSuperposition::response_for_pass(bool &same_active_set)
       }
   if (!same_active_set)
     return open_ramp;
-  const Response &r = ramp_for(pattern);
   // (A9) the response of the set is that of its frictional contacts
-  // sticking: a contact that slipped in a micro step of the pass is not
-  // linear in the multiplier (the micro steps are redone, corrected with
-  // this response's H^-1)
+  // sticking: a contact that slid in a micro step of the pass is not linear
+  // in the multiplier. The micro steps are redone, corrected with the
+  // response of the set with the sliding contacts' tangent rows left out
+  // (their friction impulse held), which is closer to their true response
+  // than sticking (sliding flags after the active ones in the pattern)
   if (reach_friction)
-    for (unsigned int j = 0; j < m && same_active_set; ++j)
-      for (unsigned int c = 0; c < nrc; ++c)
-        if (reach_frictional[c] && pattern[c] && !pass_stick[j * nrc + c])
-        {
-          same_active_set = false;
-          break;
-        }
-  return r;
+    for (unsigned int c = 0; c < nrc; ++c)
+    {
+      bool slides = false;
+      for (unsigned int j = 0; j < m && reach_frictional[c] && pattern[c]; ++j)
+        slides = slides || !pass_stick[j * nrc + c];
+      pattern[nrc + c] = slides;
+      same_active_set = same_active_set && !slides;
+    }
+  return ramp_for(pattern);
 }
 
 void RampSuperposition::start_pass(const CDLagrange &integrator, const bool contacts)

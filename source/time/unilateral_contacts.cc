@@ -134,7 +134,7 @@ void UnilateralContacts::apply_impulses(const Vector<double> &U,
     if (frictional_contacts.any() && frictional_contacts.frictional(cluster))
     {
       frictional_contacts.solve(
-          cluster, minv, v_before, prescribed != nullptr, v, lambda);
+          cluster, minv, v_before, prescribed != nullptr, prescribed_sliding, v, lambda);
       continue;
     }
     if (m == 1)

@@ -387,11 +387,14 @@ public:
    * the contacts flagged as active whatever their gap and solve (A5) as
    * bilateral constraints, `W lambda = -q` without the sign condition: the
    * linear response of the explicit part for a given active set (the
-   * coupling's ramp responses). nullptr restores (A4)-(A5).
+   * coupling's ramp responses); its frictional contacts stick (A9: tangent
+   * rows as equalities) unless flagged in @p sliding (one flag per contact,
+   * or nullptr: their tangent rows are left out). nullptr restores (A4)-(A5).
    */
-  void prescribe_active_set(const std::vector<bool> *pattern)
+  void prescribe_active_set(const std::vector<bool> *pattern,
+                            const std::vector<bool> *sliding = nullptr)
   {
-    integrator->contacts->prescribe_active_set(pattern);
+    integrator->contacts->prescribe_active_set(pattern, sliding);
   }
 
   /** @name What the superposition (G3') adds to the integrator's record */

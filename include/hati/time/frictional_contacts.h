@@ -49,13 +49,18 @@ public:
    * and tangent rows with @p inverse_mass, `q = L V_free + e L V_{n+1/2}`
    * for the normal rows (@p v_before = V_{n+1/2}) and `T V_free` for the
    * tangent rows; with @p prescribed every row is an equality (the linear
-   * response of a prescribed active set, sticking, G3'). @p v (V_free)
+   * response of a prescribed active set, sticking, G3') except the tangent
+   * rows of the contacts flagged in @p sliding (one flag per contact, or
+   * nullptr), which are left out: the response of a sliding contact
+   * without the change of its friction impulse (G3', the matrix of the
+   * corrections of a redone macro step). @p v (V_free)
    * becomes V_{n+3/2}; the normal impulses go to @p lambda.
    */
   void solve(const std::vector<unsigned int> &cluster,
              const Vector<double> &inverse_mass,
              const Vector<double> &v_before,
              const bool prescribed,
+             const std::vector<bool> *sliding,
              Vector<double> &v,
              std::vector<double> &lambda);
 

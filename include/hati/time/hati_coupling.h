@@ -187,6 +187,11 @@ public:
   unsigned long redone_macro_steps() const { return n_redone; }
   /** Largest number of interface corrections in one macro step. */
   unsigned int interface_iterations() const { return max_iterations; }
+  /**
+   * The passes of micro steps the redone macro steps ran after their first
+   * one (one per correction of Lambda_{n+m}, the converged one included).
+   */
+  unsigned long redo_passes() const { return n_redo_passes; }
   /** Active sets of the contacts within reach whose ramp response was computed. */
   unsigned long ramp_patterns() const { return superposition->ramp_patterns(); }
 
@@ -289,6 +294,7 @@ private:
   double max_jump = 0.;
   unsigned long n_redone = 0;
   unsigned int max_iterations = 0;
+  unsigned long n_redo_passes = 0;
   double seconds[3] = {0., 0., 0.};
   double setup = 0.;
   mutable Vector<double> global_U, global_V, expanded_U, expanded_V;

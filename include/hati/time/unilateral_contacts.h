@@ -127,9 +127,15 @@ public:
   /**
    * With a non-null @p pattern (one flag per contact), the flagged
    * contacts are active whatever their gap and (A5) is solved as
-   * equalities (CDLagrange::CouplingView::prescribe_active_set()).
+   * equalities, the tangent rows of frictional contacts too unless flagged
+   * in @p sliding (CDLagrange::CouplingView::prescribe_active_set()).
    */
-  void prescribe_active_set(const std::vector<bool> *pattern) { prescribed = pattern; }
+  void prescribe_active_set(const std::vector<bool> *pattern,
+                            const std::vector<bool> *sliding = nullptr)
+  {
+    prescribed = pattern;
+    prescribed_sliding = sliding;
+  }
   /** Set the gap (m) and impulse (N s) of contact @p k (the superposition, G3'). */
   void set_state(const unsigned int k, const double gap_k, const double impulse)
   {
@@ -162,6 +168,11 @@ private:
   std::vector<std::vector<unsigned int>> coupled_with;
   /** Active set imposed by prescribe_active_set() (nullptr: from the gaps). */
   const std::vector<bool> *prescribed = nullptr;
+  /**
+   * With a prescribed active set: the frictional contacts taken as sliding
+   * (their tangent rows left out, FrictionalContacts::solve()), or nullptr.
+   */
+  const std::vector<bool> *prescribed_sliding = nullptr;
   /** Work space of apply_impulses(), reused from step to step. */
   std::vector<unsigned int> active_list, cluster;
   std::vector<bool> clustered;
