@@ -2,7 +2,10 @@
 
 #include <hati/contact/friction_solver.h>
 
+#include <boost/container/static_vector.hpp>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace hati
@@ -264,9 +267,10 @@ namespace
 struct FrictionBlock
 {
   unsigned int contact;
-  std::vector<unsigned int> partners;
+  /** At most two partners (one per tangent); fixed storage, no allocation. */
+  boost::container::static_vector<unsigned int, 2> partners;
   /** Per partner the global row of the tangent it is parallel to. */
-  std::vector<unsigned int> parallel_to;
+  boost::container::static_vector<unsigned int, 2> parallel_to;
 };
 
 /** Whether rows i and j of the Delassus matrix are parallel (Cauchy-Schwarz equality). */
@@ -280,13 +284,17 @@ bool parallel_rows(const FullMatrix<double> &W,
 
 /** The blocks of a cluster: every contact once, frictional contacts with their partners.
  */
-std::vector<FrictionBlock> friction_blocks(const FullMatrix<double> &W,
-                                           const std::vector<unsigned int> &first,
-                                           const std::vector<double> &mu)
+void friction_blocks(const FullMatrix<double> &W,
+                     const std::vector<unsigned int> &first,
+                     const std::vector<double> &mu,
+                     std::vector<FrictionBlock> &all)
 {
   const unsigned int m = mu.size();
-  std::vector<int> owner(m, -1);
-  std::vector<FrictionBlock> blocks;
+  // work space reused from call to call (the solver runs every step)
+  thread_local std::vector<int> owner;
+  thread_local std::vector<FrictionBlock> blocks;
+  owner.assign(m, -1);
+  blocks.clear();
   for (unsigned int k = 0; k < m; ++k)
     if (mu[k] > 0. && first[k + 1] - first[k] > 1)
     {
@@ -304,7 +312,7 @@ std::vector<FrictionBlock> friction_blocks(const FullMatrix<double> &W,
       owner[k] = k;
       blocks.push_back(b);
     }
-  std::vector<FrictionBlock> all;
+  all.clear();
   for (unsigned int k = 0; k < m; ++k)
     if (owner[k] == static_cast<int>(k))
       all.push_back(*std::find_if(blocks.begin(),
@@ -313,7 +321,6 @@ std::vector<FrictionBlock> friction_blocks(const FullMatrix<double> &W,
                                   { return b.contact == k; }));
     else if (owner[k] < 0)
       all.push_back(FrictionBlock{k, {}, {}});
-  return all;
 }
 
 /**
@@ -339,10 +346,13 @@ bool block_solve(const FullMatrix<double> &Wb,
                  FrictionState &state)
 {
   const unsigned int p = held.size(), nb = size + p;
+  // the inverse of W_SS per size of S (0, 1 or 2), reused
+  thread_local std::array<FullMatrix<double>, 3> inverses;
   for (unsigned int mask = 0; mask < (1u << p); ++mask)
   {
     bool valid = true;
-    std::vector<unsigned int> S, F{0};
+    boost::container::static_vector<unsigned int, 2> S;
+    boost::container::static_vector<unsigned int, 3> F{0};
     for (unsigned int i = 0; i < p; ++i)
       if (mask & (1u << i))
         S.push_back(size + i);
@@ -359,7 +369,8 @@ bool block_solve(const FullMatrix<double> &Wb,
         F.push_back(t);
     }
     const unsigned int s = S.size(), f = F.size();
-    FullMatrix<double> WSS_inv(s, s);
+    FullMatrix<double> &WSS_inv = inverses[s];
+    WSS_inv.reinit(s, s);
     for (unsigned int i = 0; i < s; ++i)
       for (unsigned int j = 0; j < s; ++j)
         WSS_inv(i, j) = Wb(S[i], S[j]);
@@ -449,12 +460,14 @@ FrictionSolverResult solve_frictional_cluster(const FrictionalCluster &cluster,
     r = 0.;
   state.assign(m, FrictionState::open);
   FrictionSolverResult result;
-  const std::vector<FrictionBlock> blocks = friction_blocks(W, first, mu);
+  // work space reused from call to call (the solver runs every step)
+  thread_local std::vector<FrictionBlock> blocks;
+  friction_blocks(W, first, mu, blocks);
   double Wk[9], qk[3], rk[3];
-  FullMatrix<double> Wb;
-  std::vector<double> qb, rb;
-  std::vector<unsigned int> rows_b, held;
-  std::vector<bool> partner_bilateral;
+  thread_local FullMatrix<double> Wb;
+  thread_local std::vector<double> qb, rb;
+  thread_local std::vector<unsigned int> rows_b, held;
+  thread_local std::vector<bool> partner_bilateral;
   for (unsigned int sweep = 1;; ++sweep)
   {
     double change = 0., norm = 0.;
@@ -522,7 +535,7 @@ FrictionSolverResult solve_frictional_cluster(const FrictionalCluster &cluster,
         exact_sweep = false;
       }
       // each contact of the block on its own with the others' impulses as they are
-      std::vector<unsigned int> members{k};
+      boost::container::static_vector<unsigned int, 3> members{k};
       members.insert(members.end(), block.partners.begin(), block.partners.end());
       for (const unsigned int c : members)
       {

@@ -82,6 +82,12 @@ void FrictionalContacts::solve(const std::vector<unsigned int> &cluster,
   }
   first.push_back(rows.size());
   const unsigned int n = rows.size();
+  // the work space of a cluster of n rows (deal.II's reinit() to another
+  // size allocates: the crane's clusters alternate between sizes)
+  if (work_space.size() <= n)
+    work_space.resize(n + 1);
+  FullMatrix<double> &W = work_space[n].W;
+  Vector<double> &q = work_space[n].q, &r = work_space[n].r;
   delassus(rows, inverse_mass, W);
   if (q.size() != n)
     q.reinit(n);

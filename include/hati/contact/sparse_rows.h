@@ -86,10 +86,16 @@ void delassus(const std::vector<const Row *> &rows,
   if (W.m() != m || W.n() != m)
     W.reinit(m, m);
   // order[b]: row b's positions sorted by DoF, for its long rows only
-  std::vector<std::vector<unsigned int>> order(m);
+  // (work space reused from call to call: the contacts call this every step)
+  thread_local std::vector<std::vector<unsigned int>> order;
+  if (order.size() < m)
+    order.resize(m);
   for (unsigned int b = 0; b < m; ++b)
+  {
+    order[b].clear();
     if (rows[b]->dofs.size() > short_row)
       internal::sort_by_dof(*rows[b], order[b]);
+  }
   for (unsigned int a = 0; a < m; ++a)
     for (unsigned int b = 0; b < m; ++b)
     {

@@ -144,8 +144,13 @@ private:
   std::vector<double> mu;
   std::vector<bool> bilateral;
   std::vector<FrictionState> cluster_states;
-  FullMatrix<double> W;
-  Vector<double> q, r;
+  /** The Delassus matrix, q and the impulses of a cluster, per number of rows. */
+  struct WorkSpace
+  {
+    FullMatrix<double> W;
+    Vector<double> q, r;
+  };
+  std::vector<WorkSpace> work_space;
 };
 } // namespace hati
 
