@@ -75,7 +75,9 @@ for damping in ("frequency_range", "Rayleigh", "braked_rope"):
     e, h = s["full_explicit"], s["hati"]
     te, th = statistics.median(times["full_explicit"]), statistics.median(times["hati"])
     rows[damping] = (e, h, te, th)
-    print("\n=== %s damping (%s)" % (damping.replace("_", " "), e.get("damping_type")))
+    print("\n=== %s" % ("braked crane with its rope (%s damping)" % e.get("damping_type")
+                         if damping == "braked_rope" else
+                         "%s damping (%s)" % (damping.replace("_", " "), e.get("damping_type"))))
     print("%-16s %10s %10s %18s %12s %10s" % ("run", "dt (s)", "dt_crit (s)", "DoFs",
                                               "stepping (s)", "speed-up"))
     print("%-16s %10.3g %10.3g %18d %12.2f %10s" % ("full explicit", e["dt"],
