@@ -334,6 +334,8 @@ private:
 
   /** The DoFs of the nonlinear force laws (ForceLaw::nonlinear_dofs()). */
   std::vector<types::global_dof_index> nonlinear_dofs;
+  /** The indices of those laws among the integrator's force_laws(). */
+  std::vector<unsigned int> nonlinear_laws;
   /** Work vector of nonlinear_laws_hold(). */
   Vector<double> ramp_nonlinear;
   // contacts within reach of the ramp response (indices)
