@@ -20,6 +20,8 @@ nlohmann::ordered_json json_value(const SummaryValue &value)
     return value.integer();
   case SummaryValue::Kind::string:
     return value.text();
+  case SummaryValue::Kind::boolean:
+    return value.integer() != 0;
   case SummaryValue::Kind::list:
   {
     auto list = nlohmann::ordered_json::array();

@@ -5,6 +5,7 @@
 #include <hati/base/names.h>
 #include <hati/loading/accelerogram.h>
 #include <hati/loading/base_excitation.h>
+#include <hati/loading/design_spectrum.h>
 #include <hati/output/response_spectra.h>
 #include <hati/run/analysis_registry.h>
 #include <hati/run/problem.h>
@@ -39,6 +40,7 @@ void Problem::declare_parameters(ParameterHandler &prm)
   prm.leave_subsection();
   OutputParameters::declare_parameters(prm);
   SuiteParameters::declare_parameters(prm);
+  DesignSpectrumParameters::declare_parameters(prm);
 }
 
 Problem::Problem(ParameterHandler &prm, const ConditionalOStream &out) : out(out)

@@ -24,6 +24,13 @@ void SuiteParameters::declare_parameters(ParameterHandler &prm)
       "index>/, with suite.csv, suite_summary.json and suite_spectra.csv. Empty Records: "
       "the file's own accelerograms (record 'base').");
   prm.declare_entry(
+      "Fundamental period",
+      "0",
+      Patterns::Double(0.),
+      "The model's first period T1 (s) of the design spectrum check (suite_summary.json "
+      "design_spectrum_check, over [0.2 T1, 2 T1]); 0: from a modal analysis of the "
+      "model (its first mode of nonzero frequency, in <output>/modal/).");
+  prm.declare_entry(
       "Scale factors",
       "1",
       Patterns::List(Patterns::Double(-100., 100.), 1),
@@ -160,6 +167,7 @@ void SuiteParameters::parse_parameters(ParameterHandler &prm)
   const std::string scales_text = prm.get("Scale factors");
   const std::string variations_text = prm.get("Variations");
   statistic = prm.get("Statistic");
+  fundamental_period = prm.get_double("Fundamental period");
   prm.leave_subsection();
   records = parse_records(records_text);
   scale_factors = Utilities::string_to_double(Utilities::split_string_list(scales_text));
@@ -265,7 +273,17 @@ std::vector<SuiteMember> plan_suite(const SuiteParameters &suite,
                             "Suite/Records=",
                             "Suite/Scale factors=1",
                             "Suite/Variations=",
-                            "Suite/Statistic="});
+                            "Suite/Statistic=",
+                            "Suite/Fundamental period=0",
+                            // the target is the suite's, not a member's: a new
+                            // target reuses the members
+                            "Design spectrum/Type=none",
+                            "Design spectrum/Ground type=C",
+                            "Design spectrum/Peak ground acceleration=0",
+                            "Design spectrum/Damping ratio=0.05",
+                            "Design spectrum/Vertical=true",
+                            "Design spectrum/Table file=",
+                            "Design spectrum/Period range=0.02, 4"});
         members.push_back(m);
       }
   return members;

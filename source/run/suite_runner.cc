@@ -1,7 +1,9 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
+#include <hati/output/design_spectrum_check.h>
 #include <hati/output/output_file.h>
+#include <hati/output/plot_script.h>
 #include <hati/output/run_directory.h>
 #include <hati/output/suite_statistics.h>
 #include <hati/run/mpi_consensus.h>
@@ -13,14 +15,11 @@
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
 
-#include <spawn.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <chrono>
 #include <csignal>
-#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -28,8 +27,6 @@
 #include <limits>
 #include <memory>
 #include <sstream>
-
-extern char **environ;
 
 namespace hati
 {
@@ -111,6 +108,7 @@ private:
 
 /** The suite's own files in its folder (links there refused, old ones deleted). */
 const char *const suite_files[] = {"suite.csv",
+                                   "design_spectrum_check.csv",
                                    "suite_summary.json",
                                    "suite_spectra.csv",
                                    "suite.png",
@@ -129,58 +127,6 @@ void refuse_linked_folder(const std::string &path)
                                 "never followed; remove the link)"));
 }
 
-/**
- * Run `python3 scripts/plot_suite.py <folder>` (the script next to the
- * executable's build folder, else in the current directory), its output in
- * <folder>/plot_suite.log; the warning if it could not draw, empty if it did.
- */
-std::string draw_plots(const std::string &folder)
-{
-  std::error_code error;
-  const auto exe = std::filesystem::read_symlink("/proc/self/exe", error);
-  std::string script = "scripts/plot_suite.py";
-  if (!error && std::filesystem::exists(exe.parent_path().parent_path() / script))
-    script = (exe.parent_path().parent_path() / script).string();
-  const std::string log = folder + "/plot_suite.log";
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(
-      &actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW, 0644);
-  posix_spawn_file_actions_adddup2(&actions, 1, 2);
-  // the system's python3 (Debian's python3-matplotlib, scripts/setup.sh) before
-  // another one on the PATH, as run.sh
-  std::string python =
-      std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-  char *argv[] = {
-      python.data(), script.data(), const_cast<char *>(folder.c_str()), nullptr};
-  pid_t pid = 0;
-  const int spawned =
-      posix_spawnp(&pid, python.c_str(), &actions, nullptr, argv, environ);
-  posix_spawn_file_actions_destroy(&actions);
-  // posix_spawn reports the failed open of the log (O_NOFOLLOW) as its error
-  if (spawned == ELOOP)
-    return log + " is a symbolic link: refused (an output file is never written through "
-                 "a link; remove the link)";
-  if (spawned != 0)
-    return (spawned == ENOENT
-                ? "python3 was not found ("
-                : "cannot start " + python + " with its log " + log + " (") +
-           system_error_text(spawned) + ")";
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
-    ;
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0)
-    return "";
-  const std::string text = file_text(log);
-  const auto last = text.find_last_not_of('\n');
-  const auto line = text.rfind('\n', last);
-  return python + " " + script + " failed (" +
-         (last == std::string::npos
-              ? std::string("no output")
-              : text.substr(line == std::string::npos ? 0 : line + 1,
-                            last - (line == std::string::npos ? 0 : line + 1) + 1)) +
-         ")";
-}
 } // namespace
 
 SuiteRunner::SuiteRunner(ParameterHandler &prm,
@@ -214,10 +160,83 @@ SuiteRunner::SuiteRunner(ParameterHandler &prm,
                          "every factor would give the same run; give Suite/Records"));
   // every value and record file applies (linear in the values, not the members)
   check_suite_overrides(prm, suite);
-  members = plan_suite(
-      suite,
-      folder,
-      prm.get_double(std::vector<std::string>{"Loading"}, "Accelerogram scale factor"));
+  base_scale =
+      prm.get_double(std::vector<std::string>{"Loading"}, "Accelerogram scale factor");
+  members = plan_suite(suite, folder, base_scale);
+  design_spectrum.parse_parameters(prm);
+  accelerogram_units = prm.get(std::vector<std::string>{"Loading"}, "Accelerogram units");
+  for (unsigned int d = 0; d < 3; ++d)
+    own_accelerograms[d] = Utilities::trim(prm.get(
+        std::vector<std::string>{"Loading"}, std::string("Accelerogram ") + "XYZ"[d]));
+}
+
+void SuiteRunner::find_fundamental_period()
+{
+  if (!design_spectrum.active())
+    return;
+  if (suite.fundamental_period > 0.)
+  {
+    fundamental_period = suite.fundamental_period;
+    fundamental_period_source = "Suite/Fundamental period";
+    return;
+  }
+  // the first member's model, analysed for its modes
+  SuiteMember modal = members[0];
+  modal.name = "modal";
+  const std::string dir = folder + "/modal";
+  modal.overrides.push_back("Analysis/Type=modal");
+  modal.overrides.push_back("Output/Output directory=" + dir);
+  ParameterHandler prm;
+  std::string text;
+  member_parameters(modal, prm, text);
+  {
+    const Silence quiet;
+    Simulation(prm, parameter_file).run();
+  }
+  std::istringstream modes(file_text(dir + "/modes.csv"));
+  std::string line;
+  std::getline(modes, line); // header: mode,frequency,period,...
+  while (std::getline(modes, line))
+  {
+    const auto comma = line.find(',');
+    const double f =
+        comma == std::string::npos ? 0. : std::atof(line.c_str() + comma + 1);
+    // rigid-body modes come out at about 0 Hz
+    if (f > 1e-2)
+    {
+      fundamental_period = 1. / f;
+      break;
+    }
+  }
+  AssertThrow(fundamental_period > 0.,
+              ExcMessage("Suite/Fundamental period: the modal analysis of the model (" +
+                         dir + "/modes.csv) has no mode above 0.01 Hz; give the period"));
+  fundamental_period_source = "modal analysis, " + dir + "/modes.csv";
+  std::cout << "hati: suite: T1 = " << fundamental_period << " s ("
+            << fundamental_period_source << ")" << std::endl;
+}
+
+SummaryValue SuiteRunner::check_design_spectrum() const
+{
+  if (!design_spectrum.active())
+    return SummaryValue();
+  std::vector<CheckedRecord> records;
+  for (const auto &r : suite.records)
+    records.push_back({r.name, r.files});
+  if (records.empty())
+    records.push_back({"base", own_accelerograms});
+  std::string csv;
+  const SummaryValue check = design_spectrum_check(DesignSpectrum(design_spectrum),
+                                                   records,
+                                                   accelerogram_units,
+                                                   base_scale * suite.scale_factors[0],
+                                                   fundamental_period,
+                                                   fundamental_period_source,
+                                                   suite.effective_statistic(),
+                                                   csv,
+                                                   std::cout);
+  out.replace("design_spectrum_check.csv", csv, true);
+  return check;
 }
 
 void SuiteRunner::member_parameters(const SuiteMember &member,
@@ -449,6 +468,8 @@ int SuiteRunner::run()
                              check_members();
                              agree(
                                  comm, [&] { take_folder(true); }, true);
+                             agree(
+                                 comm, [&] { find_fundamental_period(); }, true);
                              const std::vector<MemberResult> mine = run_members(start);
                              gathered = Utilities::MPI::gather(comm, mine, 0);
                            });
@@ -486,11 +507,22 @@ int SuiteRunner::finish(std::vector<MemberResult> &results, const double wall_ti
       failed.push_back(r.name + ": " + r.error);
     not_run += r.status == "not run" || r.status == "interrupted";
   }
+  std::string check_error;
+  SummaryEntries extra = {{"wall_time", wall_time},
+                          {"sum_member_wall_time", member_time}};
+  if (design_spectrum.active())
+    try
+    {
+      extra.emplace_back("design_spectrum_check", check_design_spectrum());
+    }
+    catch (const std::exception &e)
+    {
+      check_error = one_line_message(e);
+      std::cerr << "hati: error: suite: design spectrum check: " << check_error
+                << std::endl;
+    }
   out.replace("suite.csv", statistics.csv(), true);
-  out.replace("suite_summary.json",
-              statistics.summary_json(
-                  {{"wall_time", wall_time}, {"sum_member_wall_time", member_time}}),
-              true);
+  out.replace("suite_summary.json", statistics.summary_json(extra), true);
   const std::string spectra = statistics.spectra_csv();
   if (!spectra.empty())
     out.replace("suite_spectra.csv", spectra, true);
@@ -506,7 +538,7 @@ int SuiteRunner::finish(std::vector<MemberResult> &results, const double wall_ti
             << (spectra.empty() ? "" : ", suite_spectra.csv") << std::endl;
   if (!stop_requested())
   {
-    const std::string warning = draw_plots(folder);
+    const std::string warning = run_plot_script("plot_suite.py", folder);
     if (warning.empty())
       std::cout << "  plots: " << folder << "/suite.png"
                 << (spectra.empty() ? "" : ", spectra.png") << std::endl;
@@ -531,6 +563,6 @@ int SuiteRunner::finish(std::vector<MemberResult> &results, const double wall_ti
               << folder << "/suite.csv" << std::endl;
     return 1;
   }
-  return 0;
+  return check_error.empty() ? 0 : 1;
 }
 } // namespace hati

@@ -24,7 +24,8 @@ public:
     integer,
     string,
     list,
-    object
+    object,
+    boolean
   };
 
   /** null */
@@ -42,6 +43,14 @@ public:
   SummaryValue(std::string x) : kind_(Kind::string), text_(std::move(x)) {}
   SummaryValue(const char *x) : kind_(Kind::string), text_(x) {}
 
+  /** true or false (a named constructor: a bool argument elsewhere stays an integer). */
+  static SummaryValue boolean(const bool x)
+  {
+    SummaryValue v;
+    v.kind_ = Kind::boolean;
+    v.integer_ = x ? 1 : 0;
+    return v;
+  }
   /** An empty object, to fill with set(). */
   static SummaryValue object()
   {

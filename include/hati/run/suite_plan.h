@@ -66,6 +66,8 @@ struct SuiteParameters
   std::vector<SuiteVariation> variations;
   /** As given: empty, `envelope` or `mean`. */
   std::string statistic;
+  /** Suite/Fundamental period (s); 0: from a modal analysis. */
+  double fundamental_period = 0.;
 };
 
 /** One member run of a suite: which record, scale and variation, and its overrides. */
@@ -91,7 +93,9 @@ struct SuiteMember
  * member's factor is base_scale times its scale factor). Each member's
  * overrides set its accelerograms (unless Records is empty: the file's
  * own, record name `base`), its scale factor, its variation values, its
- * Output directory `<folder>/<name>` and reset `subsection Suite`. Throws
+ * Output directory `<folder>/<name>` and reset `subsection Suite` and
+ * `subsection Design spectrum` (the suite's target: a new one reuses the
+ * members). Throws
  * a one-line message if a member's folder name would be longer than a file
  * name may be (255 bytes: a record name too long).
  */

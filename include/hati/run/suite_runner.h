@@ -4,10 +4,13 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <hati/base/summary_value.h>
+#include <hati/loading/design_spectrum.h>
 #include <hati/output/member_result.h>
 #include <hati/output/output_file.h>
 #include <hati/run/suite_plan.h>
 
+#include <array>
 #include <chrono>
 #include <string>
 #include <vector>
@@ -97,6 +100,18 @@ private:
   run_members(const std::chrono::steady_clock::time_point start) const;
   /** Rank 0: the suite's files and plots; the exit code. */
   int finish(std::vector<MemberResult> &results, const double wall_time) const;
+  /**
+   * Rank 0, with a Design spectrum: T1 (Suite/Fundamental period, else a
+   * modal analysis of the model in `<folder>/modal`, its first mode of
+   * nonzero frequency) into fundamental_period.
+   */
+  void find_fundamental_period();
+  /**
+   * Rank 0, with a Design spectrum: design_spectrum_check() of the suite's
+   * records (or the file's own accelerograms) at its first scale factor,
+   * `design_spectrum_check.csv` written; null without a target.
+   */
+  SummaryValue check_design_spectrum() const;
 
   const std::string parameter_file;
   const std::vector<std::string> overrides;
@@ -104,6 +119,15 @@ private:
   const MPI_Comm comm;
   std::string folder;
   std::vector<SuiteMember> members;
+  /** Design spectrum (Type none: no check), Loading/Accelerogram units and X, Y, Z,
+   * Loading/Accelerogram scale factor. */
+  DesignSpectrumParameters design_spectrum;
+  std::string accelerogram_units;
+  std::array<std::string, 3> own_accelerograms;
+  double base_scale = 1.;
+  /** T1 (s) and where it comes from. */
+  double fundamental_period = 0.;
+  std::string fundamental_period_source;
   /** Rank 0: the suite's folder and its lock, from take_folder() on. */
   OutputFolder out;
   OutputFile lock;
