@@ -66,6 +66,10 @@ for prm in parameter_files/*.prm; do
     # a suite (subsection Suite): its members are bridge_crane_hati.prm's crane
     # under other records, and suite.csv holds wall times
     bridge_crane_suite) ;;
+    # a suite of seven generated records (minutes to generate): the generation
+    # and the check are test_cases/artificial_records.py and
+    # design_spectrum_check.py
+    bridge_crane_ec8) ;;
     *) run_case "$name" "$prm" 0.5 ;;
   esac
 done

@@ -8,6 +8,7 @@
 #include <hati/base/input_file.h>
 #include <hati/output/run_directory.h>
 #include <hati/run/mpi_consensus.h>
+#include <hati/run/record_generation.h>
 #include <hati/run/simulation.h>
 #include <hati/run/suite_plan.h>
 #include <hati/run/suite_runner.h>
@@ -175,13 +176,23 @@ int run_command_line(int argc, char **argv)
     std::unique_ptr<SuiteRunner> runner;
     // every rank reads the same parameters; under mpirun a refusal is
     // agreed, so that rank 0 alone prints it and no rank waits for another
+    std::unique_ptr<RecordGeneration> generation;
     agree(MPI_COMM_WORLD,
           [&]
           {
             read_parameter_file(prm, file);
             for (const auto &s : overrides)
               apply_override(prm, s);
-            suite.parse_parameters(prm);
+            generation = std::make_unique<RecordGeneration>(prm, file);
+          });
+    // the artificial records are written by rank 0 before any rank reads them
+    if (generation->active())
+      agree(
+          MPI_COMM_WORLD, [&] { generation->write(); }, true);
+    agree(MPI_COMM_WORLD,
+          [&]
+          {
+            suite.parse_parameters(prm, generation->suite_records());
             if (suite.active()) // one Simulation per member (run/suite_runner.h)
               runner = std::make_unique<SuiteRunner>(
                   prm, file, overrides, suite, MPI_COMM_WORLD);

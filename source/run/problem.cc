@@ -4,6 +4,7 @@
 #include <hati/analysis/static_analysis.h>
 #include <hati/base/names.h>
 #include <hati/loading/accelerogram.h>
+#include <hati/loading/artificial_records.h>
 #include <hati/loading/base_excitation.h>
 #include <hati/loading/design_spectrum.h>
 #include <hati/output/response_spectra.h>
@@ -41,6 +42,7 @@ void Problem::declare_parameters(ParameterHandler &prm)
   OutputParameters::declare_parameters(prm);
   SuiteParameters::declare_parameters(prm);
   DesignSpectrumParameters::declare_parameters(prm);
+  ArtificialRecordParameters::declare_parameters(prm);
 }
 
 Problem::Problem(ParameterHandler &prm, const ConditionalOStream &out) : out(out)

@@ -22,7 +22,8 @@ void SuiteParameters::declare_parameters(ParameterHandler &prm)
       "Scale factors other than 1 the file runs as a suite: one member run per record, "
       "scale factor and variation, each in output/<file>/<record>_s<scale>_<variation "
       "index>/, with suite.csv, suite_summary.json and suite_spectra.csv. Empty Records: "
-      "the file's own accelerograms (record 'base').");
+      "the file's own accelerograms (record 'base'). 'artificial': the records of "
+      "subsection Artificial records (art01, art02, ...).");
   prm.declare_entry(
       "Fundamental period",
       "0",
@@ -160,7 +161,8 @@ void check_variation_paths(const std::vector<SuiteVariation> &variations,
 }
 } // namespace
 
-void SuiteParameters::parse_parameters(ParameterHandler &prm)
+void SuiteParameters::parse_parameters(ParameterHandler &prm,
+                                       const std::vector<SuiteRecord> &artificial)
 {
   prm.enter_subsection("Suite");
   const std::string records_text = prm.get("Records");
@@ -169,7 +171,15 @@ void SuiteParameters::parse_parameters(ParameterHandler &prm)
   statistic = prm.get("Statistic");
   fundamental_period = prm.get_double("Fundamental period");
   prm.leave_subsection();
-  records = parse_records(records_text);
+  if (Utilities::trim(records_text) == "artificial")
+  {
+    AssertThrow(!artificial.empty(),
+                ExcMessage("Suite/Records: 'artificial' needs records: Artificial "
+                           "records/Number is 0"));
+    records = artificial;
+  }
+  else
+    records = parse_records(records_text);
   scale_factors = Utilities::string_to_double(Utilities::split_string_list(scales_text));
   // two equal factors (1, 1.0) would be one member folder run twice
   for (unsigned int i = 0; i < scale_factors.size(); ++i)

@@ -48,8 +48,11 @@ struct SuiteParameters
    * Output/Output directory, Loading/Accelerogram scale factor, Loading/
    * Accelerogram X|Y|Z with Records) or of Analysis/Type (a suite runs
    * transient analyses), more than max_suite_members members.
+   * `Records = artificial` takes @p artificial
+   * (RecordGeneration::suite_records(); refused if empty).
    */
-  void parse_parameters(ParameterHandler &prm);
+  void parse_parameters(ParameterHandler &prm,
+                        const std::vector<SuiteRecord> &artificial = {});
 
   /** The number of members: records (at least 1) x scale factors x variations. */
   unsigned int n_members() const;
