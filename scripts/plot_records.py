@@ -12,7 +12,6 @@ Usage: scripts/plot_records.py RECORDS_FOLDER"""
 import csv
 import os
 import sys
-import tempfile
 
 try:
     import matplotlib
@@ -21,6 +20,8 @@ try:
 except ImportError:
     print("plot_records.py: matplotlib is not installed (python3-matplotlib)")
     sys.exit(3)
+
+from plot_tools import save  # noqa: E402 (scripts/plot_tools.py)
 
 G = 9.80665
 
@@ -38,24 +39,6 @@ def read_at2(path):
     dt = float(header[header.index("DT=") + 1])
     values = [float(x) * G for line in lines[4:] for x in line.split()][:n]
     return [i * dt for i in range(n)], values
-
-
-def save(fig, folder, name):
-    path = os.path.join(folder, name)
-    if os.path.islink(path):
-        raise SystemExit("plot_records.py: %s is a symbolic link: refused (a plot is never "
-                         "written through a link; remove the link)" % path)
-    fd, temporary = tempfile.mkstemp(prefix="." + name + ".", suffix=".tmp", dir=folder)
-    try:
-        with os.fdopen(fd, "wb") as f:
-            os.fchmod(f.fileno(), 0o644)
-            fig.savefig(f, dpi=110, format="png")
-        os.replace(temporary, path)
-    except BaseException:
-        os.unlink(temporary)
-        raise
-    finally:
-        plt.close(fig)
 
 
 def main(folder):
@@ -96,7 +79,7 @@ def main(folder):
         bottom.set_title("spectra along %s" % axis)
         bottom.legend(fontsize=8)
     fig.tight_layout()
-    save(fig, folder, "records.png")
+    save(fig, folder, "records.png", "plot_records.py")
 
 
 if __name__ == "__main__":

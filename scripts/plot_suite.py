@@ -15,7 +15,6 @@ import json
 import math
 import os
 import sys
-import tempfile
 
 try:
     import matplotlib
@@ -24,6 +23,8 @@ try:
 except ImportError:
     print("plot_suite.py: matplotlib is not installed (python3-matplotlib)")
     sys.exit(3)
+
+from plot_tools import save  # noqa: E402 (scripts/plot_tools.py)
 
 # quantity suffix -> panel title (units)
 CATEGORIES = [
@@ -94,27 +95,7 @@ def plot_results(folder, rows, summary):
                     summary["statistic"],
                     "; not usable: " + ", ".join(failed) if failed else ""), fontsize=10)
     fig.tight_layout()
-    save(fig, folder, "suite.png")
-
-
-def save(fig, folder, name):
-    """fig into folder/name through a temporary file created exclusively
-    (O_EXCL) in the folder and renamed over name: a link is never followed."""
-    path = os.path.join(folder, name)
-    if os.path.islink(path):
-        raise SystemExit("plot_suite.py: %s is a symbolic link: refused (a plot is never "
-                         "written through a link; remove the link)" % path)
-    fd, temporary = tempfile.mkstemp(prefix="." + name + ".", suffix=".tmp", dir=folder)
-    try:
-        with os.fdopen(fd, "wb") as f:
-            os.fchmod(f.fileno(), 0o644)  # mkstemp's 0600: as the other outputs
-            fig.savefig(f, dpi=110, format="png")
-        os.replace(temporary, path)
-    except BaseException:
-        os.unlink(temporary)
-        raise
-    finally:
-        plt.close(fig)
+    save(fig, folder, "suite.png", "plot_suite.py")
 
 
 def read_table(path):
@@ -159,7 +140,7 @@ def plot_spectra(folder, rows):
     axes[0, 0].legend(fontsize=7)
     fig.suptitle("pseudo-acceleration spectra: members (grey) and the statistic", fontsize=10)
     fig.tight_layout()
-    save(fig, folder, "spectra.png")
+    save(fig, folder, "spectra.png", "plot_suite.py")
 
 
 def main():
