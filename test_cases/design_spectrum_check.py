@@ -132,7 +132,8 @@ ctx.check_true("another a_g and T1: every member reused", status == ["reused"] *
 # T1 from the model's modal analysis
 out, p = ctx.run(prm, "modal_t1", base + ["Design spectrum/Peak ground acceleration=1"],
                  expect_failure=True)
-modal, q = ctx.run(prm, "modal", ["Analysis/Type=modal", "Suite/Records="])
+modal, q = ctx.run(prm, "modal", ["Analysis/Type=modal", "Suite/Records=",
+                                  "Loading/Accelerogram X=" + os.path.join(data, files["elc"])])
 f1 = np.genfromtxt(os.path.join(modal, "modes.csv"), delimiter=",", names=True)["frequency"]
 f1 = f1[f1 > 1e-2][0]
 with open(os.path.join(out, "suite_summary.json")) as f:
