@@ -185,10 +185,6 @@ int run_command_line(int argc, char **argv)
               apply_override(prm, s);
             generation = std::make_unique<RecordGeneration>(prm, file);
           });
-    // the artificial records are written by rank 0 before any rank reads them
-    if (generation->active())
-      agree(
-          MPI_COMM_WORLD, [&] { generation->write(); }, true);
     agree(MPI_COMM_WORLD,
           [&]
           {
@@ -197,6 +193,11 @@ int run_command_line(int argc, char **argv)
               runner = std::make_unique<SuiteRunner>(
                   prm, file, overrides, suite, MPI_COMM_WORLD);
           });
+    // the artificial records are written by rank 0 once the suite is
+    // checked (a refused suite writes nothing) and before any rank reads them
+    if (generation->active())
+      agree(
+          MPI_COMM_WORLD, [&] { generation->write(); }, true);
     if (runner)
       return runner->run();
 

@@ -44,6 +44,7 @@ std::vector<SuiteRecord> RecordGeneration::suite_records() const
   {
     SuiteRecord r;
     r.name = record_name(i);
+    r.generated = true;
     for (const unsigned int d : records.components)
       r.files[d] = folder + "/" + r.name + "_" + char('X' + d) + ".AT2";
     list.push_back(r);

@@ -16,6 +16,12 @@ struct SuiteRecord
 {
   std::string name;
   std::array<std::string, 3> files;
+  /**
+   * An artificial record (`Records = artificial`): its files are written
+   * after the suite's checks (RecordGeneration::write()), so that a refused
+   * suite writes nothing.
+   */
+  bool generated = false;
 };
 
 /**
