@@ -197,20 +197,39 @@ unit_response(const double omega, const double xi, const double h, const std::si
 
 /**
  * The improved tapered cosine wavelet (Al Atik & Abrahamson 2010) of the
- * oscillator (@p omega, @p xi) peaking at @p t_peak, at @p t:
+ * oscillator (@p omega, @p xi), peaking at t_peak:
  * `cos(w'(t - t_peak + dt)) exp(-((t - t_peak + dt) / gamma)^2)`,
  * `w' = omega sqrt(1 - xi^2)`, `dt = atan(sqrt(1 - xi^2) / xi) / w'`,
- * `gamma = 1.178 f^-0.93` (f in Hz).
+ * `gamma = 1.178 f^-0.93` (f in Hz); zero where the exponent is below -40
+ * (its support).
  */
-double wavelet(const double t, const double t_peak, const double omega, const double xi)
+struct Wavelet
 {
-  const double wd = omega * std::sqrt(1. - xi * xi);
-  const double shift = std::atan(std::sqrt(1. - xi * xi) / xi) / wd;
-  const double gamma = 1.178 * std::pow(omega / (2. * M_PI), -0.93);
-  const double s = t - t_peak + shift;
-  const double e = s / gamma;
-  return e * e > 40. ? 0. : std::cos(wd * s) * std::exp(-e * e);
-}
+  Wavelet(const double omega, const double xi)
+      : wd(omega * std::sqrt(1. - xi * xi)),
+        shift(std::atan(std::sqrt(1. - xi * xi) / xi) / wd),
+        gamma(1.178 * std::pow(omega / (2. * M_PI), -0.93)),
+        half_width(std::sqrt(40.) * 1.178 * std::pow(omega / (2. * M_PI), -0.93))
+  {
+  }
+
+  /** The value at @p t (s) of the wavelet peaking at @p t_peak (s). */
+  double operator()(const double t, const double t_peak) const
+  {
+    const double s = t - t_peak + shift;
+    const double e = s / gamma;
+    return e * e > 40. ? 0. : std::cos(wd * s) * std::exp(-e * e);
+  }
+
+  /** Its support [first, last] (s) when it peaks at @p t_peak. */
+  std::pair<double, double> support(const double t_peak) const
+  {
+    return {t_peak - shift - half_width, t_peak - shift + half_width};
+  }
+
+  /** sqrt(40) gamma (s). */
+  const double wd, shift, gamma, half_width;
+};
 
 /** The sample and signed value of the peak displacement of the oscillator under @p a. */
 std::pair<std::size_t, double> peak_response(const std::vector<double> &a,
@@ -348,15 +367,13 @@ wavelet_correction(const Matching &s,
   // their peaks to the basis
   for (std::size_t k = 0; k < m; ++k)
   {
-    const double w = 2. * M_PI / periods[k], wd = w * std::sqrt(1. - xi * xi);
-    const double centre =
-        peaks[k].first * h - std::atan(std::sqrt(1. - xi * xi) / xi) / wd;
-    const double half = std::sqrt(40.) * 1.178 * std::pow(w / (2. * M_PI), -0.93);
-    lo[k] = std::size_t(std::max(0., std::floor((centre - half) / h)));
-    hi[k] = std::size_t(std::max(0., std::min(n - 1., std::ceil((centre + half) / h))));
+    const Wavelet wavelet(2. * M_PI / periods[k], xi);
+    const auto [first, last] = wavelet.support(peaks[k].first * h);
+    lo[k] = std::size_t(std::max(0., std::floor(first / h)));
+    hi[k] = std::size_t(std::max(0., std::min(n - 1., std::ceil(last / h))));
     std::fill(f[k].begin(), f[k].end(), 0.);
     for (std::size_t i = lo[k]; i <= hi[k]; ++i)
-      f[k][i] = wavelet(i * h, peaks[k].first * h, w, xi);
+      f[k][i] = wavelet(i * h, peaks[k].first * h);
     c[k] = baseline.coefficients(f[k]);
   }
   std::vector<double> column_scale(m);
