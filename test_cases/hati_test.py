@@ -6,6 +6,7 @@ import os
 import shutil
 import subprocess
 import sys
+import time
 
 import numpy as np
 
@@ -28,7 +29,9 @@ class Context:
         cmd = [self.hati, prm, "--set", "Output/Output directory=" + out]
         for s in sets:
             cmd += ["--set", s]
+        start = time.monotonic()
         p = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+        print("run %s: %.1f s" % (tag, time.monotonic() - start))
         if expect_failure:
             return out, p
         if p.returncode != 0:

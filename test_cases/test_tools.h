@@ -2,12 +2,18 @@
 #define hati_test_cases_test_tools_h
 
 // Helpers of the unit tests: every check prints its value, reference and
-// tolerance, and main() returns finish() (non-zero if a check failed).
+// tolerance, and each test's function returns finish() (non-zero if a check
+// failed). The unit tests are one executable, hati_unit_tests (build time:
+// one link, the sources compiled in batches): each test_cases/unit_<name>.cc
+// defines its entry with HATI_UNIT_TEST(<name>) inside its own namespace
+// hati_unit_<name>, and `hati_unit_tests <name>` runs it
+// (test_cases/run_unit_test.cc).
 
 #include <cmath>
 #include <exception>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -63,6 +69,35 @@ inline int finish()
     std::cout << "FAILURES: " << failures << std::endl;
   return failures == 0 ? 0 : 1;
 }
+
+/** The entry of a unit test: (argc, argv) with argv[0] the test's name. */
+using UnitTestFunction = int (*)(int, char **);
+
+/** The unit tests of the executable, by name. */
+inline std::map<std::string, UnitTestFunction> &unit_tests()
+{
+  static std::map<std::string, UnitTestFunction> tests;
+  return tests;
+}
+
+/** Registers a unit test at static initialisation (HATI_UNIT_TEST). */
+struct UnitTestRegistration
+{
+  UnitTestRegistration(const char *name, const UnitTestFunction function)
+  {
+    unit_tests()[name] = function;
+  }
+};
 } // namespace hati_test
+
+/**
+ * The entry of the unit test @p name, written where main() would be, inside
+ * the file's namespace hati_unit_<name>: `HATI_UNIT_TEST(name) { ... return
+ * finish(); }` (argc and argv as main's).
+ */
+#define HATI_UNIT_TEST(name)                                                             \
+  int unit_test_main(int argc, char **argv);                                             \
+  const hati_test::UnitTestRegistration unit_test_registration(#name, &unit_test_main);  \
+  int unit_test_main([[maybe_unused]] int argc, [[maybe_unused]] char **argv)
 
 #endif

@@ -35,6 +35,9 @@
 #include <string>
 #include <vector>
 
+namespace hati_unit_cd_lagrange
+{
+
 using namespace dealii;
 using namespace hati;
 using namespace hati_test;
@@ -534,7 +537,7 @@ void test_state()
 }
 } // namespace
 
-int main(int argc, char **argv)
+HATI_UNIT_TEST(cd_lagrange)
 {
   const hati::MpiEnvironment mpi_environment; // own Open MPI session folder
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
@@ -553,3 +556,4 @@ int main(int argc, char **argv)
   }
   return finish();
 }
+} // namespace hati_unit_cd_lagrange

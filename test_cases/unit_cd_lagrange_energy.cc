@@ -41,6 +41,9 @@
 #include <sstream>
 #include <string>
 
+namespace hati_unit_cd_lagrange_energy
+{
+
 using namespace dealii;
 using namespace hati;
 using namespace hati_test;
@@ -357,7 +360,7 @@ void test_chain_contact()
 }
 } // namespace
 
-int main(int argc, char **argv)
+HATI_UNIT_TEST(cd_lagrange_energy)
 {
   const hati::MpiEnvironment mpi_environment; // own Open MPI session folder
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
@@ -374,3 +377,4 @@ int main(int argc, char **argv)
   }
   return finish();
 }
+} // namespace hati_unit_cd_lagrange_energy

@@ -49,6 +49,9 @@
 #include <sstream>
 #include <string>
 
+namespace hati_unit_contact_clusters
+{
+
 using namespace dealii;
 using namespace hati;
 using namespace hati_test;
@@ -440,7 +443,7 @@ void test_delassus_order()
 }
 } // namespace
 
-int main(int argc, char **argv)
+HATI_UNIT_TEST(contact_clusters)
 {
   const hati::MpiEnvironment mpi_environment; // own Open MPI session folder
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
@@ -460,3 +463,4 @@ int main(int argc, char **argv)
   }
   return finish();
 }
+} // namespace hati_unit_contact_clusters

@@ -37,6 +37,9 @@
 #include <cmath>
 #include <iostream>
 
+namespace hati_unit_craig_bampton
+{
+
 using namespace hati;
 using namespace hati_test;
 
@@ -241,7 +244,7 @@ void check_slicing_with_pairs()
 }
 } // namespace
 
-int main(int argc, char **argv)
+HATI_UNIT_TEST(craig_bampton)
 {
   const hati::MpiEnvironment mpi_environment;
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
@@ -368,3 +371,4 @@ int main(int argc, char **argv)
   check_slicing_with_pairs();
   return finish();
 }
+} // namespace hati_unit_craig_bampton

@@ -41,6 +41,9 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+namespace hati_unit_csv_file
+{
+
 using namespace hati_test;
 
 namespace
@@ -73,7 +76,7 @@ bool same_bits(const double a, const double b)
 }
 } // namespace
 
-int main()
+HATI_UNIT_TEST(csv_file)
 {
   // --- shortest round-trip numbers ---
   std::mt19937_64 random(7);
@@ -318,3 +321,4 @@ int main()
   std::filesystem::remove_all(dir);
   return finish();
 }
+} // namespace hati_unit_csv_file

@@ -23,6 +23,9 @@
 #include <string>
 #include <vector>
 
+namespace hati_unit_design_spectrum
+{
+
 using namespace hati;
 using hati_test::check;
 using hati_test::expect;
@@ -193,7 +196,7 @@ void check_suite_check()
 }
 } // namespace
 
-int main()
+HATI_UNIT_TEST(design_spectrum)
 {
   try
   {
@@ -207,3 +210,4 @@ int main()
   }
   return hati_test::finish();
 }
+} // namespace hati_unit_design_spectrum

@@ -93,6 +93,9 @@
 #include <string>
 #include <vector>
 
+namespace hati_unit_force_law
+{
+
 using namespace dealii;
 using namespace hati;
 using namespace hati_test;
@@ -677,7 +680,7 @@ void test_row_law()
 }
 } // namespace
 
-int main(int argc, char **argv)
+HATI_UNIT_TEST(force_law)
 {
   const hati::MpiEnvironment mpi_environment; // own Open MPI session folder
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
@@ -692,3 +695,4 @@ int main(int argc, char **argv)
   test_run();
   return finish();
 }
+} // namespace hati_unit_force_law

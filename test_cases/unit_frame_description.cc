@@ -22,6 +22,9 @@
 #include <functional>
 #include <string>
 
+namespace hati_unit_frame_description
+{
+
 using namespace hati_test;
 using hati::FrameDescription;
 
@@ -221,10 +224,11 @@ void check_crane()
 }
 } // namespace
 
-int main()
+HATI_UNIT_TEST(frame_description)
 {
   check_hand_built();
   check_parser();
   check_crane();
   return finish();
 }
+} // namespace hati_unit_frame_description

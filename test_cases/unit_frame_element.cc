@@ -17,6 +17,9 @@
 #include <limits>
 #include <string>
 
+namespace hati_unit_frame_element
+{
+
 using namespace dealii;
 using namespace hati;
 
@@ -155,7 +158,7 @@ template <typename F> bool throws(F f)
 }
 } // namespace
 
-int main()
+HATI_UNIT_TEST(frame_element)
 {
   // a section with significant shear deformation in both planes
   FrameSection section;
@@ -645,3 +648,4 @@ int main()
             << std::endl;
   return failures == 0 ? 0 : 1;
 }
+} // namespace hati_unit_frame_element

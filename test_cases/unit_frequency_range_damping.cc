@@ -16,6 +16,9 @@
 #include <string>
 #include <vector>
 
+namespace hati_unit_frequency_range_damping
+{
+
 using namespace hati_test;
 
 namespace
@@ -29,7 +32,7 @@ struct Reference
 };
 } // namespace
 
-int main()
+HATI_UNIT_TEST(frequency_range_damping)
 {
   // printed by the prototype (scipy 1.10.1), 12 digits
   const std::vector<Reference> references = {
@@ -127,3 +130,4 @@ int main()
   expect(single.branches.alpha[0] > 0., "one fitted branch: alpha > 0");
   return finish();
 }
+} // namespace hati_unit_frequency_range_damping

@@ -23,6 +23,9 @@
 #include <random>
 #include <utility>
 
+namespace hati_unit_friction_solver
+{
+
 using namespace dealii;
 using namespace hati;
 using namespace hati_test;
@@ -102,7 +105,7 @@ double law_violation(const std::vector<double> &W,
 }
 } // namespace
 
-int main()
+HATI_UNIT_TEST(friction_solver)
 {
   // (a) the slope
   const double g = 9.81;
@@ -278,3 +281,4 @@ int main()
          "random blocks: both stick and slip seen");
   return finish();
 }
+} // namespace hati_unit_friction_solver

@@ -25,6 +25,9 @@
 #include <iomanip>
 #include <iostream>
 
+namespace hati_unit_hati_beam_solid
+{
+
 using namespace hati;
 
 namespace
@@ -66,7 +69,7 @@ double spectral_radius(HATICoupling &coupling)
 }
 } // namespace
 
-int main(int argc, char **argv)
+HATI_UNIT_TEST(hati_beam_solid)
 {
   const hati::MpiEnvironment mpi_environment;
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
@@ -123,3 +126,4 @@ int main(int argc, char **argv)
             << std::endl;
   return failures == 0 ? 0 : 1;
 }
+} // namespace hati_unit_hati_beam_solid

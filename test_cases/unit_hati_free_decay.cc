@@ -33,6 +33,9 @@
 #include <string>
 #include <vector>
 
+namespace hati_unit_hati_free_decay
+{
+
 using namespace dealii;
 using namespace hati;
 using namespace hati_test;
@@ -145,7 +148,7 @@ std::pair<double, double> decay(const std::vector<double> &u, const double dt)
 }
 } // namespace
 
-int main(int argc, char **argv)
+HATI_UNIT_TEST(hati_free_decay)
 {
   const hati::MpiEnvironment mpi_environment; // own Open MPI session folder
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
@@ -206,3 +209,4 @@ int main(int argc, char **argv)
   }
   return finish();
 }
+} // namespace hati_unit_hati_free_decay

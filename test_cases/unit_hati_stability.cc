@@ -32,6 +32,9 @@
 #include <complex>
 #include <iostream>
 
+namespace hati_unit_hati_stability
+{
+
 using namespace hati;
 
 namespace
@@ -125,7 +128,7 @@ double highest_frequency(const DiscreteSystem &system)
 }
 } // namespace
 
-int main(int argc, char **argv)
+HATI_UNIT_TEST(hati_stability)
 {
   const hati::MpiEnvironment mpi_environment; // own Open MPI session folder
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
@@ -234,3 +237,4 @@ int main(int argc, char **argv)
     std::cout << "all checks passed" << std::endl;
   return failures == 0 ? 0 : 1;
 }
+} // namespace hati_unit_hati_stability

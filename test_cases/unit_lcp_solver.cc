@@ -14,6 +14,9 @@
 #include <iostream>
 #include <random>
 
+namespace hati_unit_lcp_solver
+{
+
 using namespace dealii;
 using namespace hati_test;
 
@@ -46,7 +49,7 @@ FullMatrix<double> random_spd(const unsigned int n, std::mt19937 &gen)
 }
 } // namespace
 
-int main()
+HATI_UNIT_TEST(lcp_solver)
 {
   // one contact: lambda = max(0, -q/W)
   {
@@ -110,3 +113,4 @@ int main()
   std::cout << (failures ? "FAILED" : "all checks passed") << std::endl;
   return failures ? 1 : 0;
 }
+} // namespace hati_unit_lcp_solver

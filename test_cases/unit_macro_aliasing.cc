@@ -10,10 +10,13 @@
 #include <cmath>
 #include <iostream>
 
+namespace hati_unit_macro_aliasing
+{
+
 using namespace hati;
 using namespace hati_test;
 
-int main()
+HATI_UNIT_TEST(macro_aliasing)
 {
   // a free-free chain m1 -k- m2 and a fixed DoF: Omega^2 = 0 and k (1/m1 + 1/m2)
   const double k = 4e6, m1 = 2., m2 = 3.;
@@ -119,3 +122,4 @@ int main()
          "warning names the clean ratios 95, 96");
   return finish();
 }
+} // namespace hati_unit_macro_aliasing

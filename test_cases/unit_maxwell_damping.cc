@@ -39,6 +39,9 @@
 #include <string>
 #include <vector>
 
+namespace hati_unit_maxwell_damping
+{
+
 using namespace dealii;
 using namespace hati;
 using namespace hati_test;
@@ -390,7 +393,7 @@ void test_energy_balance(const MaxwellBranches &b)
 }
 } // namespace
 
-int main(int argc, char **argv)
+HATI_UNIT_TEST(maxwell_damping)
 {
   const hati::MpiEnvironment mpi_environment; // own Open MPI session folder
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
@@ -408,3 +411,4 @@ int main(int argc, char **argv)
   test_energy_balance(b);
   return finish();
 }
+} // namespace hati_unit_maxwell_damping

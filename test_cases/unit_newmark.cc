@@ -32,6 +32,9 @@
 #include <sstream>
 #include <string>
 
+namespace hati_unit_newmark
+{
+
 using namespace dealii;
 using namespace hati;
 using namespace hati_test;
@@ -651,7 +654,7 @@ void test_linear_solver_choice()
 }
 } // namespace
 
-int main(int argc, char **argv)
+HATI_UNIT_TEST(newmark)
 {
   const hati::MpiEnvironment mpi_environment; // own Open MPI session folder
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
@@ -672,3 +675,4 @@ int main(int argc, char **argv)
   }
   return finish();
 }
+} // namespace hati_unit_newmark

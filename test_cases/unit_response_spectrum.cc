@@ -19,6 +19,9 @@
 #include <string>
 #include <vector>
 
+namespace hati_unit_response_spectrum
+{
+
 using namespace hati;
 using hati_test::check;
 
@@ -194,7 +197,7 @@ void check_records(const std::string &source)
 }
 } // namespace
 
-int main(int argc, char **argv)
+HATI_UNIT_TEST(response_spectrum)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
@@ -213,3 +216,4 @@ int main(int argc, char **argv)
   }
   return hati_test::finish();
 }
+} // namespace hati_unit_response_spectrum

@@ -38,6 +38,9 @@
 
 #include <map>
 
+namespace hati_unit_solid_tie
+{
+
 using namespace hati;
 using hati_test::check;
 
@@ -219,7 +222,7 @@ void patch_test(const std::string &name,
 }
 } // namespace
 
-int main(int argc, char **argv)
+HATI_UNIT_TEST(solid_tie)
 {
   const hati::MpiEnvironment mpi_environment;
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
@@ -244,3 +247,4 @@ int main(int argc, char **argv)
   }
   return hati_test::finish();
 }
+} // namespace hati_unit_solid_tie

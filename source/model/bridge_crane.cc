@@ -13,8 +13,6 @@ namespace hati
 namespace
 {
 
-/** Largest number of elements of one member (-), as for Model/Type = frame. */
-constexpr double max_elements_per_member = 1e7;
 /** Largest Young's modulus (Pa) and density (kg/m^3) of the Material. */
 constexpr double max_young_modulus = 1e13, max_density = 1e5;
 /** Largest mass of the girders, end carriages and rails (kg, mass_bridge()). */

@@ -14,9 +14,6 @@ namespace hati
 namespace
 {
 
-/** Largest number of elements of one member (-). */
-constexpr double max_elements_per_member = 1e7;
-
 using Item = FrameItem;
 
 /** Whether @p value is a finite number (a node named like a number is read as one). */

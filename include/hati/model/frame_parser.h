@@ -10,6 +10,12 @@
 namespace hati
 {
 /**
+ * Largest number of elements of one member (-): Model/Frame/Members and the
+ * bridge crane's Element size.
+ */
+constexpr double max_elements_per_member = 1e7;
+
+/**
  * The `Model/Frame` subsection: a frame described in a small list language,
  * each entry a list of items `name: value, value, ...; ...` (doc/user_guide.md
  * "Frames"), with the members and named nodes of an optional Gmsh mesh file
