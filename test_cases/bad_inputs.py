@@ -8,6 +8,7 @@ import configparser
 import os
 import shutil
 import subprocess
+import time
 
 from hati_test import Context
 
@@ -51,7 +52,9 @@ for index, name in enumerate(cases.sections()):
     for s in lines(case, "set"):
         cmd += ["--set", s.replace("{work}", work)]
     cmd += [a.replace("{work}", work) for a in lines(case, "args")]
+    start = time.monotonic()
     p = subprocess.run(cmd, capture_output=True, text=True, timeout=300, cwd=ctx.source)
+    seconds = time.monotonic() - start
     err = p.stderr.strip()
     expected_exit = int(case.get("exit", "1"))
     missing = [f for f in lines(case, "contains") if f not in err]
@@ -63,5 +66,5 @@ for index, name in enumerate(cases.sections()):
         detail += " missing %s" % missing
     if not untouched:
         detail += " created the output directory"
-    ctx.check_true(name, ok, detail + " " + err)
+    ctx.check_true(name, ok, "%s %s (%.2f s)" % (detail, err, seconds))
 ctx.finish()
