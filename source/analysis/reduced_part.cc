@@ -1,8 +1,9 @@
 // The implicit subdomain of HATI in Craig-Bampton coordinates (C1,
-// doc/theory.md 12.1).
+// doc/theory.md 12.1; modal damping 12.3).
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 
 #include <hati/analysis/reduced_part.h>
 
@@ -122,6 +123,36 @@ void ReducedImplicitPart::coordinates(const Vector<double> &u, Vector<double> &q
   modal_mass_inverse.vmult(eta, p);
   for (unsigned int a = 0; a < nm; ++a)
     q[nb + a] = eta[a];
+}
+
+void ReducedImplicitPart::set_modal_damping(const double ratio)
+{
+  AssertThrow(ratio >= 0. && ratio < 1.,
+              ExcMessage("Reduction modal damping ratio must be >= 0 and < 1"));
+  const unsigned int r = reduced.n_dofs();
+  LAPACKFullMatrix<double> K(r, r), M(r, r);
+  K = basis.stiffness();
+  M = basis.mass();
+  std::vector<Vector<double>> Z(r, Vector<double>(r));
+  K.compute_generalized_eigenvalues_symmetric(M, Z);
+  // M Z_k, then C = sum_k 2 zeta omega_k (M Z_k)(M Z_k)^T
+  std::vector<Vector<double>> MZ(r, Vector<double>(r));
+  for (unsigned int k = 0; k < r; ++k)
+    basis.mass().vmult(MZ[k], Z[k]);
+  FullMatrix<double> C(r, r);
+  for (unsigned int k = 0; k < r; ++k)
+  {
+    const double c = 2. * ratio * std::sqrt(std::max(K.eigenvalue(k).real(), 0.));
+    if (c == 0.)
+      continue;
+    for (unsigned int i = 0; i < r; ++i)
+      for (unsigned int j = 0; j < r; ++j)
+        C(i, j) += c * MZ[k][i] * MZ[k][j];
+  }
+  reduced.damping_matrix.reinit(reduced.stiffness_pattern);
+  for (unsigned int i = 0; i < r; ++i)
+    for (unsigned int j = 0; j < r; ++j)
+      reduced.damping_matrix.set(i, j, 0.5 * (C(i, j) + C(j, i)));
 }
 
 void ReducedImplicitPart::build_system(const DiscreteSystem &full)

@@ -161,6 +161,15 @@ void DecompositionParameters::declare_parameters(ParameterHandler &prm)
                     Patterns::Double(0., 1e9),
                     "Implicit reduction = Craig-Bampton: every fixed-interface "
                     "normal mode up to this frequency is kept (Hz, > 0).");
+  prm.declare_entry("Reduction modal damping ratio",
+                    "",
+                    Patterns::Anything(),
+                    "Implicit reduction = Craig-Bampton: empty (default) damps the "
+                    "reduced part with the run's damping (Time integration/Damping, "
+                    "Rayleigh or frequency range, on the reduced matrices); a ratio "
+                    "(-, 0 <= ratio < 1, e.g. 0.02) gives each mode of the reduced part "
+                    "that damping ratio instead (modal damping, doc/theory.md 12.3; "
+                    "rigid-body modes undamped).");
   prm.declare_entry("Reduction maximum modes",
                     "500",
                     Patterns::Integer(1, 100000),
@@ -219,6 +228,19 @@ void DecompositionParameters::parse_parameters(ParameterHandler &prm)
               ExcMessage("Model/Decomposition/Reduction cutoff frequency must be > 0 "
                          "Hz (the fixed-interface modes kept), not 0"));
   reduction_maximum_modes = prm.get_integer("Reduction maximum modes");
+  const std::string ratio = Utilities::trim(prm.get("Reduction modal damping ratio"));
+  reduction_modal_damping_ratio = -1.;
+  if (!ratio.empty())
+  {
+    char *end = nullptr;
+    reduction_modal_damping_ratio = std::strtod(ratio.c_str(), &end);
+    AssertThrow(*end == '\0' && reduction_modal_damping_ratio >= 0. &&
+                    reduction_modal_damping_ratio < 1.,
+                ExcMessage("Model/Decomposition/Reduction modal damping ratio: '" +
+                           ratio +
+                           "' is not a damping ratio (a number >= 0 and < 1, e.g. "
+                           "0.02), or leave it empty for the run's damping"));
+  }
 }
 
 double Model::size() const

@@ -12,6 +12,16 @@ namespace hati
 {
 namespace
 {
+/**
+ * The run's damping for the implicit part, or none when that part has a
+ * damping matrix of its own (the reduced part's modal damping, doc/theory.md
+ * 12.3).
+ */
+DampingModel implicit_damping(const DiscreteSystem &implicit, const DampingModel &damping)
+{
+  return implicit.has_damping_matrix() ? DampingModel() : damping;
+}
+
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(const Clock::time_point start)
@@ -82,8 +92,8 @@ HATICoupling::HATICoupling(const Decomposition &decomposition,
       implicit(implicit_system(decomposition),
                m * dt,
                newmark_parameters,
-               damping.rayleigh,
-               damping.branches)
+               implicit_damping(implicit_system(decomposition), damping).rayleigh,
+               implicit_damping(implicit_system(decomposition), damping).branches)
 {
   const auto start = Clock::now();
   AssertThrow(

@@ -203,7 +203,8 @@ Newmark::Newmark(const DiscreteSystem &system,
               ExcMessage("Newmark: the DiscreteSystem has no fixed flags."));
 
   // (N2) M_eff = M + gamma DT C + beta DT^2 K
-  //            = (1 + gamma DT a0) M + (beta DT^2 + gamma DT a1) K,
+  //            = (1 + gamma DT a0) M + (beta DT^2 + gamma DT a1) K
+  //              (+ gamma DT C_s with the system's own damping matrix C_s),
   // with frequency-range damping (N4) beta DT^2 (1 + beta_s) K
   const double mass_factor = 1. + gamma * dt * a0;
   const double stiffness_factor =
@@ -219,6 +220,8 @@ Newmark::Newmark(const DiscreteSystem &system,
                                                     : diagonal_pattern);
   if (system.has_stiffness())
     add_matrix(m_eff, stiffness_factor, system.stiffness);
+  if (system.has_damping_matrix())
+    add_matrix(m_eff, gamma * dt, system.damping_matrix);
   if (use_consistent_mass)
     add_matrix(m_eff, mass_factor, system.consistent_mass);
   else
@@ -307,6 +310,10 @@ void Newmark::build_row_operators()
         entry.first += it->value();
         entry.second += a1 * it->value();
       }
+    if (system.has_damping_matrix())
+      for (auto it = system.damping_matrix.begin(i); it != system.damping_matrix.end(i);
+           ++it)
+        row[it->column()].second += it->value();
     if (use_consistent_mass)
       for (auto it = system.consistent_mass.begin(i); it != system.consistent_mass.end(i);
            ++it)
@@ -345,12 +352,12 @@ void Newmark::stiffness_vmult(Vector<double> &dst, const Vector<double> &src) co
 
 void Newmark::damping_vmult(Vector<double> &dst, const Vector<double> &src) const
 {
-  if (a0 == 0. && a1 == 0.)
+  if (!viscous_damping())
   {
     dst = 0.;
     return;
   }
-  // C = a0 M + a1 K, stored (build_row_operators())
+  // C = a0 M + a1 K (+ the system's own), stored (build_row_operators())
   row_vmult(row_damping, dst, src);
 }
 
@@ -513,7 +520,7 @@ void Newmark::finish_step()
 {
   // energies: 1/2 (U_{n+1} - U_n) . (F_n + F_{n+1}) (and the damping's work)
   const unsigned int n = U.size();
-  const bool damped = a0 != 0. || a1 != 0.;
+  const bool damped = viscous_damping();
   if (damped)
     damping_vmult(CV_new, V_star);
   double work = 0., damping = 0.;

@@ -56,6 +56,16 @@ public:
   /** Number of boundary rows that hold a point load (not interface rows). */
   unsigned int n_point_load_rows() const { return n_load_rows; }
 
+  /**
+   * Modal damping of the reduced part (`Reduction modal damping ratio`,
+   * doc/theory.md 12.3): the damping matrix `C = M Z diag(2 zeta omega_k) Z^T
+   * M` of the reduced system, with `(omega_k^2, Z)` the eigenpairs of the
+   * reduced `(K, M)` (`Z^T M Z = I`), so that each of its modes has the
+   * damping ratio @p ratio (rigid-body modes, omega_k = 0, none). The run
+   * then gives the reduced part no other damping (HATICoupling).
+   */
+  void set_modal_damping(const double ratio);
+
   /** `u = T q`: the full subdomain's DoF values from reduced coordinates. */
   void expand(const Vector<double> &q, Vector<double> &u) const { basis.expand(q, u); }
 

@@ -189,6 +189,19 @@ public:
   SparseMatrix<double> consistent_mass;
 
   /**
+   * A viscous damping matrix of the system's own (N s/m), on the sparsity
+   * pattern of the stiffness; empty when it has none. Newmark adds it to the
+   * damping `C` of (N2) besides Rayleigh's `a0 M + a1 K`: the Craig-Bampton
+   * reduced part with `Model/Decomposition/Reduction modal damping ratio`
+   * (doc/theory.md 12.3), whose run then gives the reduced part no other
+   * damping.
+   */
+  SparseMatrix<double> damping_matrix;
+
+  /** Whether the system has a damping matrix of its own (damping_matrix). */
+  bool has_damping_matrix() const { return !damping_matrix.empty(); }
+
+  /**
    * Influence vectors of a rigid translation along global x, y, z (one per
    * direction, 1 on the translational DoFs of that direction, 0 elsewhere
    * and on fixed DoFs): base excitation `F = -M r a_g` and modal

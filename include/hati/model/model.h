@@ -89,6 +89,11 @@ struct DecompositionParameters
   double reduction_cutoff_frequency = 150.;
   /** `Reduction maximum modes` (-): a cut-off that needs more is refused. */
   unsigned int reduction_maximum_modes = 500;
+  /**
+   * Reduction modal damping ratio (-): every mode of the reduced part gets
+   * it (doc/theory.md 12.3); negative: the run's damping.
+   */
+  double reduction_modal_damping_ratio = -1.;
 };
 
 /** A DoF vector to write, with its name. */

@@ -242,6 +242,11 @@ private:
   void damping_vmult(Vector<double> &dst, const Vector<double> &src) const;
   /** Zero the entries of fixed DoFs. */
   void zero_fixed(Vector<double> &x) const;
+  /** Whether C != 0: Rayleigh's a0, a1 or the system's own damping matrix. */
+  bool viscous_damping() const
+  {
+    return a0 != 0. || a1 != 0. || system.has_damping_matrix();
+  }
   /**
    * Copy K and C = a0 M + a1 K row by row onto one pattern (CSR), so that
    * the right-hand side `F - K U* - C V*` of (N2) is one serial pass over
