@@ -411,19 +411,30 @@ void CraigBamptonReduction::project(const Vector<double> &f, Vector<double> &r) 
     r[k] = columns[k] * f;
 }
 
-std::vector<double> CraigBamptonReduction::frequencies(const unsigned int n) const
+void CraigBamptonReduction::free_interface_modes(
+    std::vector<double> &omega_squared, std::vector<Vector<double>> &vectors) const
 {
   const unsigned int r = size();
   LAPACKFullMatrix<double> K(r, r), M(r, r);
   K = reduced_stiffness;
   M = reduced_mass;
-  std::vector<Vector<double>> vectors(r, Vector<double>(r));
+  vectors.assign(r, Vector<double>(r));
   K.compute_generalized_eigenvalues_symmetric(M, vectors);
-  std::vector<double> f;
+  omega_squared.resize(r);
   for (unsigned int k = 0; k < r; ++k)
-    f.push_back(std::sqrt(std::max(K.eigenvalue(k).real(), 0.)) / (2. * M_PI));
+    omega_squared[k] = K.eigenvalue(k).real();
+}
+
+std::vector<double> CraigBamptonReduction::frequencies(const unsigned int n) const
+{
+  std::vector<double> omega_squared;
+  std::vector<Vector<double>> vectors;
+  free_interface_modes(omega_squared, vectors);
+  std::vector<double> f;
+  for (const double w2 : omega_squared)
+    f.push_back(std::sqrt(std::max(w2, 0.)) / (2. * M_PI));
   std::sort(f.begin(), f.end());
-  f.resize(std::min(n, r));
+  f.resize(std::min<std::size_t>(n, f.size()));
   return f;
 }
 } // namespace hati

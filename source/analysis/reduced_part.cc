@@ -3,7 +3,6 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/lapack_full_matrix.h>
 
 #include <hati/analysis/reduced_part.h>
 
@@ -130,11 +129,9 @@ void ReducedImplicitPart::set_modal_damping(const double ratio)
   AssertThrow(ratio >= 0. && ratio < 1.,
               ExcMessage("Reduction modal damping ratio must be >= 0 and < 1"));
   const unsigned int r = reduced.n_dofs();
-  LAPACKFullMatrix<double> K(r, r), M(r, r);
-  K = basis.stiffness();
-  M = basis.mass();
-  std::vector<Vector<double>> Z(r, Vector<double>(r));
-  K.compute_generalized_eigenvalues_symmetric(M, Z);
+  std::vector<double> omega_squared;
+  std::vector<Vector<double>> Z;
+  basis.free_interface_modes(omega_squared, Z);
   // M Z_k, then C = sum_k 2 zeta omega_k (M Z_k)(M Z_k)^T
   std::vector<Vector<double>> MZ(r, Vector<double>(r));
   for (unsigned int k = 0; k < r; ++k)
@@ -142,7 +139,7 @@ void ReducedImplicitPart::set_modal_damping(const double ratio)
   FullMatrix<double> C(r, r);
   for (unsigned int k = 0; k < r; ++k)
   {
-    const double c = 2. * ratio * std::sqrt(std::max(K.eigenvalue(k).real(), 0.));
+    const double c = 2. * ratio * std::sqrt(std::max(omega_squared[k], 0.));
     if (c == 0.)
       continue;
     for (unsigned int i = 0; i < r; ++i)

@@ -130,6 +130,15 @@ public:
    */
   std::vector<double> frequencies(const unsigned int n) const;
 
+  /**
+   * The free-interface modes of the reduced system, `K_r z_k = omega_k^2
+   * M_r z_k` with `Z^T M_r Z = I` (dense LAPACK, in LAPACK's order): their
+   * `omega_k^2` (1/s^2) and the vectors `z_k` (frequencies(), the modal
+   * damping of ReducedImplicitPart).
+   */
+  void free_interface_modes(std::vector<double> &omega_squared,
+                            std::vector<Vector<double>> &vectors) const;
+
   /** Wall time of the reduction (s): factorisation, solves, modes, products. */
   double set_up_time() const { return seconds; }
   /**
