@@ -7,6 +7,7 @@ Hoist = rigid | rope, one table (printed, Markdown) and one PNG.
 
 Usage: scripts/crane_physics_table.py [END_TIME] [--hati build/hati]
          [--out output/crane_physics] [--jobs 1] [--reuse] [--png FILE]
+         [--set "Subsection/Entry=value" ...]
 END_TIME: s of the record (default 8). --reuse keeps a run whose
 summary.json says "completed" for the same END_TIME.
 
@@ -106,6 +107,8 @@ def run(args, travel, hoist):
            "--set", "Time integration/End time=%g" % args.end_time,
            "--set", "Output/Output interval=0",
            "--set", "Output/Output directory=" + out]
+    for extra in args.set:
+        cmd += ["--set", extra]
     print("run: %s" % " ".join("'%s'" % c if " " in c else c for c in cmd), flush=True)
     with open(os.path.join(args.out, tag + ".log"), "w") as log:
         r = subprocess.run(cmd, stdout=log, stderr=subprocess.STDOUT, cwd=ROOT)
@@ -167,6 +170,9 @@ def main():
     p.add_argument("--jobs", type=int, default=1)
     p.add_argument("--reuse", action="store_true")
     p.add_argument("--png")
+    p.add_argument("--set", action="append", default=[],
+                   help="one more --set for every run, e.g. "
+                        "'Model/Bridge crane/Eccentricities=true' (repeatable)")
     args = p.parse_args()
     if not os.access(args.hati, os.X_OK):
         sys.exit("crane_physics_table: %s is not an executable: build hati first "

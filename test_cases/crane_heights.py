@@ -30,8 +30,24 @@ References, all independent of the crane's stiffness:
    round-off (peak_mean_force, 1 ms window); HATI's largest rise within
    5 % of the fully explicit run's; the energy balance closes to 1e-10 of
    the largest energy.
+4. settled static friction (doc/theory.md 6.2), Travel = braked, true
+   heights, trolley at 0.3 of the span: held at zero slip from the
+   unloaded geometry, the trolley's four braked wheels locked in +-68.6 kN
+   (the top flange shortening between them as the girder bends, above
+   mu N = 8.9 kN: no static state). Settled, under gravity alone no
+   mechanism along a rail is loaded (small displacements: the wheels'
+   normals are vertical, the free-body statics of the trolley and of the
+   crane along X and Y), so every braked wheel's static friction force is
+   zero (to 1e-9 of M g) and the wheel loads split by the lever rule
+   (1e-8); with 1 m/s^2 of gravity along Y the four braked trolley wheels
+   hold the trolley's m_t gy, a quarter each (the settled forces are the
+   least-squares set on the trolley's mechanism along its rails, equal
+   participations) to 1e-8, and the four braked crane wheels the whole
+   crane's M gy, a quarter each; from that static state the crane under HATI
+   (no record, 0.02 s) stays at rest: monitors' velocities below 1e-9 m/s
+   and the energy balance closed to 1e-10.
 """
-from hati_test import Context, read_summary
+from hati_test import Context, read_csv, read_summary
 
 ctx = Context()
 static_prm = ctx.prm("bridge_crane_static.prm")
@@ -156,5 +172,40 @@ for method, prm in (("CD-Lagrange", "bridge_crane_full_explicit.prm"),
 # HATI against the fully explicit run (reference) on the coupled response
 ctx.check("HATI, true: largest crane wheel force rise (N) against CD-Lagrange's",
           rise["HATI", "true"], rise["CD-Lagrange", "true"], rel=0.05)
+
+
+# 4. settled static friction: the braked crane with true heights
+BRAKED = TRUE + ["Model/Bridge crane/Travel=braked", "Model/Bridge crane/Trolley position=0.3"]
+out, _ = ctx.run(static_prm, "braked_settled", BRAKED)
+s = read_summary(out)
+crane, trolley = loads(out)
+for name, f in sorted(s["static_friction_forces"].items()):
+    ctx.check("braked, gravity: static friction force of %s (N)" % name, f, 0.0,
+              abs_tol=1e-9 * M * g)
+R_S = g * (m_axis / 2 + m_cw_posts / 2 + 0.3 * (m_trolley + m_rail_posts))
+ctx.check("braked: rail at Y = S (wheels 3, 4) (N), lever rule", crane[2] + crane[3], R_S,
+          rel=1e-8)
+ctx.check("braked: sum of trolley wheel loads (N)", sum(trolley), m_trolley * g, rel=1e-8)
+gy = 1.0
+out, _ = ctx.run(static_prm, "braked_gy", BRAKED + ["Loading/Gravity=0, %g, -9.81" % gy])
+friction = read_summary(out)["static_friction_forces"]
+for k in range(1, 5):
+    ctx.check("braked, gy = 1: trolley wheel %d static friction (N) = m_t gy / 4" % k,
+              friction["trolley_wheel_%d" % k], m_trolley * gy / 4, rel=1e-8)
+    # the braked crane wheels hold the whole crane along Y (with the default
+    # flange play the flange pairs are released)
+    ctx.check("braked, gy = 1: crane wheel %d static friction (N) = M gy / 4" % k,
+              friction["crane_wheel_%d" % k], M * gy / 4, rel=1e-8)
+out, _ = ctx.run(ctx.prm("bridge_crane_hati.prm"), "braked_rest",
+                 BRAKED + ["Loading/Accelerogram X=", "Loading/Accelerogram Z=",
+                           "Time integration/End time=0.02", "Output/Output interval=0"])
+s = read_summary(out)
+ctx.check("braked at rest, HATI: energy balance / largest energy",
+          s["energy_balance_relative"], 0.0, abs_tol=1e-10)
+history = read_csv(out + "/history.csv")
+# (numpy drops the dots of the columns' names: tw1.vx is tw1vx)
+speed = max(float(abs(history[name]).max()) for name in history.dtype.names
+            if name.endswith(("vx", "vy", "vz")))
+ctx.check("braked at rest, HATI: largest monitor velocity (m/s)", speed, 0.0, abs_tol=1e-9)
 
 ctx.finish()

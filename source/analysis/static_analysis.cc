@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <hati/analysis/settled_friction.h>
 #include <hati/analysis/static_analysis.h>
 #include <hati/analysis/static_contacts.h>
 #include <hati/linear_algebra/amg_preconditioner.h>
@@ -137,6 +138,7 @@ std::vector<double> solve_closed(const DiscreteSystem &system,
                                  const std::vector<double> &closed_rhs,
                                  Vector<double> &U,
                                  const std::vector<unsigned int> &centred,
+                                 const std::vector<unsigned int> &tangent_rows,
                                  PlayProbe &probe)
 {
   const unsigned int n = system.n_dofs(), m = closed.size(), N = n + m;
@@ -192,6 +194,7 @@ std::vector<double> solve_closed(const DiscreteSystem &system,
   }
   AssertThrow(std::isfinite(x.l2_norm()),
               ExcMessage(singular_message + " (the solution is not finite)."));
+  settle_sticking_tangents(solver, A, n, tangent_rows, x, b);
   const double norm_r = A.residual(r, x, b);
   if (!(norm_r <= residual_tolerance * norm_b))
   {
@@ -307,6 +310,16 @@ struct HeldRows
   std::vector<const SparseRow *> rows;
   std::vector<double> rhs;
   std::vector<std::array<unsigned int, 3>> sticking;
+
+  /** The held rows that are sticking tangents (settle_sticking_tangents()). */
+  std::vector<unsigned int> tangent_rows() const
+  {
+    std::vector<unsigned int> t;
+    for (const auto &[r, first, count] : sticking)
+      for (unsigned int i = 0; i < count; ++i)
+        t.push_back(first + i);
+    return t;
+  }
 };
 
 /**
@@ -350,8 +363,16 @@ void solve_linear(const StaticSolve &s,
       if (s.contacts.is_centred(s.contacts.closed[r]))
         centred.push_back(r);
     s.pushed->clear();
-    const std::vector<double> lambda = solve_closed(
-        s.system, s.package, K, F, s.held.rows, s.held.rhs, U, centred, *s.probe);
+    const std::vector<double> lambda = solve_closed(s.system,
+                                                    s.package,
+                                                    K,
+                                                    F,
+                                                    s.held.rows,
+                                                    s.held.rhs,
+                                                    U,
+                                                    centred,
+                                                    s.held.tangent_rows(),
+                                                    *s.probe);
     s.pushed->clear();
     const std::vector<double> forces =
         closed_contact_forces(s.system, s.contacts, lambda, F, s.pushed);

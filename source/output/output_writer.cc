@@ -186,8 +186,9 @@ void OutputWriter::group_friction(const OutputState &s)
 
 void OutputWriter::set_initial_contacts(const std::vector<double> &initial_gaps)
 {
+  // touching: a gap within closed_gap_tolerance (as the integrators, A4)
   for (unsigned int k = 0; k < initial_gaps.size() && k < contact_group.size(); ++k)
-    if (initial_gaps[k] <= 0.)
+    if (initial_gaps[k] <= closed_gap_tolerance)
       group_was_pushing[contact_group[k]] = true;
 }
 

@@ -15,6 +15,7 @@
 #include <hati/time/damping.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -312,6 +313,9 @@ void Problem::set_static_initial_state()
   const SummaryValue entry = report_static_contact_forces(forces);
   if (entry.kind() != SummaryValue::Kind::null)
     initial_state_summary.emplace_back("static_contact_forces", entry);
+  const SummaryValue friction = report_static_friction_forces(static_tangent_forces);
+  if (friction.kind() != SummaryValue::Kind::null)
+    initial_state_summary.emplace_back("static_friction_forces", friction);
   if (!system.ropes.empty())
     initial_state_summary.emplace_back("static_rope_tension",
                                        report_rope_tensions(system.initial_displacement));
@@ -478,6 +482,39 @@ SummaryValue Problem::report_static_contact_forces(const std::vector<double> &fo
   }
   out << "    " << std::left << std::setw(28) << "sum" << std::right << std::setw(16)
       << std::setprecision(8) << total << std::endl;
+  return json;
+}
+
+SummaryValue Problem::report_static_friction_forces(
+    const std::vector<std::array<double, 2>> &tangent_forces)
+{
+  std::vector<std::string> names;
+  std::vector<double> sums;
+  for (unsigned int k = 0; k < system.contacts.size() && k < tangent_forces.size(); ++k)
+  {
+    const ContactRow &c = system.contacts[k];
+    if (!c.frictional() || c.initial_gap != 0. || c.constraint)
+      continue;
+    const double f = std::hypot(tangent_forces[k][0], tangent_forces[k][1]);
+    const auto it = std::find(names.begin(), names.end(), c.name);
+    if (it == names.end())
+    {
+      names.push_back(c.name);
+      sums.push_back(f);
+    }
+    else
+      sums[it - names.begin()] += f;
+  }
+  if (names.empty())
+    return {};
+  out << "  static friction forces (sticking contacts, settled, N):\n";
+  SummaryValue json = SummaryValue::object();
+  for (unsigned int g = 0; g < names.size(); ++g)
+  {
+    out << "    " << std::left << std::setw(28) << names[g] << std::right << std::setw(16)
+        << std::setprecision(8) << sums[g] << std::endl;
+    json.set(names[g], sums[g]);
+  }
   return json;
 }
 } // namespace hati

@@ -92,15 +92,24 @@ void run_static_analysis(Problem &problem, RunDirectory &directory)
   TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
   Vector<double> U, V(system.n_dofs());
   std::vector<double> forces;
+  std::vector<std::array<double, 2>> tangent_forces;
   {
     TimerOutput::Scope scope(timer, "static solve");
-    solve_static(system, 0., U, problem.newmark_parameters.linear_solver, false, &forces);
+    solve_static(system,
+                 0.,
+                 U,
+                 problem.newmark_parameters.linear_solver,
+                 false,
+                 &forces,
+                 &tangent_forces);
   }
   // a displacement beyond 1e3 model sizes is not a result (summary.json "failed")
   const Watchdog watchdog(*problem.model, system);
   watchdog.check_static(U);
   check_validity(problem, U, watchdog.model_size());
   const SummaryValue contact_entry = problem.report_static_contact_forces(forces);
+  const SummaryValue friction_entry =
+      problem.report_static_friction_forces(tangent_forces);
   OutputWriter writer(directory, system, *problem.model);
   OutputState s;
   s.time = 0.;
@@ -167,6 +176,8 @@ void run_static_analysis(Problem &problem, RunDirectory &directory)
                             {"wall_time", wall}};
   if (contact_entry.kind() != SummaryValue::Kind::null)
     summary.emplace_back("static_contact_forces", contact_entry);
+  if (friction_entry.kind() != SummaryValue::Kind::null)
+    summary.emplace_back("static_friction_forces", friction_entry);
   if (!system.ropes.empty())
     summary.emplace_back("static_rope_tension", problem.report_rope_tensions(U));
   for (const auto &entry : problem.model->summary_entries(problem.static_contact_forces))

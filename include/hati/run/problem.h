@@ -93,6 +93,15 @@ public:
    */
   SummaryValue report_static_contact_forces(const std::vector<double> &forces);
   /**
+   * Print the static friction force of every closed contact with friction
+   * (the magnitude of its sticking tangents' forces, settled: doc/theory.md
+   * 6.2, N) from @p tangent_forces (solve_static()) and return the
+   * `static_friction_forces` entry of summary.json (name -> N; null if no
+   * contact has friction).
+   */
+  SummaryValue
+  report_static_friction_forces(const std::vector<std::array<double, 2>> &tangent_forces);
+  /**
    * Print the tension of every rope at @p U (R1, N) and return them as a
    * `summary.json` object (rope name -> tension).
    */

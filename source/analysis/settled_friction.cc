@@ -1,0 +1,91 @@
+// The settled static state of the sticking tangents (doc/theory.md 6.2).
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <hati/analysis/settled_friction.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hati
+{
+namespace
+{
+/**
+ * An eigenvalue of S below this fraction of the largest is a mechanism: the
+ * slips along it cost no force. On the 3D crane (0.55 m plates) the
+ * mechanisms' eigenvalues are round-off, below 4e-8 of the largest, and
+ * the softest tangential connection's is 0.015 of it (doc/theory.md 6.2).
+ */
+constexpr double mechanism_tolerance = 1e-5;
+} // namespace
+
+double settle_sticking_tangents(const DirectSolver &solver,
+                                const SparseMatrix<double> &A,
+                                const unsigned int n,
+                                const std::vector<unsigned int> &tangent_rows,
+                                Vector<double> &x,
+                                Vector<double> &b)
+{
+  const unsigned int nt = tangent_rows.size(), N = x.size();
+  if (nt == 0)
+    return 0.;
+  // the columns of A^-1 on the tangent rows, one refinement step each
+  std::vector<Vector<double>> columns(nt, Vector<double>(N));
+  Vector<double> e(N), r(N), dx(N);
+  for (unsigned int j = 0; j < nt; ++j)
+  {
+    e = 0.;
+    e[n + tangent_rows[j]] = 1.;
+    solver.solve(columns[j], e);
+    A.residual(r, columns[j], e);
+    solver.solve(dx, r);
+    columns[j] += dx;
+  }
+  LAPACKFullMatrix<double> S(nt, nt);
+  double largest = 0.;
+  for (unsigned int i = 0; i < nt; ++i)
+    for (unsigned int j = 0; j < nt; ++j)
+    {
+      // symmetric up to round-off: its mean
+      S(i, j) = 0.5 * (columns[j][n + tangent_rows[i]] + columns[i][n + tangent_rows[j]]);
+      largest = std::max(largest, std::abs(S(i, j)));
+    }
+  if (largest == 0.)
+    return 0.;
+  Vector<double> sigma;
+  FullMatrix<double> v;
+  S.compute_eigenvalues_symmetric(-std::numeric_limits<double>::max(),
+                                  std::numeric_limits<double>::max(),
+                                  0.,
+                                  sigma,
+                                  v);
+  double sigma_max = 0.;
+  for (unsigned int k = 0; k < sigma.size(); ++k)
+    sigma_max = std::max(sigma_max, std::abs(sigma[k]));
+  // the self-stress part of the tangents' multipliers (on the eigenvectors
+  // that are not mechanisms) and the slips that relieve it
+  std::vector<double> delta(nt, 0.);
+  double relieved = 0.;
+  for (unsigned int k = 0; k < sigma.size(); ++k)
+  {
+    if (std::abs(sigma[k]) <= mechanism_tolerance * sigma_max)
+      continue;
+    double a = 0.;
+    for (unsigned int i = 0; i < nt; ++i)
+      a += v(i, k) * x[n + tangent_rows[i]];
+    for (unsigned int i = 0; i < nt; ++i)
+    {
+      delta[i] -= a / sigma[k] * v(i, k);
+      relieved = std::max(relieved, std::abs(a * v(i, k)));
+    }
+  }
+  for (unsigned int j = 0; j < nt; ++j)
+  {
+    b[n + tangent_rows[j]] += delta[j];
+    x.add(delta[j], columns[j]);
+  }
+  return relieved;
+}
+} // namespace hati
