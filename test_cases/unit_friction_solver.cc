@@ -14,7 +14,9 @@
 // Then the law itself as an independent criterion on random anisotropic
 // 3x3 and 2x2 blocks (Newton on the sliding angle), unilateral and
 // bilateral: complementarity, cone, sticking u_t = 0 or sliding r_t
-// opposite to u_t on the cone's boundary.
+// opposite to u_t on the cone's boundary; and on random clusters of three
+// coupled contacts (the all-sticking solution where admissible, the sweeps
+// otherwise), the law at every contact with the others' impulses.
 #include "test_tools.h"
 
 #include <hati/contact/friction_solver.h>
@@ -102,6 +104,88 @@ double law_violation(const std::vector<double> &W,
       v = std::max(v, std::abs(r[i] / std::max(1e-300, rt) + u[i] / ut));
   }
   return v;
+}
+
+/**
+ * Clusters of three frictional contacts coupled through a random SPD
+ * Delassus matrix (the wheels of one rigid body): the solver's result
+ * must satisfy the law at every contact with the others' impulses (u = W r
+ * + q over the whole cluster), whether it took the all-sticking solution
+ * (one sweep, every contact sticking: u = 0 to round-off) or the sweeps.
+ */
+void coupled_clusters(std::mt19937 &gen)
+{
+  std::uniform_real_distribution<double> u(-1., 1.);
+  const unsigned int m = 3, n = 3 * m;
+  double worst = 0., worst_swept = 0., worst_stick = 0.;
+  unsigned int all_sticking = 0, swept = 0;
+  for (unsigned int trial = 0; trial < 400; ++trial)
+  {
+    FullMatrix<double> B(n, n), W(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        B(i, j) = u(gen);
+    B.mTmult(W, B);
+    // coupled, but less than each contact's own block (rigid bodies)
+    W *= 0.3 / n;
+    for (unsigned int i = 0; i < n; ++i)
+      W(i, i) += 1.;
+    Vector<double> q(n), r;
+    for (unsigned int i = 0; i < n; ++i)
+      // mostly pushing (q_n < 0) with small tangential velocities: many
+      // clusters stick, the others slide or open
+      q[i] = i % 3 == 0 ? -1. + 0.8 * u(gen) : 0.6 * u(gen);
+    const std::vector<double> mu(m, 0.5);
+    std::vector<FrictionState> state;
+    const FrictionSolverResult result = solve_frictional_cluster(
+        {W, q, {0, 3, 6, 9}, mu, {false, false, false}}, r, state);
+    expect(result.converged, "coupled cluster: converged");
+    Vector<double> v(n);
+    W.vmult(v, r);
+    v += q;
+    bool sticking = true;
+    for (unsigned int k = 0; k < m; ++k)
+    {
+      std::vector<double> Wk(9);
+      double qk[3], rk[3];
+      for (unsigned int i = 0; i < 3; ++i)
+      {
+        rk[i] = r[3 * k + i];
+        for (unsigned int j = 0; j < 3; ++j)
+          Wk[3 * i + j] = W(3 * k + i, 3 * k + j);
+      }
+      // the contact's local problem with the others' impulses as they are
+      for (unsigned int i = 0; i < 3; ++i)
+      {
+        qk[i] = v[3 * k + i];
+        for (unsigned int j = 0; j < 3; ++j)
+          qk[i] -= Wk[3 * i + j] * rk[j];
+      }
+      worst = std::max(worst, law_violation(Wk, 3, qk, mu[k], false, rk, state[k]));
+      sticking = sticking && state[k] == FrictionState::stick;
+    }
+    if (result.sweeps == 1 && sticking)
+    {
+      ++all_sticking;
+      worst_stick = std::max(worst_stick, v.linfty_norm());
+    }
+    else
+    {
+      ++swept;
+      worst_swept = std::max(worst_swept, worst);
+    }
+    worst = 0.;
+  }
+  std::cout << "     coupled clusters: " << all_sticking << " all sticking (one solve), "
+            << swept << " by the sweeps" << std::endl;
+  // the sweeps stop on the change of r (1e-10): their residual is larger
+  // (measured 3.7e-10)
+  check("coupled clusters, by the sweeps: largest violation of the law",
+        worst_swept,
+        0.,
+        1e-8);
+  check("coupled clusters, all sticking: largest |u| (m/s)", worst_stick, 0., 1e-12);
+  expect(all_sticking > 50 && swept > 50, "coupled clusters: both paths taken");
 }
 } // namespace
 
@@ -279,6 +363,7 @@ HATI_UNIT_TEST(friction_solver)
   expect(n_inexact == 0, "random anisotropic blocks: every local problem solved exactly");
   expect(n_states[1] > 100 && n_states[2] > 100,
          "random blocks: both stick and slip seen");
+  coupled_clusters(gen);
   return finish();
 }
 } // namespace hati_unit_friction_solver

@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 
 #include <hati/contact/friction_solver.h>
 
@@ -441,6 +442,83 @@ bool block_solve(const FullMatrix<double> &Wb,
 }
 } // namespace
 
+namespace
+{
+/**
+ * The all-sticking solution of a cluster of several blocks (A9): every
+ * block's contact closed and sticking, `W_SS r_S = -q_S` on its rows S (its
+ * partners open, r = 0), by Cholesky. Exact when every normal impulse of S
+ * pushes (or its row is bilateral), every tangential one is within its cone
+ * and every partner separates, `u = W r + q >= 0` on its row: then `u = 0`
+ * on S and the complementarity and Coulomb's law hold everywhere. Returns
+ * false (r undefined) otherwise, or if W_SS is not positive definite.
+ */
+bool solve_all_sticking(const FrictionalCluster &cluster,
+                        const std::vector<FrictionBlock> &blocks,
+                        Vector<double> &r,
+                        std::vector<FrictionState> &state)
+{
+  const FullMatrix<double> &W = cluster.W;
+  const std::vector<unsigned int> &first = cluster.first;
+  thread_local std::vector<unsigned int> rows;
+  rows.clear();
+  for (const FrictionBlock &block : blocks)
+    for (unsigned int i = first[block.contact]; i < first[block.contact + 1]; ++i)
+      rows.push_back(i);
+  const unsigned int ns = rows.size();
+  thread_local LAPACKFullMatrix<double> Ws;
+  thread_local Vector<double> rs;
+  if (Ws.m() != ns)
+    Ws.reinit(ns, ns);
+  if (rs.size() != ns)
+    rs.reinit(ns);
+  for (unsigned int i = 0; i < ns; ++i)
+  {
+    rs[i] = -cluster.q[rows[i]];
+    for (unsigned int j = 0; j < ns; ++j)
+      Ws(i, j) = W(rows[i], rows[j]);
+  }
+  Ws.set_property(LAPACKSupport::symmetric);
+  try
+  {
+    Ws.compute_cholesky_factorization();
+  }
+  catch (const ExceptionBase &)
+  {
+    return false; // W_SS singular (dependent rows)
+  }
+  Ws.solve(rs);
+  r = 0.;
+  for (unsigned int i = 0; i < ns; ++i)
+    r[rows[i]] = rs[i];
+  for (const FrictionBlock &block : blocks)
+  {
+    const unsigned int k = block.contact, a = first[k];
+    const double rn = r[a];
+    if (!cluster.bilateral[k] && !(rn >= 0.))
+      return false;
+    double t2 = 0.;
+    for (unsigned int i = a + 1; i < first[k + 1]; ++i)
+      t2 += r[i] * r[i];
+    if (std::sqrt(t2) > cluster.mu[k] * std::abs(rn))
+      return false;
+    state[k] = rn != 0. ? FrictionState::stick : FrictionState::open;
+    for (const unsigned int f : block.partners)
+    {
+      if (cluster.bilateral[f])
+        return false;
+      double u = cluster.q[first[f]];
+      for (unsigned int j = 0; j < ns; ++j)
+        u += W(first[f], rows[j]) * rs[j];
+      if (!(u >= 0.))
+        return false;
+      state[f] = FrictionState::open;
+    }
+  }
+  return true;
+}
+} // namespace
+
 FrictionSolverResult solve_frictional_cluster(const FrictionalCluster &cluster,
                                               Vector<double> &r,
                                               std::vector<FrictionState> &state,
@@ -463,6 +541,19 @@ FrictionSolverResult solve_frictional_cluster(const FrictionalCluster &cluster,
   // work space reused from call to call (the solver runs every step)
   thread_local std::vector<FrictionBlock> blocks;
   friction_blocks(W, first, mu, blocks);
+  // several blocks coupled through W (the wheels of one rigid body with
+  // true heights): the sweeps converge slowly, so first the all-sticking
+  // solution, exact when it is admissible (a braked crane's usual step)
+  if (blocks.size() > 1)
+  {
+    if (solve_all_sticking(cluster, blocks, r, state))
+    {
+      result.sweeps = 1;
+      return result;
+    }
+    r = 0.;
+    state.assign(m, FrictionState::open);
+  }
   double Wk[9], qk[3], rk[3];
   thread_local FullMatrix<double> Wb;
   thread_local std::vector<double> qb, rb;

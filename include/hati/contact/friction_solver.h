@@ -93,7 +93,11 @@ struct FrictionalCluster
  * Nonsmooth Gauss-Seidel over the contacts of a @p cluster (A9). Each
  * sweep solves every contact's local problem exactly
  * (solve_local_coulomb()) with the impulses of the others as they are. The
- * impulses start from zero. @p r receives the impulses (N s, per row) and
+ * impulses start from zero. A cluster of several blocks first tries the
+ * all-sticking solution (every block's contact closed and sticking, its
+ * flange partners open: one Cholesky solve), taken when it satisfies the
+ * complementarity and Coulomb's law (one sweep counted). @p r receives the impulses (N s,
+ * per row) and
  * @p state the state of each contact.
  */
 FrictionSolverResult solve_frictional_cluster(const FrictionalCluster &cluster,
