@@ -21,16 +21,16 @@ namespace
 constexpr double mechanism_tolerance = 1e-5;
 } // namespace
 
-double settle_sticking_tangents(const DirectSolver &solver,
-                                const SparseMatrix<double> &A,
-                                const unsigned int n,
-                                const std::vector<unsigned int> &tangent_rows,
-                                Vector<double> &x,
-                                Vector<double> &b)
+void settle_sticking_tangents(const DirectSolver &solver,
+                              const SparseMatrix<double> &A,
+                              const unsigned int n,
+                              const std::vector<unsigned int> &tangent_rows,
+                              Vector<double> &x,
+                              Vector<double> &b)
 {
   const unsigned int nt = tangent_rows.size(), N = x.size();
   if (nt == 0)
-    return 0.;
+    return;
   // the columns of A^-1 on the tangent rows, one refinement step each
   std::vector<Vector<double>> columns(nt, Vector<double>(N));
   Vector<double> e(N), r(N), dx(N);
@@ -53,7 +53,7 @@ double settle_sticking_tangents(const DirectSolver &solver,
       largest = std::max(largest, std::abs(S(i, j)));
     }
   if (largest == 0.)
-    return 0.;
+    return;
   Vector<double> sigma;
   FullMatrix<double> v;
   S.compute_eigenvalues_symmetric(-std::numeric_limits<double>::max(),
@@ -67,7 +67,6 @@ double settle_sticking_tangents(const DirectSolver &solver,
   // the self-stress part of the tangents' multipliers (on the eigenvectors
   // that are not mechanisms) and the slips that relieve it
   std::vector<double> delta(nt, 0.);
-  double relieved = 0.;
   for (unsigned int k = 0; k < sigma.size(); ++k)
   {
     if (std::abs(sigma[k]) <= mechanism_tolerance * sigma_max)
@@ -76,16 +75,12 @@ double settle_sticking_tangents(const DirectSolver &solver,
     for (unsigned int i = 0; i < nt; ++i)
       a += v(i, k) * x[n + tangent_rows[i]];
     for (unsigned int i = 0; i < nt; ++i)
-    {
       delta[i] -= a / sigma[k] * v(i, k);
-      relieved = std::max(relieved, std::abs(a * v(i, k)));
-    }
   }
   for (unsigned int j = 0; j < nt; ++j)
   {
     b[n + tangent_rows[j]] += delta[j];
     x.add(delta[j], columns[j]);
   }
-  return relieved;
 }
 } // namespace hati

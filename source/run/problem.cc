@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -449,71 +450,81 @@ void Problem::warn(const std::string &message)
     std::cerr << "hati: warning: " << message << std::endl;
 }
 
+namespace
+{
+/**
+ * The per-row @p values of the closed contacts that @p take selects (zero
+ * initial gap, not a tie or a link row), summed per contact name, in the
+ * order of the names' first rows.
+ */
+std::vector<std::pair<std::string, double>>
+sums_by_name(const std::vector<ContactRow> &contacts,
+             const std::vector<double> &values,
+             const std::function<bool(const ContactRow &)> &take)
+{
+  std::vector<std::pair<std::string, double>> sums;
+  for (unsigned int k = 0; k < contacts.size() && k < values.size(); ++k)
+  {
+    const ContactRow &c = contacts[k];
+    if (c.initial_gap != 0. || c.constraint || !take(c))
+      continue;
+    const auto it = std::find_if(
+        sums.begin(), sums.end(), [&](const auto &e) { return e.first == c.name; });
+    if (it == sums.end())
+      sums.emplace_back(c.name, values[k]);
+    else
+      it->second += values[k];
+  }
+  return sums;
+}
+
+/** Print one line `name value` of a static force table (N). */
+void print_force_line(const ConditionalOStream &out,
+                      const std::string &name,
+                      const double value)
+{
+  out << "    " << std::left << std::setw(28) << name << std::right << std::setw(16)
+      << std::setprecision(8) << value << std::endl;
+}
+} // namespace
+
 SummaryValue Problem::report_static_contact_forces(const std::vector<double> &forces)
 {
   // closed rows: zero initial gap (solve_static); sums per name, in order
-  std::vector<std::string> names;
-  std::vector<double> sums;
-  for (unsigned int k = 0; k < system.contacts.size() && k < forces.size(); ++k)
-  {
-    if (system.contacts[k].initial_gap != 0. || system.contacts[k].constraint)
-      continue;
-    const auto it = std::find(names.begin(), names.end(), system.contacts[k].name);
-    if (it == names.end())
-    {
-      names.push_back(system.contacts[k].name);
-      sums.push_back(forces[k]);
-    }
-    else
-      sums[it - names.begin()] += forces[k];
-  }
-  if (names.empty())
+  const auto sums =
+      sums_by_name(system.contacts, forces, [](const ContactRow &) { return true; });
+  if (sums.empty())
     return {};
   out << "  static contact forces (closed contacts, N):\n";
   SummaryValue json = SummaryValue::object();
   double total = 0.;
-  for (unsigned int g = 0; g < names.size(); ++g)
+  for (const auto &[name, sum] : sums)
   {
-    out << "    " << std::left << std::setw(28) << names[g] << std::right << std::setw(16)
-        << std::setprecision(8) << sums[g] << std::endl;
-    json.set(names[g], sums[g]);
-    static_contact_forces[names[g]] = sums[g];
-    total += sums[g];
+    print_force_line(out, name, sum);
+    json.set(name, sum);
+    static_contact_forces[name] = sum;
+    total += sum;
   }
-  out << "    " << std::left << std::setw(28) << "sum" << std::right << std::setw(16)
-      << std::setprecision(8) << total << std::endl;
+  print_force_line(out, "sum", total);
   return json;
 }
 
 SummaryValue Problem::report_static_friction_forces(
     const std::vector<std::array<double, 2>> &tangent_forces)
 {
-  std::vector<std::string> names;
-  std::vector<double> sums;
-  for (unsigned int k = 0; k < system.contacts.size() && k < tangent_forces.size(); ++k)
-  {
-    const ContactRow &c = system.contacts[k];
-    if (!c.frictional() || c.initial_gap != 0. || c.constraint)
-      continue;
-    const double f = std::hypot(tangent_forces[k][0], tangent_forces[k][1]);
-    const auto it = std::find(names.begin(), names.end(), c.name);
-    if (it == names.end())
-    {
-      names.push_back(c.name);
-      sums.push_back(f);
-    }
-    else
-      sums[it - names.begin()] += f;
-  }
-  if (names.empty())
+  std::vector<double> magnitudes;
+  for (const auto &t : tangent_forces)
+    magnitudes.push_back(std::hypot(t[0], t[1]));
+  const auto sums = sums_by_name(
+      system.contacts, magnitudes, [](const ContactRow &c) { return c.frictional(); });
+  if (sums.empty())
     return {};
   out << "  static friction forces (sticking contacts, settled, N):\n";
   SummaryValue json = SummaryValue::object();
-  for (unsigned int g = 0; g < names.size(); ++g)
+  for (const auto &[name, sum] : sums)
   {
-    out << "    " << std::left << std::setw(28) << names[g] << std::right << std::setw(16)
-        << std::setprecision(8) << sums[g] << std::endl;
-    json.set(names[g], sums[g]);
+    print_force_line(out, name, sum);
+    json.set(name, sum);
   }
   return json;
 }

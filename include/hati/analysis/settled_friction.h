@@ -29,15 +29,13 @@ using namespace dealii;
  * (the forces the mechanisms need, kept) and the rest (self-stress), which
  * the slips `delta = -S^+ (rest)` relieve: `b` on the tangent rows gets
  * `delta` and `x` becomes `A^-1 b`. One back-substitution per tangent row.
- *
- * @return the largest self-stress multiplier relieved (N).
  */
-double settle_sticking_tangents(const DirectSolver &solver,
-                                const SparseMatrix<double> &A,
-                                const unsigned int n,
-                                const std::vector<unsigned int> &tangent_rows,
-                                Vector<double> &x,
-                                Vector<double> &b);
+void settle_sticking_tangents(const DirectSolver &solver,
+                              const SparseMatrix<double> &A,
+                              const unsigned int n,
+                              const std::vector<unsigned int> &tangent_rows,
+                              Vector<double> &x,
+                              Vector<double> &b);
 } // namespace hati
 
 #endif

@@ -96,9 +96,8 @@ struct FrictionalCluster
  * impulses start from zero. A cluster of several blocks first tries the
  * all-sticking solution (every block's contact closed and sticking, its
  * flange partners open: one Cholesky solve), taken when it satisfies the
- * complementarity and Coulomb's law (one sweep counted). @p r receives the impulses (N s,
- * per row) and
- * @p state the state of each contact.
+ * complementarity and Coulomb's law (one sweep counted). @p r receives the
+ * impulses (N s, per row) and @p state the state of each contact.
  */
 FrictionSolverResult solve_frictional_cluster(const FrictionalCluster &cluster,
                                               Vector<double> &r,
