@@ -29,11 +29,20 @@ statics and the default crane at rest under HATI).
    Newton iteration takes 77 s at this size: run by hand, see the note.)
 4. The tied crane at rest under HATI with the Craig-Bampton reduced
    girders (doc/theory.md 12.2; issue #27) at 0.55 m: accelerations below
-   1e-4 g, no penetration beyond 1 nm, energy balance closed."""
+   1e-4 g, no penetration beyond 1 nm, energy balance closed.
+5. Modes against the beam crane's (reference: the beam crane, true
+   heights, tied wheels, rigid hoist, trolley at mid-span; 0.4 m plates and
+   a rail of negligible stiffness): its first six elastic modes paired by
+   MAC on the frame nodes both models share, identified by type, within 5 %
+   (the trolley's yaw on the top flanges within 10 %)."""
 import csv
+import glob
 import os
 
-from hati_test import Context, read_summary
+import numpy as np
+
+from hati_test import Context, read_csv, read_summary
+from vtu_files import read_points
 
 ctx = Context()
 prm = ctx.prm("bridge_crane_3d.prm")
@@ -149,4 +158,82 @@ ctx.check("reduced: largest monitor acceleration / g", a / g, 0.0, abs_tol=1e-4)
 ctx.check("reduced: largest penetration (m)", s["max_penetration"], 0.0, abs_tol=1e-9)
 ctx.check("reduced: energy balance relative to the largest energy",
           s["energy_balance_relative"], 0.0, abs_tol=1e-8)
+
+# ---- 5. modes against the beam crane's ---------------------------------------
+# A rail of negligible stiffness (the beam crane counts its mass only; its
+# area 1e-4 m^2 at the rail head adds 0.7 % to the girder's I_y) with the
+# A55's foot. The end carriages are tied to the walls of the girders' end
+# faces: tied to the end diaphragms' faces too, the 6 mm plate's bending
+# made the joint soft, and the X sway fell from 5.69 Hz at 0.55 m to 3.81 Hz
+# at 0.15 m, 37 % below the beam crane's 6.08 Hz (doc/theory.md 11.2).
+# Measured (0.4 / 0.25 / 0.15 m, the note of issue #26 has 0.1 m): vertical
+# -2.7 / -3.7 / -6.4 % (the top flange's bending under the rail, centred
+# between the webs), the others -1.2 to -3.5 %, the trolley's yaw -6.8 /
+# -7.4 / -7.8 % (its wheels' lateral forces at the rail heads twist the
+# boxes and bend their top flanges), MAC >= 0.94.
+MODAL = ["Analysis/Type=modal", "Analysis/Number of modes=10",
+         "Model/Bridge crane/Eccentricities=true", "Model/Bridge crane/Travel=tied",
+         "Model/Bridge crane/Hoist=rigid", "Model/Bridge crane/Trolley position=0.5",
+         "Loading/Accelerogram X=", "Loading/Accelerogram Z="]
+out_b, _ = ctx.run(prm, "modal_beam", MODAL + ["Model/Bridge crane/Girder model=beam"])
+out_s, _ = ctx.run(prm, "modal_solid", MODAL + [
+    "Model/Bridge crane/Girder element size=0.4",
+    "Model/Bridge crane/Rail section=general, 1e-4, 1e-8, 1e-8, 1e-8, 0, 0"])
+
+
+def mode_shapes(out):
+    """Frequencies, effective mass ratios (x, z) and the translations at each
+    distinct frame node (coincident nodes that move apart, e.g. a wheel and
+    its rail node, are left out)."""
+    rows = read_csv(os.path.join(out, "modes.csv"))
+    files = sorted(glob.glob(os.path.join(out, "mode-*.vtu")))
+    shapes = [read_points(f) for f in files]
+    points = shapes[0][0]
+    groups = {}
+    for i, x in enumerate(np.round(points, 4)):
+        groups.setdefault(tuple(x), []).append(i)
+    keep = [g[0] for g in groups.values()
+            if all(np.allclose(f["displacement"][g], f["displacement"][g[0]], rtol=0,
+                               atol=1e-9 * abs(f["displacement"]).max()) for _, f in shapes)]
+    keep = sorted(keep)
+    return ([float(r["frequency"]) for r in rows],
+            [(float(r["effective_mass_ratio_x"]), float(r["effective_mass_ratio_z"]))
+             for r in rows],
+            points[keep], [f["displacement"][keep] for _, f in shapes])
+
+
+f_b, m_b, x_b, u_b = mode_shapes(out_b)
+f_s, m_s, x_s, u_s = mode_shapes(out_s)
+near = [(i, int(np.argmin(np.linalg.norm(x_s - x, axis=1)))) for i, x in enumerate(x_b)]
+near = [(i, j) for i, j in near if np.linalg.norm(x_s[j] - x_b[i]) < 0.1]
+ib, js = [i for i, _ in near], [j for _, j in near]
+ctx.check_true("modal: frame nodes common to both models (>= 20)", len(near) >= 20,
+               str(len(near)))
+
+
+def mac(a, b):
+    return (a @ b) ** 2 / ((a @ a) * (b @ b))
+
+
+# the beam crane's modes 3-8 (1 and 2: free along X and within the flanges'
+# play along Y) by type, from its mode shapes; the last one within 10 %
+types = ["vertical, girders in phase", "horizontal (X), girders in antiphase",
+         "sway along X, girders in phase", "vertical, girders in antiphase",
+         "racking, girders in antiphase along Y", "trolley yaw against the girders"]
+pair = {}
+for k, name in enumerate(types):
+    m = 2 + k
+    a = u_b[m][ib].ravel()
+    macs = [(mac(a, u_s[n][js].ravel()), n) for n in range(len(u_s))
+            if f_s[n] > 0.5 and n not in pair.values()]
+    best, n = max(macs)
+    pair[m] = n
+    ctx.check_true("modal: beam mode %d (%s, %.3f Hz): solid mode %d, %.3f Hz, MAC %.4f >= 0.9"
+                   % (m + 1, name, f_b[m], n + 1, f_s[n], best), best >= 0.9)
+    ctx.check("modal: mode %d frequency, solid / beam" % (m + 1), f_s[n] / f_b[m], 1.0,
+              abs_tol=0.10 if k == 5 else 0.05)
+ctx.check_true("modal: vertical mode's effective mass along Z > 0.8 (beam, solid)",
+               m_b[2][1] > 0.8 and m_s[pair[2]][1] > 0.8, "%s %s" % (m_b[2], m_s[pair[2]]))
+ctx.check_true("modal: X sway's effective mass along X > 0.15 (beam, solid)",
+               m_b[4][0] > 0.15 and m_s[pair[4]][0] > 0.15, "%s %s" % (m_b[4], m_s[pair[4]]))
 ctx.finish()

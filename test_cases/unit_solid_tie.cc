@@ -17,6 +17,12 @@
 //    stress, pure bending: quadratic displacements, in FE_Q(2)): sigma_xx =
 //    N / A, M_y z / I_y, -M_z y / I_z and every other component zero at every
 //    quadrature point, to 1e-8 of the largest stress.
+// 5. A box girder's end face (0.4 x 0.3 m, webs 12 mm, flanges 16 mm, end
+//    diaphragms): whole, the full rectangle b h (the end diaphragm's face
+//    and the walls' ends); with `walls`, the box section alone, S = b h -
+//    b_i h_i and I_G = diag(I_y + I_z, I_y, I_z) with I_y = (b h^3 - b_i
+//    h_i^3) / 12, I_z = (h b^3 - h_i b_i^3) / 12 (b_i = b - 2 t_w, h_i = h -
+//    2 t_f; 1e-12 relative).
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -31,6 +37,7 @@
 #include <hati/base/mpi_environment.h>
 #include <hati/model/frame.h>
 #include <hati/model/frame_solids.h>
+#include <hati/model/solid_mesh.h>
 #include <hati/model/solid_tie.h>
 #include <hati/run/problem.h>
 
@@ -220,6 +227,53 @@ void patch_test(const std::string &name,
         0.,
         1e-8);
 }
+/** 5: the end face of a box girder, whole and its walls alone. */
+void box_girder_walls()
+{
+  SolidDescription d;
+  SolidDescription::Solid g;
+  g.name = "g";
+  g.kind = "box girder";
+  g.x0 = Point<3>(0., 0., 0.);
+  g.x1 = Point<3>(2., 0., 0.);
+  g.width = b;
+  g.height = h;
+  g.web_thickness = 0.012;
+  g.flange_thickness = 0.016;
+  g.element_size = 0.1;
+  g.diaphragm_spacing = 1.;
+  g.material = "steel";
+  d.solids.push_back(g);
+  Triangulation<3> tria;
+  create_solid_mesh(d, tria);
+  FESystem<3> fe(FE_Q<3>(2), 3);
+  DoFHandler<3> dofs(tria);
+  dofs.distribute_dofs(fe);
+  SolidDescription::FacePlane plane;
+  plane.axis = 0;
+  plane.value = 2.;
+  const FaceMoments whole = face_moments(dofs, 0, plane, Point<3>(), 1e-9, 0);
+  check("box girder end face, whole: S (m^2) = b h", whole.area, b * h, 1e-12 * b * h);
+  const FaceMoments walls =
+      face_moments(dofs,
+                   0,
+                   plane,
+                   Point<3>(),
+                   1e-9,
+                   0,
+                   [&](const Point<3> &x) { return in_box_girder_hollow(g, x, 1e-9); });
+  const double bi = b - 2. * g.web_thickness, hi = h - 2. * g.flange_thickness;
+  const double A = b * h - bi * hi, Iy = (b * h * h * h - bi * hi * hi * hi) / 12.,
+               Iz = (h * b * b * b - hi * bi * bi * bi) / 12.;
+  std::cout << "box girder end face: " << whole.n_faces << " cell faces, the walls "
+            << walls.n_faces << std::endl;
+  check("walls: S (m^2) = b h - b_i h_i", walls.area, A, 1e-12 * A);
+  check("walls: G_y (m)", walls.centroid[1], 0., 1e-12);
+  check("walls: G_z (m)", walls.centroid[2], 0., 1e-12);
+  check("walls: I_G xx (m^4)", walls.inertia[0][0], Iy + Iz, 1e-12 * (Iy + Iz));
+  check("walls: I_G yy (m^4) = I_y of the box", walls.inertia[1][1], Iy, 1e-12 * Iy);
+  check("walls: I_G zz (m^4) = I_z of the box", walls.inertia[2][2], Iz, 1e-12 * Iz);
+}
 } // namespace
 
 HATI_UNIT_TEST(solid_tie)
@@ -229,6 +283,7 @@ HATI_UNIT_TEST(solid_tie)
   try
   {
     face_checks();
+    box_girder_walls();
     const double A = b * h, Iy = b * h * h * h / 12., Iz = h * b * b * b / 12.;
     patch_test("axial force N = 1e5 N",
                "1e5, 0, 0, 0, 0, 0",

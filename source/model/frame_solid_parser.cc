@@ -139,8 +139,9 @@ SolidItem parse_solid(const Item &it)
 }
 
 /**
- * `<axis>=<value>` at @p k and the optional `radius r` (or `radius=r`)
- * after it: the face plane of a tie or a support.
+ * `<axis>=<value>` at @p k and, after it, the optional `radius r` (or
+ * `radius=r`) and `walls`, in either order: the face plane of a tie or a
+ * support.
  */
 SolidDescription::FacePlane
 parse_plane(const Item &it, const unsigned int k, const std::string &entry)
@@ -157,15 +158,25 @@ parse_plane(const Item &it, const unsigned int k, const std::string &entry)
               "' is not a face plane: expected x=<value>, y=<value> or z=<value> (m)");
   f.axis = axis[0] - 'x';
   f.value = frame_item_number(Utilities::trim(v.substr(eq + 1)), entry, it);
-  if (it.values.size() > k + 1)
+  bool radius = false;
+  for (unsigned int j = k + 1; j < it.values.size(); ++j)
   {
-    const std::string &r = it.values[k + 1];
-    require(r.rfind("radius", 0) == 0, entry, it, "'" + r + "' is not 'radius <r>' (m)");
+    const std::string &r = it.values[j];
+    if (r == "walls" && !f.walls)
+    {
+      f.walls = true;
+      continue;
+    }
+    require(r.rfind("radius", 0) == 0 && !radius,
+            entry,
+            it,
+            "'" + r + "' is not 'radius <r>' (m) or 'walls' (each at most once)");
     std::string number = Utilities::trim(r.substr(6));
     if (!number.empty() && number[0] == '=')
       number = Utilities::trim(number.substr(1));
     f.radius = frame_item_number(number, entry, it);
     require(f.radius > 0., entry, it, "the radius must be > 0 (m)");
+    radius = true;
   }
   return f;
 }
@@ -198,22 +209,26 @@ void declare_solid_entries(ParameterHandler &prm)
       "Ties",
       "",
       Patterns::Anything(),
-      "Beam nodes tied to solid faces, 'name: node, solid, <axis>=<value>[, radius r]; "
-      "...': the node follows the area-weighted rigid fit of the solid's boundary face "
-      "on the plane axis = value (m, global axes), or of its part within r (m) of the "
-      "node's projection on that plane (faces whose centre lies within). The face may "
-      "warp (no rigid face): a beam force F and moment M reach the face as the "
-      "traction F/S + (I_G^-1 M) x r (doc/theory.md B1); so do the node's nodal "
-      "loads, point masses and springs. The traction is uniform over the face: "
-      "the open end of a box girder distorts under it, give the girder its end "
-      "diaphragms (diaphragm spacing).");
+      "Beam nodes tied to solid faces, 'name: node, solid, <axis>=<value>[, radius "
+      "r][, walls]; ...': the node follows the area-weighted rigid fit of the solid's "
+      "boundary face on the plane axis = value (m, global axes), or of its part within "
+      "r (m) of the node's projection on that plane (faces whose centre lies within). "
+      "The face may warp (no rigid face): a beam force F and moment M reach the face "
+      "as the traction F/S + (I_G^-1 M) x r (doc/theory.md B1); so do the node's "
+      "nodal loads, point masses and springs. The traction is linear over the face, "
+      "not over the walls alone: the open end of a box girder distorts under it, give "
+      "the girder its end diaphragms (diaphragm spacing). 'walls' (box girders): the "
+      "fit over the walls' faces only (webs and flanges, as the beam's section), not "
+      "the end diaphragm's face inside them, which would carry the traction across "
+      "its thickness as a plate in bending (a joint far softer than the beam's).");
   prm.declare_entry("Solid supports",
                     "",
                     Patterns::Anything(),
-                    "Fixed faces of solids, 'solid: <axis>=<value>[, radius r]; ...': "
-                    "every translation of the nodes of the solid's boundary face on "
-                    "that plane (m), or of its faces whose centre lies within r (m) of "
-                    "the face's centroid, is fixed.");
+                    "Fixed faces of solids, 'solid: <axis>=<value>[, radius r][, "
+                    "walls]; ...': every translation of the nodes of the solid's "
+                    "boundary face on that plane (m), or of its faces whose centre "
+                    "lies within r (m) of the face's centroid, or of a box girder's "
+                    "walls on it (not its diaphragms' faces), is fixed.");
   prm.declare_entry(
       "Solid cuts",
       "",
@@ -249,8 +264,10 @@ void parse_solid_entries(ParameterHandler &prm, SolidDescription &d)
   d.degree = static_cast<unsigned int>(degree);
   for (const Item &it : parse_frame_items(prm.get("Ties"), "Ties"))
   {
-    expect_frame_item_values(
-        it, "Ties", {3, 4}, "3 or 4 (node, solid, <axis>=<value>[, radius r])");
+    expect_frame_item_values(it,
+                             "Ties",
+                             {3, 4, 5},
+                             "3 to 5 (node, solid, <axis>=<value>[, radius r][, walls])");
     SolidDescription::Tie t;
     t.name = it.name;
     t.node = it.values[0];
@@ -261,7 +278,7 @@ void parse_solid_entries(ParameterHandler &prm, SolidDescription &d)
   for (const Item &it : parse_frame_items(prm.get("Solid supports"), "Solid supports"))
   {
     expect_frame_item_values(
-        it, "Solid supports", {1, 2}, "1 or 2 (<axis>=<value>[, radius r])");
+        it, "Solid supports", {1, 2, 3}, "1 to 3 (<axis>=<value>[, radius r][, walls])");
     SolidDescription::FacePlane f = parse_plane(it, 0, "Solid supports");
     f.solid = it.name;
     d.supports.push_back(f);

@@ -11,6 +11,7 @@
 #include <hati/model/solid_tie.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -83,6 +84,26 @@ FrameSolids::MonitorNode nearest_node(const DoFHandler<3> &dof_handler,
   return best;
 }
 
+/**
+ * The faces a plane's `walls` leaves out: those inside the box girder's
+ * hollow (in_box_girder_hollow()); none without `walls`. Throws a one-line
+ * error starting with @p where if the solid is not a box girder.
+ */
+std::function<bool(const Point<3> &)>
+skipped_faces(const SolidDescription::FacePlane &plane,
+              const SolidDescription::Solid &solid,
+              const double tolerance,
+              const std::string &where)
+{
+  if (!plane.walls)
+    return {};
+  AssertThrow(solid.kind == "box girder",
+              ExcMessage(where + ": 'walls' needs a box girder solid ('" + solid.name +
+                         "' is a " + solid.kind + ")"));
+  return [&solid, tolerance](const Point<3> &x)
+  { return in_box_girder_hollow(solid, x, tolerance); };
+}
+
 /** The index of every solid by name. */
 std::map<std::string, unsigned int> solid_index(const SolidDescription &d)
 {
@@ -128,10 +149,12 @@ void FrameSolids::add_supports(AffineConstraints<double> &constraints) const
     const std::string where = "Model/Frame/Solid supports: solid '" + plane.solid + "'";
     SolidDescription::FacePlane whole = plane;
     whole.radius = -1.;
+    const unsigned int solid = index.at(plane.solid);
+    const auto skip = skipped_faces(plane, frame.solids.solids[solid], tolerance, where);
     const FaceMoments all =
-        face_moments(dof_handler, index.at(plane.solid), whole, Point<3>(), tolerance, 0);
-    const FaceMoments face = face_moments(
-        dof_handler, index.at(plane.solid), plane, all.centroid, tolerance, first_dof);
+        face_moments(dof_handler, solid, whole, Point<3>(), tolerance, 0, skip);
+    const FaceMoments face =
+        face_moments(dof_handler, solid, plane, all.centroid, tolerance, first_dof, skip);
     AssertThrow(face.n_faces > 0,
                 ExcMessage(where + ": no face of the solid's boundary lies on that plane "
                                    "(within the radius)"));
@@ -153,12 +176,15 @@ std::vector<LinkRows> FrameSolids::ties(
     const Point<3> &x = frame.nodes.at(tie.node);
     Point<3> projection = x;
     projection[tie.face.axis] = tie.face.value;
-    const FaceMoments face = face_moments(dof_handler,
-                                          index.at(tie.face.solid),
-                                          tie.face,
-                                          projection,
-                                          tolerance,
-                                          first_dof);
+    const unsigned int solid = index.at(tie.face.solid);
+    const FaceMoments face = face_moments(
+        dof_handler,
+        solid,
+        tie.face,
+        projection,
+        tolerance,
+        first_dof,
+        skipped_faces(tie.face, frame.solids.solids[solid], tolerance, where));
     links.push_back({tie.name, node_dofs.at(tie.node), tie_rows(face, x, where)});
   }
   return links;

@@ -172,6 +172,13 @@ Tensor<2, 3> solid_local_axes(const SolidItem &s)
   return frame_rotation(s.x0, s.x1, y_reference);
 }
 
+bool in_box_girder_hollow(const SolidItem &s, const Point<3> &x, const double tolerance)
+{
+  const Tensor<1, 3> local = solid_local_axes(s) * (x - s.x0);
+  return std::abs(local[1]) < 0.5 * s.width - s.web_thickness - tolerance &&
+         std::abs(local[2]) < 0.5 * s.height - s.flange_thickness - tolerance;
+}
+
 void create_solid_mesh(const SolidDescription &description,
                        Triangulation<3> &triangulation)
 {

@@ -40,7 +40,8 @@ FaceMoments face_moments(const DoFHandler<3> &dof_handler,
                          const SolidDescription::FacePlane &plane,
                          const Point<3> &centre,
                          const double tolerance,
-                         const types::global_dof_index offset)
+                         const types::global_dof_index offset,
+                         const std::function<bool(const Point<3> &)> &skip)
 {
   const auto &fe = dof_handler.get_fe();
   const QGauss<2> quadrature(fe.degree + 1);
@@ -69,6 +70,8 @@ FaceMoments face_moments(const DoFHandler<3> &dof_handler,
         continue;
       if (plane.radius > 0. &&
           in_plane_distance(face->center(), centre, plane.axis) > plane.radius)
+        continue;
+      if (skip && skip(face->center()))
         continue;
       ++m.n_faces;
       values.reinit(cell, f);

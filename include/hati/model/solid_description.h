@@ -49,7 +49,8 @@ struct SolidDescription
 
   /**
    * A plane `x_axis = value` of a solid's boundary, optionally only the part
-   * within `radius` of a point of it (faces whose centre lies within).
+   * within `radius` of a point of it (faces whose centre lies within), or
+   * only a box girder's walls on it.
    */
   struct FacePlane
   {
@@ -59,6 +60,11 @@ struct SolidDescription
     double value = 0.; ///< m
     /** m; negative: the whole plane. */
     double radius = -1.;
+    /**
+     * box girder: only the faces of its walls (webs and flanges), not those
+     * of the diaphragms inside them (an end diaphragm's outer face).
+     */
+    bool walls = false;
   };
 
   /** A beam node tied to a face of a solid (B1, doc/theory.md B1). */

@@ -32,6 +32,17 @@ void create_solid_mesh(const SolidDescription &description,
  * for a `box` or a `mesh`.
  */
 Tensor<2, 3> solid_local_axes(const SolidDescription::Solid &solid);
+
+/**
+ * Whether @p x lies inside the hollow of the box girder @p solid, off its
+ * walls: `|y| < width/2 - web thickness` and `|z| < height/2 - flange
+ * thickness` in its local axes, by more than @p tolerance (m). The outer
+ * face of an end diaphragm lies there, the end faces of the webs and
+ * flanges do not.
+ */
+bool in_box_girder_hollow(const SolidDescription::Solid &solid,
+                          const Point<3> &x,
+                          const double tolerance);
 } // namespace hati
 
 #endif

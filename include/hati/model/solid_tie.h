@@ -11,6 +11,7 @@
 #include <hati/model/solid_description.h>
 
 #include <array>
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
@@ -60,15 +61,16 @@ struct FaceMoments
  * all lie on the plane `x_axis = value` of @p plane (within @p tolerance,
  * m), and, with a radius, whose centre lies within it of @p centre (m);
  * their DoFs and moments (FaceMoments), the DoFs numbered from @p offset.
- * @p plane_centre, if not null, receives the centroid of the whole plane
- * face (before the radius).
+ * With @p skip, the faces whose centre it holds true for are left out (a box
+ * girder's diaphragm faces for a plane's `walls`).
  */
 FaceMoments face_moments(const DoFHandler<3> &dof_handler,
                          const unsigned int solid,
                          const SolidDescription::FacePlane &plane,
                          const Point<3> &centre,
                          const double tolerance,
-                         const types::global_dof_index offset);
+                         const types::global_dof_index offset,
+                         const std::function<bool(const Point<3> &)> &skip = {});
 
 /**
  * The six rows of a beam node at @p node tied to the face @p face (B1): beam
