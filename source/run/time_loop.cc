@@ -456,28 +456,47 @@ void TimeLoop<Integrator>::add_coupling_summary(SummaryEntries &summary) const
   if constexpr (std::is_same_v<Integrator, HATICoupling>)
   {
     const auto &parts = problem.decomposition->parts;
-    summary.insert(summary.end(),
-                   {{"time_step_ratio", integrator.time_step_ratio()},
-                    {"micro_dt", integrator.micro_time_step()},
-                    {"n_dofs_explicit", parts[0].system.n_dofs()},
-                    {"n_dofs_implicit", parts[1].system.n_dofs()},
-                    {"n_interface_dofs", integrator.n_interface_dofs()},
-                    {"wall_time_explicit", integrator.explicit_seconds()},
-                    {"wall_time_implicit", integrator.implicit_seconds()},
-                    {"wall_time_interface", integrator.interface_seconds()},
-                    {"wall_time_setup", integrator.setup_seconds()},
-                    {"interface_velocity_jump", integrator.interface_velocity_jump()},
-                    {"redone_macro_steps", integrator.redone_macro_steps()},
-                    {"hati_redone_macro_steps", integrator.redone_macro_steps()},
-                    {"hati_redo_passes", integrator.redo_passes()},
-                    {"interface_iterations", integrator.interface_iterations()},
-                    {"ramp_patterns", integrator.ramp_patterns()}});
+    summary.insert(
+        summary.end(),
+        {{"time_step_ratio", integrator.time_step_ratio()},
+         {"micro_dt", integrator.micro_time_step()},
+         {"n_dofs_explicit", parts[0].system.n_dofs()},
+         {"n_dofs_implicit", parts[1].system.n_dofs()},
+         {"n_interface_dofs", integrator.n_interface_dofs()},
+         {"wall_time_explicit", integrator.explicit_seconds()},
+         {"wall_time_implicit", integrator.implicit_seconds()},
+         {"wall_time_interface", integrator.interface_seconds()},
+         {"wall_time_setup", integrator.setup_seconds()},
+         {"interface_velocity_jump", integrator.interface_velocity_jump()},
+         {"redone_macro_steps", integrator.redone_macro_steps()},
+         {"hati_redone_macro_steps", integrator.redone_macro_steps()},
+         {"hati_redo_passes", integrator.redo_passes()},
+         {"hati_correction_halvings", integrator.correction_halvings()},
+         {"hati_discontinuous_macro_steps", integrator.discontinuous_macro_steps()},
+         {"hati_largest_discontinuous_residual",
+          integrator.largest_discontinuous_residual()},
+         {"interface_iterations", integrator.interface_iterations()},
+         {"ramp_patterns", integrator.ramp_patterns()}});
     std::cout << "  HATI wall time: explicit " << integrator.explicit_seconds()
               << " s, implicit " << integrator.implicit_seconds() << " s, interface "
               << integrator.interface_seconds() << " s, set-up "
               << integrator.setup_seconds() << " s; interface velocity jump "
               << integrator.interface_velocity_jump() << " m/s; "
               << integrator.redone_macro_steps() << " macro steps redone" << std::endl;
+    if (integrator.discontinuous_macro_steps() > 0)
+    {
+      std::ostringstream m;
+      m << "HATI: " << integrator.discontinuous_macro_steps()
+        << " redone macro step(s) kept an interface velocity jump of up to "
+        << integrator.largest_discontinuous_residual()
+        << " of the interface velocity scale (the largest jump of the run: "
+        << integrator.interface_velocity_jump()
+        << " m/s): a contact closing within the macro step "
+           "makes the macro-end velocity jump as the closure moves by a micro step, "
+           "and the continuity had no root (doc/theory.md 9.6); the energy balance "
+           "includes it";
+      problem.warn(m.str());
+    }
   }
   else
     (void)summary;

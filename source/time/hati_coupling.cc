@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace hati
@@ -317,6 +318,13 @@ void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
       update(n_gamma);
   // the correction matrix of the accelerated corrections (Broyden)
   FullMatrix<double> B;
+  // the safeguard (RampSuperposition::safeguarded_corrections): the residual
+  // before the last correction, halvings of it, plain corrections left
+  double last_norm = std::numeric_limits<double>::max();
+  unsigned int halvings = 0, plain_left = RampSuperposition::plain_corrections;
+  // the iterate with the smallest residual (RampSuperposition::accepted_discontinuity)
+  double best_norm = std::numeric_limits<double>::max(), best_scale = 0.;
+  Vector<double> best_lambda;
   for (;; ++iterations)
   {
     explicit_integrator.restore(snapshot);
@@ -328,6 +336,25 @@ void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
     if (norm <= RampSuperposition::continuity_tolerance * std::max(scale, 1e-300) ||
         norm == 0.)
       break;
+    if (norm < best_norm)
+    {
+      best_norm = norm;
+      best_scale = scale;
+      best_lambda = lambda_m;
+    }
+    if (iterations >= RampSuperposition::max_corrections &&
+        best_norm <= RampSuperposition::accepted_discontinuity * best_scale)
+    {
+      // no root: keep the iterate with the smallest residual (the macro-end
+      // velocity jumps where a contact's closure moves by a micro step)
+      lambda_m = best_lambda;
+      explicit_integrator.restore(snapshot);
+      n_recorded = 0;
+      micro_steps(lambda_m, false);
+      ++n_discontinuous;
+      largest_discontinuity = std::max(largest_discontinuity, best_norm / best_scale);
+      break;
+    }
     if (iterations >= RampSuperposition::max_corrections)
     {
       std::ostringstream message;
@@ -340,15 +367,31 @@ void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
                  "Time step ratio";
       AssertThrow(false, ExcMessage(message.str()));
     }
-    if (iterations < RampSuperposition::plain_corrections)
+    if (iterations >= RampSuperposition::safeguarded_corrections && norm > last_norm &&
+        halvings < RampSuperposition::max_halvings)
+    {
+      // the last correction grew the residual (a contact switched across
+      // it): go back half of it, and restart the secant update from H^-1
+      step *= 0.5;
+      lambda_m -= step;
+      ++halvings;
+      B.reinit(0, 0);
+      plain_left = RampSuperposition::plain_corrections;
+      ++n_halvings;
+      continue;
+    }
+    halvings = 0;
+    if (plain_left > 0)
     {
       // Lambda += H^-1 r with the interface matrix of the ramp response
       step = residual;
       interface->solve(H_inverse, step);
+      --plain_left;
     }
     else
       broyden_step(H_inverse, B, step, last_residual, residual);
     last_residual = residual;
+    last_norm = norm;
     lambda_m += step;
   }
   max_iterations = std::max(max_iterations, iterations + 1);

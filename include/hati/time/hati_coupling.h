@@ -192,6 +192,18 @@ public:
    * one (one per correction of Lambda_{n+m}, the converged one included).
    */
   unsigned long redo_passes() const { return n_redo_passes; }
+  /**
+   * Corrections of Lambda_{n+m} halved by the safeguard
+   * (RampSuperposition::safeguarded_corrections).
+   */
+  unsigned long correction_halvings() const { return n_halvings; }
+  /**
+   * Redone macro steps whose continuity had no root within
+   * RampSuperposition::accepted_discontinuity (the smallest residual kept),
+   * and the largest such residual relative to the interface velocities.
+   */
+  unsigned long discontinuous_macro_steps() const { return n_discontinuous; }
+  double largest_discontinuous_residual() const { return largest_discontinuity; }
   /** Active sets of the contacts within reach whose ramp response was computed. */
   unsigned long ramp_patterns() const { return superposition->ramp_patterns(); }
 
@@ -295,6 +307,9 @@ private:
   unsigned long n_redone = 0;
   unsigned int max_iterations = 0;
   unsigned long n_redo_passes = 0;
+  unsigned long n_halvings = 0;
+  unsigned long n_discontinuous = 0;
+  double largest_discontinuity = 0.;
   double seconds[3] = {0., 0., 0.};
   double setup = 0.;
   mutable Vector<double> global_U, global_V, expanded_U, expanded_V;

@@ -100,7 +100,27 @@ public:
    */
   static constexpr double continuity_tolerance = 1e-8;
   /** Redone macro steps: corrections of Lambda_{n+m} before giving up. */
-  static constexpr unsigned int max_corrections = 50;
+  static constexpr unsigned int max_corrections = 60;
+  /**
+   * Redone macro steps that reach max_corrections: the iterate with the
+   * smallest residual is kept if that residual is at most this fraction of
+   * the largest interface velocity (counted and warned of); beyond it the
+   * run stops. Where a contact closes within the macro step, the macro-end
+   * velocity jumps when Lambda_{n+m} moves the closure by one micro step,
+   * so the continuity may have no root (doc/theory.md 9.6).
+   */
+  static constexpr double accepted_discontinuity = 1e-2;
+  /**
+   * Redone macro steps: from this correction on, a correction that grew
+   * the residual is halved (at most max_halvings times in a row) and the
+   * secant update starts again from H^-1 (HATICoupling::redo_micro_steps();
+   * doc/theory.md 9.6): a contact that switches between passes made the
+   * secant corrections cycle. Macro steps that converge before it are
+   * computed as without it.
+   */
+  static constexpr unsigned int safeguarded_corrections = 25;
+  /** Redone macro steps: halvings of one correction (see above). */
+  static constexpr unsigned int max_halvings = 8;
   /**
    * Redone macro steps: corrections with the ramp's H^-1 before the
    * secant (Broyden) ones (HATICoupling::broyden_step()); a macro step
