@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 namespace hati
@@ -68,6 +69,7 @@ void run_modal_analysis(Problem &problem, RunDirectory &directory)
   std::cout << "\n"
             << "   mode  frequency (Hz)   period (s)   eff. mass ratio x      y      z\n";
   std::vector<std::pair<double, std::string>> files;
+  std::map<std::string, std::vector<std::pair<double, std::string>>> series_files;
   for (unsigned int k = 0; k < r.frequencies.size(); ++k)
   {
     const double f = r.frequencies[k];
@@ -95,11 +97,27 @@ void run_modal_analysis(Problem &problem, RunDirectory &directory)
                              {{{"displacement", &r.modes[k]}}, double(k + 1), k + 1});
     out.close();
     files.emplace_back(k + 1, name);
+    // the model's other series (a frame's solids): <series>-mode-NNN.vtu
+    for (const std::string &series : problem.model->vtu_series())
+    {
+      const std::string file = series + "-" + std::string(name);
+      OutputStream series_out(directory.open(file));
+      problem.model->write_series_vtu(
+          series, series_out, {{{"displacement", &r.modes[k]}}, double(k + 1), k + 1});
+      series_out.close();
+      series_files[series].emplace_back(k + 1, file);
+    }
   }
   directory.replace("modes.csv", csv.str(), true);
   std::ostringstream pvd;
   DataOutBase::write_pvd_record(pvd, files);
   directory.replace("modes.pvd", pvd.str(), true);
+  for (const auto &[series, list] : series_files)
+  {
+    std::ostringstream series_pvd;
+    DataOutBase::write_pvd_record(series_pvd, list);
+    directory.replace(series + "_modes.pvd", series_pvd.str(), true);
+  }
 
   SummaryValue list = SummaryValue::list();
   for (const double f : r.frequencies)
@@ -130,7 +148,9 @@ void run_modal_analysis(Problem &problem, RunDirectory &directory)
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary.emplace_back("wall_time", wall);
   write_summary(directory.path() + "/summary.json", summary, problem.warnings);
-  std::cout << "  modes.csv and mode shapes (modes.pvd: 'time' = mode number) in "
-            << directory.path() << "/" << std::endl;
+  std::cout << "  modes.csv and mode shapes (modes.pvd: 'time' = mode number";
+  for (const auto &entry : series_files)
+    std::cout << "; " << entry.first << "_modes.pvd";
+  std::cout << ") in " << directory.path() << "/" << std::endl;
 }
 } // namespace hati
