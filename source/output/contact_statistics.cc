@@ -60,11 +60,9 @@ ContactStatistics::ContactStatistics(const std::vector<ContactRow> &contacts,
       always_closed[group_of_row[k]] = 0;
   pushing.assign(groups.size(), 0);
   pushed_once.assign(groups.size(), 0);
-  // touching in the initial state: pushing before the first step (a gap
-  // within closed_gap_tolerance, as the integrators take it, A4: the
-  // round-off gap of a static state, 8.7e-19 m, is not an impact)
+  // touching in the initial state: pushing before the first step
   for (unsigned int k = 0; k < group_of_row.size() && k < initial_gaps.size(); ++k)
-    if (initial_gaps[k] <= closed_gap_tolerance)
+    if (initially_touching(initial_gaps[k]))
       pushing[group_of_row[k]] = pushed_once[group_of_row[k]] = 1;
   initially_closed = pushed_once;
 }

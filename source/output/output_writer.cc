@@ -186,9 +186,8 @@ void OutputWriter::group_friction(const OutputState &s)
 
 void OutputWriter::set_initial_contacts(const std::vector<double> &initial_gaps)
 {
-  // touching: a gap within closed_gap_tolerance (as the integrators, A4)
   for (unsigned int k = 0; k < initial_gaps.size() && k < contact_group.size(); ++k)
-    if (initial_gaps[k] <= closed_gap_tolerance)
+    if (initially_touching(initial_gaps[k]))
       group_was_pushing[contact_group[k]] = true;
 }
 

@@ -78,6 +78,16 @@ unsigned int n_contacts(const std::vector<ContactRow> &contacts);
  */
 constexpr double closed_gap_tolerance = 1e-12;
 
+/**
+ * Whether a contact with the initial gap @p gap (m) touches at the start of
+ * a run: within closed_gap_tolerance, as the integrators take it (A4), so
+ * the round-off gap of a static state (8.7e-19 m) is not an impact.
+ */
+constexpr bool initially_touching(const double gap)
+{
+  return gap <= closed_gap_tolerance;
+}
+
 /** Whether a contact of @p contacts has friction (ContactRow::frictional()). */
 bool has_friction(const std::vector<ContactRow> &contacts);
 
