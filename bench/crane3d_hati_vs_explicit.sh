@@ -15,6 +15,9 @@
 # contacts' first loss of contact in each run. (u(0) itself differs along Y by
 # 0.14 mm between the two: the crane is free along Y within its flanges'
 # play, and the two static solves place that mechanism differently.)
+# Measured (session 25): trolley wheels within 0.005 % of their 0.12 m
+# peak, crane wheels 0.27 %, first losses 0.04112 s (HATI) and 0.0416 s;
+# HATI 21 s, fully explicit 5,159 s (1 h 26 min).
 # Usage: bench/crane3d_hati_vs_explicit.sh [build directory] [end time, s, default 0.05]
 set -euo pipefail
 cd "$(dirname "$0")/.."
