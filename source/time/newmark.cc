@@ -626,6 +626,8 @@ void Newmark::solve_with_effective_matrix(Vector<double> &x,
       }
     }
   }
-  check_finite(x, "Newmark");
+  std::ostringstream what;
+  what << "Newmark (the step from t = " << t << " s)";
+  check_finite(x, what.str());
 }
 } // namespace hati
