@@ -3,7 +3,8 @@
 // large ones. Every solution is checked against the complementarity
 // conditions themselves (lambda >= 0, w = W lambda + q >= 0, lambda.w = 0),
 // an independent criterion, and the enumeration against PGS on the same
-// problems. Returns non-zero on failure.
+// problems; the prescribed active set's equalities with dependent rows.
+// Returns non-zero on failure.
 #include <deal.II/base/exceptions.h>
 
 #include "test_tools.h"
@@ -109,6 +110,42 @@ HATI_UNIT_TEST(lcp_solver)
       thrown = true;
     }
     expect(thrown, "zero Delassus entry refused");
+  }
+  // a prescribed active set with dependent rows (solve_equalities): a wheel
+  // sticking on its rail, rows normal (z) and tangents (x, y) of one node of
+  // inverse mass 1/m, and the flange's lateral contact along y on the same
+  // node. W = L M^-1 L^T is singular (rows 2 and 3 equal); q = L v with v
+  // the node's free velocity. Independent reference: the velocity after the
+  // impulses, v + M^-1 L^T lambda, must be zero along x, y, z (every row an
+  // equality), and the minimum-norm solution shares the y impulse equally.
+  {
+    const double minv = 1. / 250.;
+    FullMatrix<double> L(4, 3);
+    L(0, 2) = 1.; // normal
+    L(1, 0) = 1.; // tangent x
+    L(2, 1) = 1.; // tangent y
+    L(3, 1) = 1.; // flange, y
+    FullMatrix<double> W(4, 4);
+    for (unsigned int i = 0; i < 4; ++i)
+      for (unsigned int j = 0; j < 4; ++j)
+        for (unsigned int d = 0; d < 3; ++d)
+          W(i, j) += L(i, d) * minv * L(j, d);
+    Vector<double> v(3), q(4), lambda;
+    v[0] = 0.3;
+    v[1] = -0.2;
+    v[2] = -1.1;
+    L.vmult(q, v);
+    hati::solve_equalities(W, q, lambda);
+    Vector<double> after(v), impulse(3);
+    L.Tvmult(impulse, lambda);
+    for (unsigned int d = 0; d < 3; ++d)
+      after[d] += minv * impulse[d];
+    expect(after.linfty_norm() < 1e-14,
+           "dependent prescribed rows: velocity after the impulses " +
+               std::to_string(after.linfty_norm()));
+    expect(std::abs(lambda[2] - lambda[3]) < 1e-12 * std::abs(lambda[2]) &&
+               std::abs(lambda[2] + lambda[3] - 0.2 * 250.) < 1e-10,
+           "dependent prescribed rows: the minimum-norm split of the y impulse");
   }
   std::cout << (failures ? "FAILED" : "all checks passed") << std::endl;
   return failures ? 1 : 0;

@@ -1,5 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
+#include <deal.II/lac/lapack_full_matrix.h>
+
 #include <hati/contact/lcp_solver.h>
 
 #include <algorithm>
@@ -192,6 +194,35 @@ void solve_lcp(const FullMatrix<double> &W,
   }
 }
 
+void minimum_norm_solution(const FullMatrix<double> &W,
+                           const Vector<double> &q,
+                           Vector<double> &lambda)
+{
+  // W = U S V^T, lambda = -V S^+ U^T q, singular values below 1e-12 of the
+  // largest taken as zero
+  const unsigned int n = W.m();
+  LAPACKFullMatrix<double> svd(n, n);
+  svd = W;
+  svd.compute_svd();
+  const LAPACKFullMatrix<double> &U = svd.get_svd_u(), &Vt = svd.get_svd_vt();
+  const double cut = 1e-12 * svd.singular_value(0);
+  Vector<double> c(n);
+  for (unsigned int k = 0; k < n; ++k)
+  {
+    const double s = svd.singular_value(k);
+    if (!(s > cut))
+      continue;
+    double utq = 0.;
+    for (unsigned int i = 0; i < n; ++i)
+      utq += U(i, k) * q[i];
+    c[k] = utq / s;
+  }
+  lambda.reinit(n);
+  for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int k = 0; k < n; ++k)
+      lambda[i] -= Vt(k, i) * c[k];
+}
+
 void solve_equalities(const FullMatrix<double> &W,
                       const Vector<double> &q,
                       Vector<double> &lambda)
@@ -213,5 +244,14 @@ void solve_equalities(const FullMatrix<double> &W,
     lambda.reinit(q.size());
   W_inverse.vmult(lambda, q);
   lambda *= -1.;
+  // W is singular where rows of the set are dependent (a flange's lateral
+  // contact along a sticking wheel's tangent): Gauss-Jordan then gives no
+  // finite solution; the minimum-norm one (q lies in the range of W = L M^-1
+  // L^T, since q = L v) gives the same velocities
+  bool finite = true;
+  for (unsigned int i = 0; i < n; ++i)
+    finite = finite && std::isfinite(lambda[i]);
+  if (!finite)
+    minimum_norm_solution(W, q, lambda);
 }
 } // namespace hati

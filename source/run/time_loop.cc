@@ -475,6 +475,8 @@ void TimeLoop<Integrator>::add_coupling_summary(SummaryEntries &summary) const
          {"hati_discontinuous_macro_steps", integrator.discontinuous_macro_steps()},
          {"hati_largest_discontinuous_residual",
           integrator.largest_discontinuous_residual()},
+         {"hati_frozen_closure_macro_steps", integrator.frozen_closure_macro_steps()},
+         {"hati_largest_frozen_closure_gap", integrator.largest_frozen_closure_gap()},
          {"interface_iterations", integrator.interface_iterations()},
          {"ramp_patterns", integrator.ramp_patterns()}});
     std::cout << "  HATI wall time: explicit " << integrator.explicit_seconds()
@@ -497,6 +499,12 @@ void TimeLoop<Integrator>::add_coupling_summary(SummaryEntries &summary) const
            "includes it";
       problem.warn(m.str());
     }
+    if (integrator.frozen_closure_macro_steps() > 0)
+      std::cout << "  HATI: " << integrator.frozen_closure_macro_steps()
+                << " redone macro step(s) converged with the contacts' closures frozen "
+                   "at the best pass's (largest gap of a contact taken as closed or "
+                   "open against its sign: "
+                << integrator.largest_frozen_closure_gap() << " m)" << std::endl;
   }
   else
     (void)summary;

@@ -154,6 +154,9 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
       increment_sum[k] += du;
       increment_weighted[k] += weight * du;
     }
+    // the closures of the best pass (redo_micro_steps(), doc/theory.md 9.6)
+    if (!frozen_activation.empty())
+      explicit_view.freeze_activation(&frozen_activation[j - 1]);
     // (G2) Lambda_j = (1 - j/m) Lambda_n [+ (j/m) Lambda_{n+m}] over the step
     explicit_view.predict();
     if (record_damping)
@@ -202,6 +205,7 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
       after_micro_step(sample);
     }
   }
+  explicit_view.freeze_activation(nullptr);
 }
 
 void HATICoupling::step()
@@ -322,9 +326,12 @@ void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
   // before the last correction, halvings of it, plain corrections left
   double last_norm = std::numeric_limits<double>::max();
   unsigned int halvings = 0, plain_left = RampSuperposition::plain_corrections;
-  // the iterate with the smallest residual (RampSuperposition::accepted_discontinuity)
+  // the iterate with the smallest residual (RampSuperposition::accepted_discontinuity),
+  // whether its pass had the closures frozen, and its active sets
   double best_norm = std::numeric_limits<double>::max(), best_scale = 0.;
   Vector<double> best_lambda;
+  bool best_frozen = false;
+  std::vector<std::vector<bool>> best_activation;
   for (;; ++iterations)
   {
     explicit_integrator.restore(snapshot);
@@ -333,6 +340,12 @@ void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
     micro_steps(lambda_m, false);
     double scale = 0.;
     const double norm = interface->residual(increments.v_end, lambda_m, residual, scale);
+    AssertThrow(
+        std::isfinite(norm),
+        ExcMessage("HATI: the interface velocity continuity is not finite at t = " +
+                   std::to_string(explicit_integrator.time()) +
+                   " s (a correction of the interface forces gave NaN or "
+                   "infinity): report this run"));
     if (norm <= RampSuperposition::continuity_tolerance * std::max(scale, 1e-300) ||
         norm == 0.)
       break;
@@ -341,6 +354,28 @@ void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
       best_norm = norm;
       best_scale = scale;
       best_lambda = lambda_m;
+      best_frozen = !frozen_activation.empty();
+      if (!best_frozen)
+      {
+        best_activation.resize(n_recorded);
+        for (unsigned int j = 0; j < n_recorded; ++j)
+          best_activation[j] = contact_record[j].active;
+      }
+    }
+    if (iterations == RampSuperposition::safeguarded_corrections &&
+        frozen_activation.empty())
+    {
+      // stalled (a closure moves by a micro step between passes, items 5-6 of
+      // doc/theory.md 9.6): go on from the best iterate with its contacts'
+      // closures frozen, where the macro-end velocity is continuous in
+      // Lambda_{n+m}
+      frozen_activation = best_activation;
+      lambda_m = best_lambda;
+      B.reinit(0, 0);
+      plain_left = RampSuperposition::plain_corrections;
+      last_norm = std::numeric_limits<double>::max();
+      halvings = 0;
+      continue;
     }
     if (iterations >= RampSuperposition::max_corrections &&
         best_norm <= RampSuperposition::accepted_discontinuity * best_scale)
@@ -348,6 +383,8 @@ void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
       // no root: keep the iterate with the smallest residual (the macro-end
       // velocity jumps where a contact's closure moves by a micro step)
       lambda_m = best_lambda;
+      if (!best_frozen)
+        frozen_activation.clear();
       explicit_integrator.restore(snapshot);
       n_recorded = 0;
       micro_steps(lambda_m, false);
@@ -357,6 +394,7 @@ void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
     }
     if (iterations >= RampSuperposition::max_corrections)
     {
+      frozen_activation.clear();
       std::ostringstream message;
       message << "HATI: the interface velocity continuity with contacts within "
                  "reach of the interface did not converge in "
@@ -394,11 +432,30 @@ void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
     last_norm = norm;
     lambda_m += step;
   }
+  if (!frozen_activation.empty())
+    frozen_closures();
   max_iterations = std::max(max_iterations, iterations + 1);
   n_redo_passes += iterations + 1;
   if (after_micro_step)
     for (unsigned int j = 0; j < n_recorded; ++j)
       after_micro_step(contact_record[j]);
+}
+
+void HATICoupling::frozen_closures()
+{
+  // the kept pass ran with the closures frozen: how far its active sets are
+  // from the gaps' (a contact taken as closed at a positive gap, or left open
+  // at a negative one)
+  ++n_frozen;
+  const auto &contacts = decomposition.parts[0].system.contacts;
+  for (unsigned int j = 0; j < n_recorded; ++j)
+  {
+    const ContactSample &s = contact_record[j];
+    for (unsigned int k = 0; k < s.active.size() && k < s.gaps.size(); ++k)
+      if (!contacts[k].bilateral && s.active[k] != (s.gaps[k] <= 0.))
+        largest_frozen_gap = std::max(largest_frozen_gap, std::abs(s.gaps[k]));
+  }
+  frozen_activation.clear();
 }
 
 void HATICoupling::take_sample(ContactSample &s) const

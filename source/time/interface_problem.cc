@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hati
 {
@@ -156,7 +157,8 @@ double InterfaceProblem::residual(const Vector<double> &v_end,
   for (unsigned int k = 0; k < size(); ++k)
   {
     r[k] = -(v_end[k] + free_jump[k] + implicit_part[k]);
-    norm = std::max(norm, std::abs(r[k]));
+    norm = std::isfinite(r[k]) ? std::max(norm, std::abs(r[k]))
+                               : std::numeric_limits<double>::quiet_NaN();
     scale = std::max({scale, std::abs(v_end[k]), std::abs(free_jump[k])});
   }
   return norm;

@@ -94,7 +94,7 @@ void UnilateralContacts::apply_impulses(const Vector<double> &U,
   if (frictional_contacts.any())
     frictional_contacts.begin_step(v_before);
 
-  // (A4) active set from the position-level gap (or the prescribed one),
+  // (A4) active set from the position-level gap (or the prescribed or frozen one),
   // round-off gaps closed (closed_gap_tolerance; held_gap_tolerance for a
   // contact in the previous step's set)
   active_list.clear();
@@ -103,8 +103,9 @@ void UnilateralContacts::apply_impulses(const Vector<double> &U,
     const auto &c = contacts[k];
     gap[k] = c.initial_gap + c.apply(U);
     const double tolerance = was_closed[k] ? held_gap_tolerance : closed_gap_tolerance;
-    is_active[k] =
-        c.bilateral || (prescribed ? bool((*prescribed)[k]) : (gap[k] <= tolerance));
+    is_active[k] = c.bilateral || (prescribed ? bool((*prescribed)[k])
+                                   : frozen   ? bool((*frozen)[k])
+                                              : (gap[k] <= tolerance));
     was_closed[k] = is_active[k];
     lambda[k] = 0.;
     if (is_active[k])

@@ -49,8 +49,18 @@ void solve_lcp(const FullMatrix<double> &W,
  * The impulses of a prescribed active set, every row an equality:
  * `W lambda = -q` (W inverted by Gauss-Jordan), into @p lambda (resized to
  * the size of @p q). Used where a step must repeat a known active set (the
- * coupling's prescribed passes, A5, A9).
+ * coupling's prescribed passes, A5, A9). Where W is singular (dependent
+ * rows: a flange's lateral contact along a sticking wheel's tangent), the
+ * minimum-norm solution (minimum_norm_solution()).
  */
+/**
+ * The minimum-norm solution of `W lambda = -q` for a symmetric positive
+ * semi-definite @p W (by its singular value decomposition), into @p lambda.
+ */
+void minimum_norm_solution(const FullMatrix<double> &W,
+                           const Vector<double> &q,
+                           Vector<double> &lambda);
+
 void solve_equalities(const FullMatrix<double> &W,
                       const Vector<double> &q,
                       Vector<double> &lambda);

@@ -397,6 +397,18 @@ public:
     integrator->contacts->prescribe_active_set(pattern, sliding);
   }
 
+  /**
+   * With a non-null @p pattern (one flag per contact), the next steps take
+   * the flagged contacts as active and the others as open whatever their
+   * gaps, and solve (A5) with its sign conditions and friction as usual:
+   * the coupling's corrections with the contacts' closures frozen
+   * (HATICoupling, doc/theory.md 9.6). nullptr restores (A4).
+   */
+  void freeze_activation(const std::vector<bool> *pattern)
+  {
+    integrator->contacts->freeze_activation(pattern);
+  }
+
   /** @name What the superposition (G3') adds to the integrator's record */
   /** @{ */
   /** Set the gap (m) and impulse (N s) of contact @p k. */

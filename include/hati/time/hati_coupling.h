@@ -204,6 +204,15 @@ public:
    */
   unsigned long discontinuous_macro_steps() const { return n_discontinuous; }
   double largest_discontinuous_residual() const { return largest_discontinuity; }
+  /**
+   * Redone macro steps whose corrections stalled and converged with the
+   * contacts' closures frozen at the best pass's (doc/theory.md 9.6 item 6),
+   * and the largest gap (m) of a contact those passes took as closed while
+   * open, or as open while closed (the closure's error: at most one micro
+   * step's approach).
+   */
+  unsigned long frozen_closure_macro_steps() const { return n_frozen; }
+  double largest_frozen_closure_gap() const { return largest_frozen_gap; }
   /** Active sets of the contacts within reach whose ramp response was computed. */
   unsigned long ramp_patterns() const { return superposition->ramp_patterns(); }
 
@@ -258,6 +267,11 @@ private:
                     Vector<double> &step,
                     const Vector<double> &last_residual,
                     const Vector<double> &residual) const;
+  /**
+   * After a redone macro step kept a pass with frozen closures: count it,
+   * measure its closures' gaps, unfreeze.
+   */
+  void frozen_closures();
   /** Fill @p sample from the explicit integrator. */
   void take_sample(ContactSample &sample) const;
   /**
@@ -310,6 +324,14 @@ private:
   unsigned long n_halvings = 0;
   unsigned long n_discontinuous = 0;
   double largest_discontinuity = 0.;
+  unsigned long n_frozen = 0;
+  double largest_frozen_gap = 0.;
+  /**
+   * The active set of every micro step taken from the best pass while
+   * redo_micro_steps() corrects with the closures frozen (empty: from the
+   * gaps, A4).
+   */
+  std::vector<std::vector<bool>> frozen_activation;
   double seconds[3] = {0., 0., 0.};
   double setup = 0.;
   mutable Vector<double> global_U, global_V, expanded_U, expanded_V;

@@ -116,7 +116,9 @@ public:
    * secant update starts again from H^-1 (HATICoupling::redo_micro_steps();
    * doc/theory.md 9.6): a contact that switches between passes made the
    * secant corrections cycle. Macro steps that converge before it are
-   * computed as without it.
+   * computed as without it. At this correction a macro step that has not
+   * converged also goes on from its best iterate with the contacts'
+   * activations frozen at that iterate's (doc/theory.md 9.6 item 6).
    */
   static constexpr unsigned int safeguarded_corrections = 25;
   /** Redone macro steps: halvings of one correction (see above). */

@@ -136,6 +136,13 @@ public:
     prescribed = pattern;
     prescribed_sliding = sliding;
   }
+  /**
+   * With a non-null @p pattern (one flag per contact), the flagged contacts
+   * are active and the others not, whatever their gaps; (A5) is solved as
+   * usual on that set (CDLagrange::CouplingView::freeze_activation()).
+   * prescribe_active_set() takes precedence.
+   */
+  void freeze_activation(const std::vector<bool> *pattern) { frozen = pattern; }
   /** Set the gap (m) and impulse (N s) of contact @p k (the superposition, G3'). */
   void set_state(const unsigned int k, const double gap_k, const double impulse)
   {
@@ -168,6 +175,8 @@ private:
   std::vector<std::vector<unsigned int>> coupled_with;
   /** Active set imposed by prescribe_active_set() (nullptr: from the gaps). */
   const std::vector<bool> *prescribed = nullptr;
+  /** Active set imposed by freeze_activation() (nullptr: from the gaps). */
+  const std::vector<bool> *frozen = nullptr;
   /**
    * With a prescribed active set: the frictional contacts taken as sliding
    * (their tangent rows left out, FrictionalContacts::solve()), or nullptr.
