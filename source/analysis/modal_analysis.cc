@@ -43,7 +43,9 @@
 
 namespace hati
 {
-namespace
+// named, not anonymous: ModalProblem::Data (declared in the header) holds
+// ModalMatrices and ShiftedInverse (-Wsubobject-linkage)
+namespace modal_internal
 {
 /**
  * The shift-invert operator (K - sigma M)^-1 of ARPACK's mode 3: one
@@ -389,7 +391,8 @@ void normalise_and_check(const unsigned int k,
     AssertThrow(false, ExcMessage(message.str()));
   }
 }
-} // namespace
+} // namespace modal_internal
+using namespace modal_internal;
 
 /**
  * The eigenproblem on the free DoFs: K and M, and with closed contacts or
