@@ -229,17 +229,17 @@ void DecompositionParameters::parse_parameters(ParameterHandler &prm)
                          "Hz (the fixed-interface modes kept), not 0"));
   reduction_maximum_modes = prm.get_integer("Reduction maximum modes");
   const std::string ratio = Utilities::trim(prm.get("Reduction modal damping ratio"));
-  reduction_modal_damping_ratio = -1.;
+  reduction_modal_damping_ratio.reset();
   if (!ratio.empty())
   {
     char *end = nullptr;
-    reduction_modal_damping_ratio = std::strtod(ratio.c_str(), &end);
-    AssertThrow(*end == '\0' && reduction_modal_damping_ratio >= 0. &&
-                    reduction_modal_damping_ratio < 1.,
+    const double value = std::strtod(ratio.c_str(), &end);
+    AssertThrow(*end == '\0' && value >= 0. && value < 1.,
                 ExcMessage("Model/Decomposition/Reduction modal damping ratio: '" +
                            ratio +
                            "' is not a damping ratio (a number >= 0 and < 1, e.g. "
                            "0.02), or leave it empty for the run's damping"));
+    reduction_modal_damping_ratio = value;
   }
 }
 

@@ -127,18 +127,19 @@ void Problem::reduce_implicit_part()
          "unreduced implicit part failed (" +
          one_line_message(e) + "); the run goes on without it");
   }
-  const double ratio = decomposition_parameters.reduction_modal_damping_ratio;
-  if (ratio >= 0.)
+  const std::optional<double> ratio =
+      decomposition_parameters.reduction_modal_damping_ratio;
+  if (ratio)
   {
-    reduced->set_modal_damping(ratio);
-    out << "  reduced part damped modally: ratio " << ratio
+    reduced->set_modal_damping(*ratio);
+    out << "  reduced part damped modally: ratio " << *ratio
         << " in each of its modes (Reduction modal damping ratio; the run's damping "
            "acts on the rest)"
         << std::endl;
   }
-  entry.set("modal_damping_ratio", ratio >= 0. ? SummaryValue(ratio) : SummaryValue());
+  entry.set("modal_damping_ratio", ratio ? SummaryValue(*ratio) : SummaryValue());
   initial_state_summary.emplace_back("reduction", entry);
-  if (ratio < 0. && damping.frequency_range() &&
+  if (!ratio && damping.frequency_range() &&
       settings.cutoff_frequency < cutoff_over_damping_band * damping.upper_frequency)
   {
     std::ostringstream w;

@@ -12,6 +12,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -91,9 +92,9 @@ struct DecompositionParameters
   unsigned int reduction_maximum_modes = 500;
   /**
    * Reduction modal damping ratio (-): every mode of the reduced part gets
-   * it (doc/theory.md 12.3); negative: the run's damping.
+   * it (doc/theory.md 12.3); empty: the run's damping.
    */
-  double reduction_modal_damping_ratio = -1.;
+  std::optional<double> reduction_modal_damping_ratio;
 };
 
 /** A DoF vector to write, with its name. */
