@@ -341,6 +341,22 @@ Vector<double> to_local(const Vector<double> &global12, const Tensor<2, 3> &R)
   return rotate(global12, R, false);
 }
 
+void to_local(const Vector<double> &global12,
+              const Tensor<2, 3> &R,
+              Vector<double> &local12)
+{
+  AssertThrow(global12.size() == 12 && local12.size() == 12,
+              ExcMessage("to_local: the vectors must have 12 entries."));
+  // T = diag(R, R, R, R) in a matrix of this thread, the product as
+  // transformation(R).vmult() forms it
+  thread_local FullMatrix<double> T(12, 12);
+  for (unsigned int b = 0; b < 4; ++b)
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = 0; j < 3; ++j)
+        T(3 * b + i, 3 * b + j) = R[i][j];
+  T.vmult(local12, global12);
+}
+
 std::array<double, 12> section_forces(const Vector<double> &local_end_forces)
 {
   AssertThrow(local_end_forces.size() == 12,

@@ -11,13 +11,17 @@ std::array<double, 12> frame_cell_section_forces(const FrameCell &cell,
                                                  const Vector<double> &U,
                                                  const Tensor<1, 3> &gravity)
 {
-  Vector<double> ug(12), f(12), span(12), r(12);
+  // work vectors of this thread: every output row calls this for every
+  // element (allocating them cost a third of the crane's output time)
+  thread_local Vector<double> ug(12), f(12), span(12), r(12), local(12);
   for (unsigned int i = 0; i < 12; ++i)
     ug[i] = U[cell.dofs[i]];
-  cell.stiffness.vmult(f, to_local(ug, cell.rotation));
+  to_local(ug, cell.rotation, local);
+  cell.stiffness.vmult(f, local);
   // end forces f = k u - F_gravity, F_gravity = m r g in local axes: the
   // element's own weight is a span load (fixed-end forces)
   const Tensor<1, 3> g = cell.rotation * gravity;
+  r = 0.;
   for (unsigned int d = 0; d < 3; ++d)
     r[d] = r[6 + d] = g[d];
   cell.mass.vmult(span, r);

@@ -190,6 +190,14 @@ Vector<double> to_global(const Vector<double> &local12, const Tensor<2, 3> &R);
 Vector<double> to_local(const Vector<double> &global12, const Tensor<2, 3> &R);
 
 /**
+ * The same into @p local12 (of size 12), without allocating: the output
+ * rows' section forces call it for every element.
+ */
+void to_local(const Vector<double> &global12,
+              const Tensor<2, 3> &R,
+              Vector<double> &local12);
+
+/**
  * Internal forces (stress resultants) at both ends of an element without span
  * loads, from the local end displacements u (12) and the local stiffness k:
  * entries 0..5 are (N, Vy, Vz, T, My, Mz) at end 1, equal to -(k u)[0..5],
