@@ -139,12 +139,35 @@ void CDLagrange::build_stiffness_operator()
   // dt M^-1 K in padded rows of a fixed width (ELLPACK): rows of fixed DoFs
   // are empty, padding entries are zeros pointing at the row itself
   row_width = 0;
+  // empty rows for the CSR kernel (row_width = 0) unless filled below
+  row_start.assign(n + 1, 0);
   if (system.has_stiffness())
   {
     for (unsigned int i = 0; i < n; ++i)
       if (!system.fixed[i])
         row_width = std::max<unsigned int>(row_width, system.stiffness.get_row_length(i));
     row_width = padded_width(row_width, KernelWidths());
+    if (!has_compiled_width(row_width, KernelWidths()))
+    {
+      // wider than every compiled kernel (solids: rows of 81 to 375 entries
+      // in quadratic hexahedra): CSR, row_width = 0 selects its kernel
+      row_width = 0;
+      row_start.assign(n + 1, 0);
+      column.clear();
+      value.clear();
+      for (unsigned int i = 0; i < n; ++i)
+      {
+        if (!system.fixed[i])
+          for (auto it = system.stiffness.begin(i); it != system.stiffness.end(i); ++it)
+            if (it->value() != 0.)
+            {
+              column.push_back(it->column());
+              value.push_back(dt_minv[i] * it->value());
+            }
+        row_start[i + 1] = column.size();
+      }
+      return;
+    }
     column.assign(std::size_t(n) * row_width, 0);
     value.assign(std::size_t(n) * row_width, 0.);
     for (unsigned int i = 0; i < n; ++i)
@@ -280,6 +303,7 @@ void CDLagrange::free_velocity(const bool with_loads)
     a = step_force.data();
   }
   const unsigned int *const col = column.data();
+  const std::size_t *const start = row_start.data();
   const double *const val = value.data(), *const u = U.data(), *const v = V->data();
   double *const v_new = V_prev->data();
   if (branches.active())
@@ -290,8 +314,8 @@ void CDLagrange::free_velocity(const bool with_loads)
         row_width,
         [&](auto w)
         {
-          return branch_free_velocity_rows<decltype(w)::value>(row_width,
-                                                               n,
+          return branch_free_velocity_rows<decltype(w)::value>(n,
+                                                               start,
                                                                col,
                                                                val,
                                                                u,
@@ -308,7 +332,7 @@ void CDLagrange::free_velocity(const bool with_loads)
         row_width,
         [&](auto w)
         {
-          free_velocity_rows<decltype(w)::value>(row_width, n, col, val, u, v, a, v_new);
+          free_velocity_rows<decltype(w)::value>(n, start, col, val, u, v, a, v_new);
           return 0.;
         },
         KernelWidths());
@@ -323,8 +347,8 @@ void CDLagrange::free_velocity(const bool with_loads)
         row_width,
         [&](auto w)
         {
-          return damped_free_velocity_rows<decltype(w)::value>(row_width,
-                                                               n,
+          return damped_free_velocity_rows<decltype(w)::value>(n,
+                                                               start,
                                                                col,
                                                                val,
                                                                u,

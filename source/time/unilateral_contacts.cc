@@ -179,8 +179,26 @@ void UnilateralContacts::apply_impulses(const Vector<double> &U,
       q[a] = cluster_rows[a]->apply(v) +
              cluster_rows[a]->restitution * cluster_rows[a]->apply(v_before);
     }
-    FullMatrix<double> &W = lcp_W[m];
-    delassus(cluster_rows, minv, W);
+    bool constraints_only = true;
+    for (unsigned int a = 0; a < m && constraints_only; ++a)
+      constraints_only = cluster_rows[a]->constraint;
+    FullMatrix<double> *W_cluster = &lcp_W[m];
+    if (constraints_only)
+    {
+      if (constraint_blocks.size() != nc)
+        constraint_blocks.resize(nc);
+      ConstraintBlock &block = constraint_blocks[cluster[0]];
+      if (block.cluster != cluster || block.inverse_mass != &minv)
+      {
+        block.cluster = cluster;
+        block.inverse_mass = &minv;
+        delassus(cluster_rows, minv, block.W);
+      }
+      W_cluster = &block.W;
+    }
+    else
+      delassus(cluster_rows, minv, *W_cluster);
+    const FullMatrix<double> &W = *W_cluster;
     Vector<double> &l = lcp_lambda[m];
     if (prescribed)
       solve_equalities(W, q, l); // W lambda = -q on the prescribed active set

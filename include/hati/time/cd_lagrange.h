@@ -34,13 +34,13 @@ using namespace dealii;
  *
  * The stiffness is copied once into an operator scaled by `dt M^-1`, its
  * rows padded to a fixed width (ELLPACK) so that the row loop is unrolled at
- * compile time (bench/explicit_throughput.sh), so that the hot loop of a step is one pass
- * over U (A1) and one fused pass computing `V_free = V + dt M^-1 (F_ext - K U)` (A2-A3);
- * contacts (A4-A6) only touch the contact DoFs. With damping (A7) a second
- * kernel of the same shape computes
- * `V_free = c1 V + c2 dt M^-1 (F_ext - K U - a1 K V)` and the damping force,
- * `c1 = (1 - a0 dt/2) / (1 + a0 dt/2)`, `c2 = 1 / (1 + a0 dt/2)`; the
- * undamped loop is unchanged. With frequency-range damping (A8) the memory
+ * compile time (bench/explicit_throughput.sh; rows wider than every
+ * compiled width, those of solids, in CSR without padding), so that the hot loop of a
+ * step is one pass over U (A1) and one fused pass computing `V_free = V + dt M^-1 (F_ext
+ * - K U)` (A2-A3); contacts (A4-A6) only touch the contact DoFs. With damping (A7) a
+ * second kernel of the same shape computes `V_free = c1 V + c2 dt M^-1 (F_ext - K U - a1
+ * K V)` and the damping force, `c1 = (1 - a0 dt/2) / (1 + a0 dt/2)`, `c2 = 1 / (1 + a0
+ * dt/2)`; the undamped loop is unchanged. With frequency-range damping (A8) the memory
  * variables (MaxwellMemory) are updated after (A1) and a third kernel
  * computes `V_free = V + dt M^-1 (F_ext - K (U + S))`, still one pass over
  * the rows of K. The force laws of the system (ForceLaw, e.g. the ropes
@@ -189,7 +189,7 @@ private:
   void finish_step(const bool with_contacts = true);
   /** The stability check of the constructor (A7, A8): throws if dt > safety dt_crit. */
   void check_time_step(const double safety_factor);
-  /** dt M^-1 K in padded rows (ELLPACK), see `column`, `value`. */
+  /** dt M^-1 K in padded rows (ELLPACK) or CSR rows, see `column`, `value`. */
   void build_stiffness_operator();
   /** The constant force and the load shapes as this integrator applies them. */
   void build_loads();
@@ -222,8 +222,11 @@ private:
   /** The contact resolution's wall time (contact_seconds()). */
   WallClock contact_clock;
 
-  // scaled stiffness dt M^-1 K in rows padded to row_width (free DoFs only)
+  // scaled stiffness dt M^-1 K in rows padded to row_width (free DoFs
+  // only), or with row_width = 0 in CSR rows from row_start (rows wider than
+  // every compiled kernel: solids)
   unsigned int row_width = 0;
+  std::vector<std::size_t> row_start;
   std::vector<unsigned int> column;
   std::vector<double> value;
   // dt M^-1 F_constant and dt M^-1 for the time-dependent loads

@@ -6,7 +6,8 @@
 // the one with frequency-range damping (A8), on the stiffness scaled by
 // dt M^-1 in rows padded to a fixed width (ELLPACK), the width a
 // compile-time constant so that the row loop is unrolled
-// (bench/explicit_throughput.sh).
+// (bench/explicit_throughput.sh); rows wider than the widest compiled
+// kernel (solids) in CSR, without padding.
 
 #include <cstddef>
 #include <type_traits>
@@ -36,6 +37,13 @@ unsigned int padded_width(const unsigned int w, std::integer_sequence<unsigned i
   return w;
 }
 
+/** Whether @p w is one of the compiled widths. */
+template <unsigned int... W>
+bool has_compiled_width(const unsigned int w, std::integer_sequence<unsigned int, W...>)
+{
+  return ((w == W) || ...);
+}
+
 /**
  * `kernel(std::integral_constant<unsigned int, W>())` with the compiled
  * width W equal to @p width, or with W = 0 (the width known at run time
@@ -55,13 +63,15 @@ double with_kernel_width(const unsigned int width,
 }
 
 /**
- * Row @p i of a row-padded operator S of width @p w applied to two vectors:
- * `sx += (S x)_i`, `sy += (S y)_i`, the entries summed in row order (the
- * damped and the frequency-range kernels; inlined, so that a compile-time
- * width unrolls the loop).
+ * Row @p i of the operator S applied to two vectors: `sx += (S x)_i`,
+ * `sy += (S y)_i`, the entries summed in row order (the damped and the
+ * frequency-range kernels; inlined, so that a compile-time width unrolls
+ * the loop). W > 0: rows padded to W (ELLPACK); W = 0: row i holds the
+ * entries @p start[i] to @p start[i+1] (CSR, the wide rows of solids).
  */
-inline void two_row_products(const unsigned int w,
-                             const unsigned int i,
+template <unsigned int W>
+inline void two_row_products(const unsigned int i,
+                             const std::size_t *__restrict start,
                              const unsigned int *__restrict col,
                              const double *__restrict val,
                              const double *__restrict x,
@@ -69,22 +79,24 @@ inline void two_row_products(const unsigned int w,
                              double &sx,
                              double &sy)
 {
-  for (unsigned int k = 0; k < w; ++k)
+  const std::size_t begin = W > 0 ? std::size_t(i) * W : start[i],
+                    end = W > 0 ? begin + W : start[i + 1];
+  for (std::size_t ik = begin; ik < end; ++ik)
   {
-    const std::size_t ik = std::size_t(i) * w + k;
     sx += val[ik] * x[col[ik]];
     sy += val[ik] * y[col[ik]];
   }
 }
 
 /**
- * v_new = v + a - S u for a row-padded operator S of width W (A2-A3 with
- * S = dt M^-1 K, a = dt M^-1 F_ext); W = 0: the runtime @p width. W is a
- * compile-time constant so that the row loop is unrolled.
+ * v_new = v + a - S u for the operator S (A2-A3 with S = dt M^-1 K,
+ * a = dt M^-1 F_ext): W > 0, rows padded to W, a compile-time constant so
+ * that the row loop is unrolled; W = 0, rows from @p start (CSR, the wide
+ * rows of solids, whose lengths vary by a factor of 4 or more).
  */
 template <unsigned int W>
-void free_velocity_rows(const unsigned int width,
-                        const unsigned int n,
+void free_velocity_rows(const unsigned int n,
+                        const std::size_t *__restrict start,
                         const unsigned int *__restrict col,
                         const double *__restrict val,
                         const double *__restrict u,
@@ -92,27 +104,30 @@ void free_velocity_rows(const unsigned int width,
                         const double *__restrict a,
                         double *__restrict v_new)
 {
-  const unsigned int w = W > 0 ? W : width;
   for (unsigned int i = 0; i < n; ++i)
   {
     double ku = 0.;
-    for (unsigned int k = 0; k < w; ++k)
-      ku += val[std::size_t(i) * w + k] * u[col[std::size_t(i) * w + k]];
+    if constexpr (W > 0)
+      for (unsigned int k = 0; k < W; ++k)
+        ku += val[std::size_t(i) * W + k] * u[col[std::size_t(i) * W + k]];
+    else
+      for (std::size_t e = start[i]; e < start[i + 1]; ++e)
+        ku += val[e] * u[col[e]];
     v_new[i] = v[i] + a[i] - ku;
   }
 }
 
 /**
- * The damped free velocity (A7) for a row-padded operator S = dt M^-1 K of
- * width W (W = 0: the runtime @p width): with a = dt M^-1 F_ext,
+ * The damped free velocity (A7) for the operator S = dt M^-1 K (rows
+ * padded to W, or from @p start with W = 0): with a = dt M^-1 F_ext,
  * `v_new = c1 v + c2 (a - S u - a1 S v)`, and the damping force of the
  * update `d_new = dt M^-1 D = a - S u - (v_new - v)`, stored in place of
  * the previous one in @p d. Returns the work of the damping force on the
  * increment dt v, `1/2 sum_i m_i v_i (d_old,i + d_new,i)` (J).
  */
 template <unsigned int W>
-double damped_free_velocity_rows(const unsigned int width,
-                                 const unsigned int n,
+double damped_free_velocity_rows(const unsigned int n,
+                                 const std::size_t *__restrict start,
                                  const unsigned int *__restrict col,
                                  const double *__restrict val,
                                  const double *__restrict u,
@@ -126,12 +141,11 @@ double damped_free_velocity_rows(const unsigned int width,
                                  double *__restrict v_new,
                                  double *__restrict kv_out)
 {
-  const unsigned int w = W > 0 ? W : width;
   double work = 0.;
   for (unsigned int i = 0; i < n; ++i)
   {
     double ku = 0., kv = 0.;
-    two_row_products(w, i, col, val, u, v, ku, kv);
+    two_row_products<W>(i, start, col, val, u, v, ku, kv);
     const double g = a[i] - ku;
     const double vn = c1 * v[i] + c2 * (g - a1 * kv);
     const double dn = g - (vn - v[i]);
@@ -145,16 +159,16 @@ double damped_free_velocity_rows(const unsigned int width,
 }
 
 /**
- * The free velocity with frequency-range damping (A8) for a row-padded
- * operator S = dt M^-1 K of width W (W = 0: the runtime @p width): with
+ * The free velocity with frequency-range damping (A8) for the operator
+ * S = dt M^-1 K (rows padded to W, or from @p start with W = 0): with
  * a = dt M^-1 F_ext and the branches' sum @p s, `v_new = v + a - S (u + s)`;
  * the branch force of the update `d_new = S s` replaces the previous one in
  * @p d. Returns the work of the branch force on the increment dt v,
  * `1/2 sum_i m_i v_i (d_old,i + d_new,i)` (J).
  */
 template <unsigned int W>
-double branch_free_velocity_rows(const unsigned int width,
-                                 const unsigned int n,
+double branch_free_velocity_rows(const unsigned int n,
+                                 const std::size_t *__restrict start,
                                  const unsigned int *__restrict col,
                                  const double *__restrict val,
                                  const double *__restrict u,
@@ -165,12 +179,11 @@ double branch_free_velocity_rows(const unsigned int width,
                                  double *__restrict d,
                                  double *__restrict v_new)
 {
-  const unsigned int w = W > 0 ? W : width;
   double work = 0.;
   for (unsigned int i = 0; i < n; ++i)
   {
     double ku = 0., ks = 0.;
-    two_row_products(w, i, col, val, u, s, ku, ks);
+    two_row_products<W>(i, start, col, val, u, s, ku, ks);
     v_new[i] = v[i] + a[i] - ku - ks;
     work += m[i] * v[i] * (d[i] + ks);
     d[i] = ks;
