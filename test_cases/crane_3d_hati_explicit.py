@@ -10,12 +10,12 @@ the crane wheels on one rail after 2.9 ms. HATI (dt = 4e-5 s, DT = 2e-4 s)
 against CD-Lagrange at 2e-6 s over 3.6 ms.
 
 What makes it fit the suite: the fully explicit step on the default 6/13 mm
-plates is 3.3e-7 s at 28 ms a step (over an hour for the 0.05 s of
+plates is 3.3e-7 s at 10 ms a step (half an hour for the 0.05 s of
 bench/crane3d_hati_vs_explicit.sh, which gave 0.005 % at the trolley wheels
 and lift-offs 0.5 ms apart on the default girders). Here the girders' webs
 and flanges are 50 mm (dt_crit 2.42e-6 s; the plate elements still 11
 thicknesses in their plane) and the window is the first lift-off only:
-about 1.5 minutes (the explicit run about 70 s, HATI 20 s with its static
+about a minute (the explicit run about 30 s, HATI 20 s with its static
 state and factorisation).
 
 Checks:
