@@ -57,6 +57,31 @@ if m:
     ctx.check("printed damped dt_crit (s)", float(m.group(1)),
               2 / w_max * (np.sqrt(1 + xi * xi) - xi), rel=1e-5)
 
+# an unstable step of a run from its static state is refused before the
+# static solve (which takes minutes on large solids): nothing of the static
+# state printed, the same dt_crit as the integrator's check (reference: the
+# fully explicit crane file's own step is stable, its dt_crit is printed;
+# run from the source directory, where the file's accelerograms are)
+crane = ctx.prm("bridge_crane_full_explicit.prm")
+p = subprocess.run([ctx.hati, crane, "--set", "Time integration/Time step=1",
+                    "--set", "Output/Output directory=" + os.path.join(ctx.work, "crit_static")],
+                   capture_output=True, text=True, timeout=120, cwd=ctx.source)
+ctx.check_true("unstable step from the static state: refused before the static solve",
+               p.returncode != 0 and "stability limit" in p.stderr and
+               "static contact forces" not in p.stdout and "initial state" not in p.stdout,
+               p.stderr.strip())
+m = re.search(r"dt must be <= ([0-9.eE+-]+) s", p.stderr)
+p_ok = subprocess.run([ctx.hati, crane, "--set", "Time integration/End time=1e-4",
+                       "--set", "Output/Output interval=0",
+                       "--set", "Output/Output directory=" + os.path.join(ctx.work, "crit_ok")],
+                      capture_output=True, text=True, timeout=120, cwd=ctx.source)
+m_ok = re.search(r"CD-Lagrange: dt_crit = ([0-9.eE+-]+) s", p_ok.stdout)
+ctx.check_true("the stable run prints its dt_crit", p_ok.returncode == 0 and m_ok is not None,
+               p_ok.stderr.strip())
+if m and m_ok:
+    ctx.check("dt_crit refused early = the integrator's (s)", float(m.group(1)),
+              float(m_ok.group(1)), rel=1e-5)
+
 # a UTF-8 byte-order mark at the start of a .prm is accepted
 with open(os.path.join(ctx.source, "parameter_files", "bouncing_ball.prm"), "rb") as f:
     text = f.read()

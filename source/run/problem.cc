@@ -12,6 +12,7 @@
 #include <hati/run/problem.h>
 #include <hati/run/run_tools.h>
 #include <hati/run/suite_plan.h>
+#include <hati/time/cd_lagrange.h>
 #include <hati/time/damping.h>
 
 #include <algorithm>
@@ -173,7 +174,10 @@ void Problem::prepare_transient()
   if (time_parameters.method == "HATI")
     decompose(); // the subdomains' initial state is copied below
   if (analysis_parameters.initial_state == "static")
+  {
+    check_explicit_step();
     set_static_initial_state();
+  }
   if (decomposition) // a tied node may be free in a subdomain
     model->complete_solution(system.initial_displacement);
   if (decomposition)
@@ -213,6 +217,25 @@ void Problem::prepare_transient()
   add_damping_summary();
   if (decomposition && decomposition_parameters.implicit_reduction == "Craig-Bampton")
     reduce_implicit_part();
+}
+
+void Problem::check_explicit_step() const
+{
+  // an unstable explicit step refused before the static solve, which takes
+  // minutes on large solids; the integrator checks it again with the run's
+  // final damping (a default Rayleigh damping is added after the static
+  // state and can only lower dt_crit)
+  const DiscreteSystem *explicit_part =
+      time_parameters.method == "CD-Lagrange" ? &system
+      : time_parameters.method == "HATI" && decomposition && !decomposition->parts.empty()
+          ? &decomposition->parts[0].system
+          : nullptr;
+  if (explicit_part != nullptr)
+    CDLagrange::stability_limit(*explicit_part,
+                                time_parameters.time_step,
+                                time_parameters.safety_factor,
+                                damping.rayleigh,
+                                damping.branches);
 }
 
 void Problem::check_spectrum_request() const

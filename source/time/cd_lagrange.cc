@@ -75,6 +75,33 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
 
 void CDLagrange::check_time_step(const double safety_factor)
 {
+  dt_crit = stability_limit(
+      system, laws, dt, safety_factor, a1, branches.active(), branches.alpha_sum());
+}
+
+double CDLagrange::stability_limit(const DiscreteSystem &system,
+                                   const double dt,
+                                   const double safety_factor,
+                                   const RayleighDamping &damping,
+                                   const MaxwellBranches &branches)
+{
+  return stability_limit(system,
+                         make_force_laws(system),
+                         dt,
+                         safety_factor,
+                         damping.a1,
+                         !branches.alpha.empty(),
+                         branches.alpha_sum());
+}
+
+double CDLagrange::stability_limit(const DiscreteSystem &system,
+                                   const std::vector<std::unique_ptr<ForceLaw>> &laws,
+                                   const double dt,
+                                   const double safety_factor,
+                                   const double a1,
+                                   const bool with_branches,
+                                   const double alpha_sum)
+{
   // Stability (algorithms.md section 1, A7): dt <= safety * dt_crit with
   // dt_crit = (2/omega_max) (sqrt(1 + xi^2) - xi), xi = a1 omega_max / 2,
   // written 2 / (omega_max (sqrt(1 + xi^2) + xi)) to avoid the cancellation.
@@ -91,10 +118,9 @@ void CDLagrange::check_time_step(const double safety_factor)
   if (law_omega_squared > 0.)
     omega_max = std::sqrt(omega_max * omega_max + law_omega_squared);
   const double xi = 0.5 * a1 * omega_max;
-  const double alpha_sum = branches.alpha_sum();
-  dt_crit = omega_max > 0. ? 2. / (omega_max * (std::sqrt(1. + xi * xi) + xi))
-                           : std::numeric_limits<double>::infinity();
-  if (branches.active())
+  double dt_crit = omega_max > 0. ? 2. / (omega_max * (std::sqrt(1. + xi * xi) + xi))
+                                  : std::numeric_limits<double>::infinity();
+  if (with_branches)
     dt_crit = omega_max > 0. ? 2. / omega_max / std::sqrt(1. + alpha_sum)
                              : std::numeric_limits<double>::infinity();
   if (dt > safety_factor * dt_crit)
@@ -103,7 +129,7 @@ void CDLagrange::check_time_step(const double safety_factor)
     s.precision(6);
     s << "the time step dt = " << dt << " s is above the stability limit of the "
       << "explicit scheme";
-    if (branches.active())
+    if (with_branches)
       s << " with frequency-range damping, sum alpha = " << alpha_sum
         << ": dt_crit = (2/omega_max)/sqrt(1 + sum alpha) = " << dt_crit
         << " s, omega_max = " << omega_max << " rad/s";
@@ -131,6 +157,7 @@ void CDLagrange::check_time_step(const double safety_factor)
     s << ".";
     AssertThrow(false, ExcMessage(s.str()));
   }
+  return dt_crit;
 }
 
 void CDLagrange::build_stiffness_operator()

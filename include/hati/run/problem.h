@@ -162,6 +162,11 @@ private:
    * Refuse an Output/Spectra request that names no monitor point or whose
    * history rows are too far apart (ResponseSpectra::check_request()).
    */
+  /**
+   * Refuse an unstable explicit step (CD-Lagrange, HATI's explicit part)
+   * before the static initial state (CDLagrange::stability_limit()).
+   */
+  void check_explicit_step() const;
   void check_spectrum_request() const;
   /** The static equilibrium under the constant loads as the initial state. */
   void set_static_initial_state();

@@ -120,6 +120,17 @@ public:
    * (A8); +infinity without stiffness.
    */
   double critical_time_step() const { return dt_crit; }
+  /**
+   * The stability check of the constructor without building the integrator
+   * (A7, A8): `dt_crit` (s) of @p system with this damping; throws the
+   * constructor's message if `dt > safety_factor dt_crit`. A run checks its
+   * step with it before a long static solve.
+   */
+  static double stability_limit(const DiscreteSystem &system,
+                                const double dt,
+                                const double safety_factor,
+                                const RayleighDamping &damping = RayleighDamping(),
+                                const MaxwellBranches &branches = MaxwellBranches());
   double time_step() const { return dt; }
   double time() const { return t; }
   unsigned long step_number() const { return n_steps; }
@@ -189,6 +200,17 @@ private:
   void finish_step(const bool with_contacts = true);
   /** The stability check of the constructor (A7, A8): throws if dt > safety dt_crit. */
   void check_time_step(const double safety_factor);
+  /**
+   * stability_limit() with the laws made and the damping reduced to a1 and
+   * the branches (whether any, sum alpha).
+   */
+  static double stability_limit(const DiscreteSystem &system,
+                                const std::vector<std::unique_ptr<ForceLaw>> &laws,
+                                const double dt,
+                                const double safety_factor,
+                                const double a1,
+                                const bool with_branches,
+                                const double alpha_sum);
   /** dt M^-1 K in padded rows (ELLPACK) or CSR rows, see `column`, `value`. */
   void build_stiffness_operator();
   /** The constant force and the load shapes as this integrator applies them. */
