@@ -64,7 +64,8 @@ def read_csv(path):
     return np.atleast_1d(np.genfromtxt(path, delimiter=",", names=True, dtype=None, encoding=None))
 
 
-TIMING_KEYS = ("wall_time", "stepping_wall_time", "ns_per_dof_per_step", "factorization_time",
+TIMING_KEYS = ("wall_time", "stepping_wall_time", "setup_wall_time", "static_state_wall_time",
+               "ns_per_dof_per_step", "factorization_time",
                "wall_time_explicit", "wall_time_implicit", "wall_time_interface",
                "wall_time_setup")
 

@@ -16,6 +16,7 @@
 #include <hati/time/damping.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <iomanip>
@@ -176,7 +177,11 @@ void Problem::prepare_transient()
   if (analysis_parameters.initial_state == "static")
   {
     check_explicit_step();
+    const auto start = std::chrono::steady_clock::now();
     set_static_initial_state();
+    initial_state_summary.emplace_back(
+        "static_state_wall_time",
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   if (decomposition) // a tied node may be free in a subdomain
     model->complete_solution(system.initial_displacement);
