@@ -501,9 +501,9 @@ void TimeLoop<Integrator>::add_coupling_summary(SummaryEntries &summary) const
     }
     if (integrator.frozen_closure_macro_steps() > 0)
       std::cout << "  HATI: " << integrator.frozen_closure_macro_steps()
-                << " redone macro step(s) converged with the contacts' closures frozen "
-                   "at the best pass's (largest gap of a contact taken as closed or "
-                   "open against its sign: "
+                << " redone macro step(s) kept a pass with the contacts' closures "
+                   "frozen at the best pass's (largest gap of a contact taken as closed "
+                   "or open against its sign: "
                 << integrator.largest_frozen_closure_gap() << " m)" << std::endl;
   }
   else

@@ -205,8 +205,10 @@ public:
   unsigned long discontinuous_macro_steps() const { return n_discontinuous; }
   double largest_discontinuous_residual() const { return largest_discontinuity; }
   /**
-   * Redone macro steps whose corrections stalled and converged with the
-   * contacts' closures frozen at the best pass's (doc/theory.md 9.6 item 6),
+   * Redone macro steps whose corrections stalled and whose kept pass ran
+   * with the contacts' closures frozen at the best pass's (converged, or
+   * kept as the best iterate: then also a discontinuous macro step;
+   * doc/theory.md 9.6 item 6),
    * and the largest gap (m) of a contact those passes took as closed while
    * open, or as open while closed (the closure's error: at most one micro
    * step's approach).
