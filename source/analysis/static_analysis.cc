@@ -597,17 +597,18 @@ void solve_static(const DiscreteSystem &system,
   PlayProbe probe;
   HeldRows held = held_rows(system, contacts);
   check_rigid_translations(system, held.rows);
-  solve_held(StaticSolve{system,
-                         contacts,
-                         held,
-                         solver,
-                         package,
-                         contact_forces,
-                         tangent_forces,
-                         &pushed,
-                         &probe},
-             F,
-             U);
+  // the solve of the closed contacts and held rows; the rounds below update
+  // both in place
+  const StaticSolve solve{system,
+                          contacts,
+                          held,
+                          solver,
+                          package,
+                          contact_forces,
+                          tangent_forces,
+                          &pushed,
+                          &probe};
+  solve_held(solve, F, U);
   if (pushed.empty())
     return;
   // pairs pushed to a side of their play: free those whose release leaves
@@ -628,17 +629,7 @@ void solve_static(const DiscreteSystem &system,
     held = held_rows(system, contacts);
     try
     {
-      solve_held(StaticSolve{system,
-                             contacts,
-                             held,
-                             solver,
-                             package,
-                             contact_forces,
-                             tangent_forces,
-                             &pushed,
-                             &probe},
-                 F,
-                 U);
+      solve_held(solve, F, U);
     }
     catch (const ExceptionBase &)
     {
