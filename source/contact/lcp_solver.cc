@@ -198,29 +198,15 @@ void minimum_norm_solution(const FullMatrix<double> &W,
                            const Vector<double> &q,
                            Vector<double> &lambda)
 {
-  // W = U S V^T, lambda = -V S^+ U^T q, singular values below 1e-12 of the
-  // largest taken as zero
+  // lambda = -W^+ q, W^+ the pseudo-inverse by deal.II's SVD, singular
+  // values below 1e-12 of the largest taken as zero
   const unsigned int n = W.m();
-  LAPACKFullMatrix<double> svd(n, n);
-  svd = W;
-  svd.compute_svd();
-  const LAPACKFullMatrix<double> &U = svd.get_svd_u(), &Vt = svd.get_svd_vt();
-  const double cut = 1e-12 * svd.singular_value(0);
-  Vector<double> c(n);
-  for (unsigned int k = 0; k < n; ++k)
-  {
-    const double s = svd.singular_value(k);
-    if (!(s > cut))
-      continue;
-    double utq = 0.;
-    for (unsigned int i = 0; i < n; ++i)
-      utq += U(i, k) * q[i];
-    c[k] = utq / s;
-  }
+  LAPACKFullMatrix<double> inverse(n, n);
+  inverse = W;
+  inverse.compute_inverse_svd(1e-12);
   lambda.reinit(n);
-  for (unsigned int i = 0; i < n; ++i)
-    for (unsigned int k = 0; k < n; ++k)
-      lambda[i] -= Vt(k, i) * c[k];
+  inverse.vmult(lambda, q);
+  lambda *= -1.;
 }
 
 void solve_equalities(const FullMatrix<double> &W,

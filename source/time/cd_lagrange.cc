@@ -179,7 +179,6 @@ void CDLagrange::build_stiffness_operator()
       // wider than every compiled kernel (solids: rows of 81 to 375 entries
       // in quadratic hexahedra): CSR, row_width = 0 selects its kernel
       row_width = 0;
-      row_start.assign(n + 1, 0);
       column.clear();
       value.clear();
       for (unsigned int i = 0; i < n; ++i)

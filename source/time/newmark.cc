@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -84,12 +85,23 @@ void add_matrix(SparseMatrix<double> &dst,
     }
 }
 
-void check_finite(const Vector<double> &x, const std::string &what)
+/**
+ * Throw if @p x is not finite, naming @p what and, if given, the time of
+ * the step (the message is formed only then: every step calls this).
+ */
+void check_finite(const Vector<double> &x,
+                  const char *what,
+                  const double step_time = std::numeric_limits<double>::quiet_NaN())
 {
-  AssertThrow(std::isfinite(x.l2_norm()),
-              ExcMessage(what + ": the solution is not finite (NaN or infinity): the "
-                                "model is singular or ill-conditioned (check the "
-                                "supports, the masses and the time step)."));
+  if (std::isfinite(x.l2_norm()))
+    return;
+  std::ostringstream message;
+  message << what;
+  if (!std::isnan(step_time))
+    message << " (the step from t = " << step_time << " s)";
+  message << ": the solution is not finite (NaN or infinity): the model is singular or "
+             "ill-conditioned (check the supports, the masses and the time step).";
+  AssertThrow(false, ExcMessage(message.str()));
 }
 } // namespace
 
@@ -626,8 +638,6 @@ void Newmark::solve_with_effective_matrix(Vector<double> &x,
       }
     }
   }
-  std::ostringstream what;
-  what << "Newmark (the step from t = " << t << " s)";
-  check_finite(x, what.str());
+  check_finite(x, "Newmark", t);
 }
 } // namespace hati
