@@ -287,8 +287,11 @@ private:
   LawSample row_sample;
   /** HATI: the check of the interface work (G5). */
   InterfaceEnergyGuard interface_guard;
-  /** The laws' outputs and contacts.csv rows of every (micro) step. */
-  WallClock statistics_clock;
+  /**
+   * The laws' outputs and contacts.csv rows of every (micro) step, timed
+   * on one step in SampledWallClock::sample_every.
+   */
+  SampledWallClock statistics_clock;
 };
 
 template <class Integrator>
@@ -391,7 +394,7 @@ template <class Integrator> void TimeLoop<Integrator>::connect_micro_steps()
     integrator.after_micro_step =
         [this, every_contact_row](const HATICoupling::ContactSample &sample)
     {
-      const WallClock::Scope scope(statistics_clock);
+      const SampledWallClock::Scope scope(statistics_clock);
       writer.track_contacts(sample.gaps, sample.impulses);
       law_outputs.add_step(sample, integrator.micro_time_step());
       if (++micro_step % every_contact_row == 0)
@@ -424,7 +427,7 @@ template <class Integrator> void TimeLoop<Integrator>::run(TimerOutput &timer)
     if constexpr (explicit_scheme)
       if (!law_outputs.empty()) // e.g. the contacts' statistics
       {
-        const WallClock::Scope scope(statistics_clock);
+        const SampledWallClock::Scope scope(statistics_clock);
         const LawSample &sample =
             law_outputs.take_sample(integrator.time(), integrator.velocity());
         writer.track_contacts(sample.gaps, sample.impulses);
@@ -466,6 +469,8 @@ void TimeLoop<Integrator>::add_coupling_summary(SummaryEntries &summary) const
          {"wall_time_explicit", integrator.explicit_seconds()},
          {"wall_time_implicit", integrator.implicit_seconds()},
          {"wall_time_interface", integrator.interface_seconds()},
+         {"wall_time_superposition", integrator.superposition_seconds()},
+         {"wall_time_redo", integrator.redo_seconds()},
          {"wall_time_setup", integrator.setup_seconds()},
          {"interface_velocity_jump", integrator.interface_velocity_jump()},
          {"redone_macro_steps", integrator.redone_macro_steps()},

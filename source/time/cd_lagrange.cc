@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <sstream>
 #include <type_traits>
@@ -163,54 +164,48 @@ double CDLagrange::stability_limit(const DiscreteSystem &system,
 void CDLagrange::build_stiffness_operator()
 {
   const unsigned int n = system.n_dofs();
-  // dt M^-1 K in padded rows of a fixed width (ELLPACK): rows of fixed DoFs
-  // are empty, padding entries are zeros pointing at the row itself
-  row_width = 0;
-  // empty rows for the CSR kernel (row_width = 0) unless filled below
-  row_start.assign(n + 1, 0);
-  if (system.has_stiffness())
+  // dt M^-1 K, the nonzero entries of each free row in the stiffness's
+  // order; fixed DoFs have empty rows. Each row goes to the group of its
+  // padded width (padding entries are zeros pointing at the row itself),
+  // rows wider than every compiled kernel and empty rows to the CSR group
+  // (width 0). The groups are disjoint, so each row's result is the same
+  // whatever the group order.
+  row_groups.clear();
+  row_work.assign(n, 0.);
+  std::vector<unsigned int> row_width(n, 0);
+  for (unsigned int i = 0; i < n; ++i)
+    if (system.has_stiffness() && !system.fixed[i])
+      for (auto it = system.stiffness.begin(i); it != system.stiffness.end(i); ++it)
+        row_width[i] += it->value() != 0.;
+  std::map<unsigned int, RowGroup> groups;
+  for (unsigned int i = 0; i < n; ++i)
   {
-    for (unsigned int i = 0; i < n; ++i)
-      if (!system.fixed[i])
-        row_width = std::max<unsigned int>(row_width, system.stiffness.get_row_length(i));
-    row_width = padded_width(row_width, KernelWidths());
-    if (!has_compiled_width(row_width, KernelWidths()))
-    {
-      // wider than every compiled kernel (solids: rows of 81 to 375 entries
-      // in quadratic hexahedra): CSR, row_width = 0 selects its kernel
-      row_width = 0;
-      column.clear();
-      value.clear();
-      for (unsigned int i = 0; i < n; ++i)
+    unsigned int w = padded_width(row_width[i], KernelWidths());
+    if (!has_compiled_width(w, KernelWidths()))
+      w = 0;
+    RowGroup &g = groups[w];
+    g.width = w;
+    if (w == 0 && g.start.empty())
+      g.start.push_back(0);
+    g.rows.push_back(i);
+    if (row_width[i] > 0)
+      for (auto it = system.stiffness.begin(i); it != system.stiffness.end(i); ++it)
+        if (it->value() != 0.)
+        {
+          g.column.push_back(it->column());
+          g.value.push_back(dt_minv[i] * it->value());
+        }
+    if (w == 0)
+      g.start.push_back(g.column.size());
+    else
+      for (unsigned int k = row_width[i]; k < w; ++k)
       {
-        if (!system.fixed[i])
-          for (auto it = system.stiffness.begin(i); it != system.stiffness.end(i); ++it)
-            if (it->value() != 0.)
-            {
-              column.push_back(it->column());
-              value.push_back(dt_minv[i] * it->value());
-            }
-        row_start[i + 1] = column.size();
+        g.column.push_back(i);
+        g.value.push_back(0.);
       }
-      return;
-    }
-    column.assign(std::size_t(n) * row_width, 0);
-    value.assign(std::size_t(n) * row_width, 0.);
-    for (unsigned int i = 0; i < n; ++i)
-    {
-      unsigned int k = 0;
-      if (!system.fixed[i])
-        for (auto it = system.stiffness.begin(i); it != system.stiffness.end(i); ++it)
-          if (it->value() != 0.)
-          {
-            column[std::size_t(i) * row_width + k] = it->column();
-            value[std::size_t(i) * row_width + k] = dt_minv[i] * it->value();
-            ++k;
-          }
-      for (; k < row_width; ++k)
-        column[std::size_t(i) * row_width + k] = i;
-    }
   }
+  for (auto &[w, g] : groups)
+    row_groups.push_back(std::move(g));
 }
 
 void CDLagrange::build_loads()
@@ -328,67 +323,81 @@ void CDLagrange::free_velocity(const bool with_loads)
       law->step(U, *V, dt_minv, dt, step_force.data());
     a = step_force.data();
   }
-  const unsigned int *const col = column.data();
-  const std::size_t *const start = row_start.data();
-  const double *const val = value.data(), *const u = U.data(), *const v = V->data();
+  const double *const u = U.data(), *const v = V->data();
   double *const v_new = V_prev->data();
+  double *const work = row_work.data();
+  // each row's work summed in row order, as one pass over the rows would
+  const auto row_order_work = [&]()
+  {
+    double sum = 0.;
+    for (unsigned int i = 0; i < n; ++i)
+      sum += work[i];
+    return 0.5 * sum;
+  };
   if (branches.active())
+  {
     // (A8) V_free = V_{n+1/2} + dt M^-1 (F_ext(t_{n+1}) - K (U_{n+1} + S_{n+1}));
     // the branch force K S_{n+1} takes 1/2 dU . K (S_n + S_{n+1}) from the
     // structure in the step (E1 with the branches, doc/theory.md A8)
-    branches.add_work(with_kernel_width(
-        row_width,
-        [&](auto w)
-        {
-          return branch_free_velocity_rows<decltype(w)::value>(n,
-                                                               start,
-                                                               col,
-                                                               val,
-                                                               u,
-                                                               branches.sum().data(),
-                                                               v,
-                                                               a,
-                                                               mass.data(),
-                                                               d_prev.data(),
-                                                               v_new);
-        },
-        KernelWidths()));
+    for (const RowGroup &g : row_groups)
+      with_kernel_width(
+          g.width,
+          [&](auto w)
+          {
+            branch_free_velocity_rows<decltype(w)::value>(g,
+                                                          u,
+                                                          branches.sum().data(),
+                                                          v,
+                                                          a,
+                                                          mass.data(),
+                                                          d_prev.data(),
+                                                          v_new,
+                                                          work);
+            return 0.;
+          },
+          KernelWidths());
+    branches.add_work(row_order_work());
+  }
   else if (!damped)
-    with_kernel_width(
-        row_width,
-        [&](auto w)
-        {
-          free_velocity_rows<decltype(w)::value>(n, start, col, val, u, v, a, v_new);
-          return 0.;
-        },
-        KernelWidths());
+    for (const RowGroup &g : row_groups)
+      with_kernel_width(
+          g.width,
+          [&](auto w)
+          {
+            free_velocity_rows<decltype(w)::value>(g, u, v, a, v_new);
+            return 0.;
+          },
+          KernelWidths());
   else
+  {
     // (A7) (1 + a0 dt/2) V_free = (1 - a0 dt/2) V_{n+1/2}
     //        + dt M^-1 (F_ext(t_{n+1}) - K U_{n+1} - a1 K V_{n+1/2}),
     // damping force D_{n+1} = a0 M (V_{n+1/2} + V_free)/2 + a1 K V_{n+1/2};
     // its work on dU = dt V_{n+1/2} is 1/2 dU . (D_n + D_{n+1}) (the
     // time-dependent loads enter V_free scaled by c2 and the rest, (1 - c2)
     // of them, the damping force and its work)
-    dissipated += with_kernel_width(
-        row_width,
-        [&](auto w)
-        {
-          return damped_free_velocity_rows<decltype(w)::value>(n,
-                                                               start,
-                                                               col,
-                                                               val,
-                                                               u,
-                                                               v,
-                                                               a,
-                                                               mass.data(),
-                                                               c1,
-                                                               c2,
-                                                               a1,
-                                                               d_prev.data(),
-                                                               v_new,
-                                                               stiffness_velocity_out);
-        },
-        KernelWidths());
+    for (const RowGroup &g : row_groups)
+      with_kernel_width(
+          g.width,
+          [&](auto w)
+          {
+            damped_free_velocity_rows<decltype(w)::value>(g,
+                                                          u,
+                                                          v,
+                                                          a,
+                                                          mass.data(),
+                                                          c1,
+                                                          c2,
+                                                          a1,
+                                                          d_prev.data(),
+                                                          v_new,
+                                                          stiffness_velocity_out,
+                                                          work);
+            return 0.;
+          },
+          KernelWidths());
+    dissipated += row_order_work();
+  }
 }
 
 template <unsigned int L, bool Accumulate>
@@ -477,7 +486,7 @@ void CDLagrange::finish_step(const bool with_contacts)
   // (A4)-(A6) the impulses of the laws with rows (e.g. the contacts)
   if (with_contacts && !row_laws.empty())
   {
-    const WallClock::Scope scope(contact_clock);
+    const SampledWallClock::Scope scope(contact_clock);
     for (ForceLaw *law : row_laws)
       law->apply_impulses(U, *V_prev, minv, *V);
   }

@@ -256,11 +256,16 @@ void HATICoupling::step()
     if (after_micro_step)
       for (unsigned int j = 0; j < n_recorded; ++j)
         after_micro_step(contact_record[j]);
+    seconds[3] += seconds_since(start);
   }
   else
+  {
+    seconds[3] += seconds_since(start);
+    start = Clock::now();
     redo_micro_steps(ramp.H_inverse);
+    seconds[4] += seconds_since(start);
+  }
   record_contacts = false;
-  seconds[0] += seconds_since(start);
 
   // (G5) interface work of the explicit side: the trapezoid of each micro
   // step, sum_j 1/2 dU_j . C_E^T (Lambda_{j-1} + Lambda_j)

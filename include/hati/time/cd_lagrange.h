@@ -5,6 +5,7 @@
 
 #include <hati/base/wall_clock.h>
 #include <hati/model/discrete_system.h>
+#include <hati/time/cd_lagrange_kernels.h>
 #include <hati/time/energies.h>
 #include <hati/time/force_law.h>
 #include <hati/time/maxwell_memory.h>
@@ -136,7 +137,8 @@ public:
   unsigned long step_number() const { return n_steps; }
   /**
    * Wall time spent in the contact resolution (A4-A6) of every step so
-   * far (s), redone steps included.
+   * far (s), redone steps included: estimated from one step in
+   * SampledWallClock::sample_every.
    */
   double contact_seconds() const { return contact_clock.seconds(); }
 
@@ -211,7 +213,7 @@ private:
                                 const double a1,
                                 const bool with_branches,
                                 const double alpha_sum);
-  /** dt M^-1 K in padded rows (ELLPACK) or CSR rows, see `column`, `value`. */
+  /** dt M^-1 K in row_groups. */
   void build_stiffness_operator();
   /** The constant force and the load shapes as this integrator applies them. */
   void build_loads();
@@ -241,16 +243,17 @@ private:
   double dt_crit;
   double t = 0.;
   unsigned long n_steps = 0;
-  /** The contact resolution's wall time (contact_seconds()). */
-  WallClock contact_clock;
+  /** The contact resolution's wall time (contact_seconds(), sampled). */
+  SampledWallClock contact_clock;
 
-  // scaled stiffness dt M^-1 K in rows padded to row_width (free DoFs
-  // only), or with row_width = 0 in CSR rows from row_start (rows wider than
-  // every compiled kernel: solids)
-  unsigned int row_width = 0;
-  std::vector<std::size_t> row_start;
-  std::vector<unsigned int> column;
-  std::vector<double> value;
+  /**
+   * The scaled stiffness dt M^-1 K (free DoFs only), its rows grouped by
+   * padded width (sliced ELLPACK), rows wider than every compiled kernel
+   * (solids) and empty rows in one CSR group.
+   */
+  std::vector<cd_lagrange_kernels::RowGroup> row_groups;
+  /** Each row's damping or branch work of a step (summed in row order). */
+  std::vector<double> row_work;
   // dt M^-1 F_constant and dt M^-1 for the time-dependent loads
   /** External constant force with lumped-mass acceleration loads (N). */
   Vector<double> force;

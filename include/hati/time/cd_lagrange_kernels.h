@@ -4,14 +4,15 @@
 // The row kernels of CDLagrange (source/time/cd_lagrange.cc), internal to
 // it: the undamped free velocity (A2-A3), the Rayleigh-damped one (A7) and
 // the one with frequency-range damping (A8), on the stiffness scaled by
-// dt M^-1 in rows padded to a fixed width (ELLPACK), the width a
-// compile-time constant so that the row loop is unrolled
+// dt M^-1 in groups of rows padded to one width each (sliced ELLPACK), the
+// width a compile-time constant so that the row loop is unrolled
 // (bench/explicit_throughput.sh); rows wider than the widest compiled
 // kernel (solids) in CSR, without padding.
 
 #include <cstddef>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace hati
 {
@@ -63,14 +64,32 @@ double with_kernel_width(const unsigned int width,
 }
 
 /**
- * Row @p i of the operator S applied to two vectors: `sx += (S x)_i`,
- * `sy += (S y)_i`, the entries summed in row order (the damped and the
- * frequency-range kernels; inlined, so that a compile-time width unrolls
- * the loop). W > 0: rows padded to W (ELLPACK); W = 0: row i holds the
- * entries @p start[i] to @p start[i+1] (CSR, the wide rows of solids).
+ * The rows of the operator S = dt M^-1 K that share one padded width
+ * (sliced ELLPACK): a frame's rows hold 2 to 9 nonzero entries, and one
+ * width for all of them padded most rows to twice or three times their
+ * length (issue #28). Each group runs the kernel of its width.
+ */
+struct RowGroup
+{
+  /** The padded width (a compiled one), or 0: CSR rows from `start`. */
+  unsigned int width = 0;
+  /** The group's rows (DoF indices), ascending. */
+  std::vector<unsigned int> rows;
+  /** CSR (width 0): the entries of the group's row r are start[r] .. start[r + 1]. */
+  std::vector<std::size_t> start;
+  /** Columns and values, row r at r * width (padding: value 0, column the row). */
+  std::vector<unsigned int> column;
+  std::vector<double> value;
+};
+
+/**
+ * Row @p r of the group @p g applied to two vectors: `sx += (S x)_i`,
+ * `sy += (S y)_i` for its DoF i, the entries summed in row order (the
+ * damped and the frequency-range kernels; inlined, so that a compile-time
+ * width unrolls the loop). W > 0: rows padded to W (ELLPACK); W = 0: CSR.
  */
 template <unsigned int W>
-inline void two_row_products(const unsigned int i,
+inline void two_row_products(const std::size_t r,
                              const std::size_t *__restrict start,
                              const unsigned int *__restrict col,
                              const double *__restrict val,
@@ -79,8 +98,8 @@ inline void two_row_products(const unsigned int i,
                              double &sx,
                              double &sy)
 {
-  const std::size_t begin = W > 0 ? std::size_t(i) * W : start[i],
-                    end = W > 0 ? begin + W : start[i + 1];
+  const std::size_t begin = W > 0 ? r * W : start[r],
+                    end = W > 0 ? begin + W : start[r + 1];
   for (std::size_t ik = begin; ik < end; ++ik)
   {
     sx += val[ik] * x[col[ik]];
@@ -89,106 +108,110 @@ inline void two_row_products(const unsigned int i,
 }
 
 /**
- * v_new = v + a - S u for the operator S (A2-A3 with S = dt M^-1 K,
- * a = dt M^-1 F_ext): W > 0, rows padded to W, a compile-time constant so
- * that the row loop is unrolled; W = 0, rows from @p start (CSR, the wide
- * rows of solids, whose lengths vary by a factor of 4 or more).
+ * v_new = v + a - S u on the rows of the group @p g (A2-A3 with
+ * S = dt M^-1 K, a = dt M^-1 F_ext): W > 0, rows padded to W, a
+ * compile-time constant so that the row loop is unrolled; W = 0, CSR rows
+ * (the wide rows of solids, whose lengths vary by a factor of 4 or more,
+ * and the empty rows of fixed DoFs).
  */
 template <unsigned int W>
-void free_velocity_rows(const unsigned int n,
-                        const std::size_t *__restrict start,
-                        const unsigned int *__restrict col,
-                        const double *__restrict val,
+void free_velocity_rows(const RowGroup &g,
                         const double *__restrict u,
                         const double *__restrict v,
                         const double *__restrict a,
                         double *__restrict v_new)
 {
-  for (unsigned int i = 0; i < n; ++i)
+  const std::size_t n = g.rows.size();
+  const unsigned int *__restrict rows = g.rows.data();
+  const std::size_t *__restrict start = g.start.data();
+  const unsigned int *__restrict col = g.column.data();
+  const double *__restrict val = g.value.data();
+  for (std::size_t r = 0; r < n; ++r)
   {
     double ku = 0.;
     if constexpr (W > 0)
       for (unsigned int k = 0; k < W; ++k)
-        ku += val[std::size_t(i) * W + k] * u[col[std::size_t(i) * W + k]];
+        ku += val[r * W + k] * u[col[r * W + k]];
     else
-      for (std::size_t e = start[i]; e < start[i + 1]; ++e)
+      for (std::size_t e = start[r]; e < start[r + 1]; ++e)
         ku += val[e] * u[col[e]];
+    const unsigned int i = rows[r];
     v_new[i] = v[i] + a[i] - ku;
   }
 }
 
 /**
- * The damped free velocity (A7) for the operator S = dt M^-1 K (rows
- * padded to W, or from @p start with W = 0): with a = dt M^-1 F_ext,
+ * The damped free velocity (A7) on the rows of the group @p g (S = dt M^-1
+ * K, rows padded to W, or CSR with W = 0): with a = dt M^-1 F_ext,
  * `v_new = c1 v + c2 (a - S u - a1 S v)`, and the damping force of the
  * update `d_new = dt M^-1 D = a - S u - (v_new - v)`, stored in place of
- * the previous one in @p d. Returns the work of the damping force on the
- * increment dt v, `1/2 sum_i m_i v_i (d_old,i + d_new,i)` (J).
+ * the previous one in @p d. @p work receives each row's work of the
+ * damping force on the increment dt v, `m_i v_i (d_old,i + d_new,i)` (J,
+ * twice; summed in row order by the caller).
  */
 template <unsigned int W>
-double damped_free_velocity_rows(const unsigned int n,
-                                 const std::size_t *__restrict start,
-                                 const unsigned int *__restrict col,
-                                 const double *__restrict val,
-                                 const double *__restrict u,
-                                 const double *__restrict v,
-                                 const double *__restrict a,
-                                 const double *__restrict m,
-                                 const double c1,
-                                 const double c2,
-                                 const double a1,
-                                 double *__restrict d,
-                                 double *__restrict v_new,
-                                 double *__restrict kv_out)
+void damped_free_velocity_rows(const RowGroup &g,
+                               const double *__restrict u,
+                               const double *__restrict v,
+                               const double *__restrict a,
+                               const double *__restrict m,
+                               const double c1,
+                               const double c2,
+                               const double a1,
+                               double *__restrict d,
+                               double *__restrict v_new,
+                               double *__restrict kv_out,
+                               double *__restrict work)
 {
-  double work = 0.;
-  for (unsigned int i = 0; i < n; ++i)
+  const std::size_t n = g.rows.size();
+  const unsigned int *__restrict rows = g.rows.data();
+  for (std::size_t r = 0; r < n; ++r)
   {
     double ku = 0., kv = 0.;
-    two_row_products<W>(i, start, col, val, u, v, ku, kv);
-    const double g = a[i] - ku;
-    const double vn = c1 * v[i] + c2 * (g - a1 * kv);
-    const double dn = g - (vn - v[i]);
-    work += m[i] * v[i] * (d[i] + dn);
+    two_row_products<W>(r, g.start.data(), g.column.data(), g.value.data(), u, v, ku, kv);
+    const unsigned int i = rows[r];
+    const double gi = a[i] - ku;
+    const double vn = c1 * v[i] + c2 * (gi - a1 * kv);
+    const double dn = gi - (vn - v[i]);
+    work[i] = m[i] * v[i] * (d[i] + dn);
     d[i] = dn;
     v_new[i] = vn;
     if (kv_out != nullptr)
       kv_out[i] = kv;
   }
-  return 0.5 * work;
 }
 
 /**
- * The free velocity with frequency-range damping (A8) for the operator
- * S = dt M^-1 K (rows padded to W, or from @p start with W = 0): with
+ * The free velocity with frequency-range damping (A8) on the rows of the
+ * group @p g (S = dt M^-1 K, rows padded to W, or CSR with W = 0): with
  * a = dt M^-1 F_ext and the branches' sum @p s, `v_new = v + a - S (u + s)`;
  * the branch force of the update `d_new = S s` replaces the previous one in
- * @p d. Returns the work of the branch force on the increment dt v,
- * `1/2 sum_i m_i v_i (d_old,i + d_new,i)` (J).
+ * @p d. @p work receives each row's work of the branch force on the
+ * increment dt v, `m_i v_i (d_old,i + d_new,i)` (J, twice; summed in row
+ * order by the caller).
  */
 template <unsigned int W>
-double branch_free_velocity_rows(const unsigned int n,
-                                 const std::size_t *__restrict start,
-                                 const unsigned int *__restrict col,
-                                 const double *__restrict val,
-                                 const double *__restrict u,
-                                 const double *__restrict s,
-                                 const double *__restrict v,
-                                 const double *__restrict a,
-                                 const double *__restrict m,
-                                 double *__restrict d,
-                                 double *__restrict v_new)
+void branch_free_velocity_rows(const RowGroup &g,
+                               const double *__restrict u,
+                               const double *__restrict s,
+                               const double *__restrict v,
+                               const double *__restrict a,
+                               const double *__restrict m,
+                               double *__restrict d,
+                               double *__restrict v_new,
+                               double *__restrict work)
 {
-  double work = 0.;
-  for (unsigned int i = 0; i < n; ++i)
+  const std::size_t n = g.rows.size();
+  const unsigned int *__restrict rows = g.rows.data();
+  for (std::size_t r = 0; r < n; ++r)
   {
     double ku = 0., ks = 0.;
-    two_row_products<W>(i, start, col, val, u, s, ku, ks);
+    two_row_products<W>(r, g.start.data(), g.column.data(), g.value.data(), u, s, ku, ks);
+    const unsigned int i = rows[r];
     v_new[i] = v[i] + a[i] - ku - ks;
-    work += m[i] * v[i] * (d[i] + ks);
+    work[i] = m[i] * v[i] * (d[i] + ks);
     d[i] = ks;
   }
-  return 0.5 * work;
 }
 } // namespace cd_lagrange_kernels
 } // namespace hati

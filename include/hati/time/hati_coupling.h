@@ -218,10 +218,21 @@ public:
   /** Active sets of the contacts within reach whose ramp response was computed. */
   unsigned long ramp_patterns() const { return superposition->ramp_patterns(); }
 
-  /** Wall time of the explicit micro steps, the implicit steps, the interface (s). */
-  double explicit_seconds() const { return seconds[0]; }
+  /**
+   * Wall time of the explicit part (the first pass of every macro step,
+   * the superpositions and the redone passes), the implicit steps, the
+   * interface (s).
+   */
+  double explicit_seconds() const { return seconds[0] + seconds[3] + seconds[4]; }
   double implicit_seconds() const { return seconds[1]; }
   double interface_seconds() const { return seconds[2]; }
+  /**
+   * Within explicit_seconds(): the superpositions (G3': the checks and the
+   * products with the ramp responses, A7/A8 dissipation included) and the
+   * redone macro steps (their passes and corrections) (s).
+   */
+  double superposition_seconds() const { return seconds[3]; }
+  double redo_seconds() const { return seconds[4]; }
   /** Wall time of the explicit part's contact resolution (s), within explicit_seconds().
    */
   double contact_seconds() const { return explicit_integrator.contact_seconds(); }
@@ -334,7 +345,8 @@ private:
    * gaps, A4).
    */
   std::vector<std::vector<bool>> frozen_activation;
-  double seconds[3] = {0., 0., 0.};
+  /** Explicit first passes, implicit, interface, superposition, redo (s). */
+  double seconds[5] = {0., 0., 0., 0., 0.};
   double setup = 0.;
   mutable Vector<double> global_U, global_V, expanded_U, expanded_V;
   /** Implicit DoFs of set_history_dofs() and their rows of T. */
