@@ -49,6 +49,9 @@ OutputWriter::OutputWriter(RunDirectory &run,
     for (const auto &l : m.labels)
       history << ',' << m.name << ".v" << l;
   }
+  // the ropes' tensions (R1), N
+  for (const Rope &rope : system.ropes)
+    history << ',' << rope.name << ".tension";
   history << '\n';
 
   contacts.open(run.open("contacts.csv"));
@@ -95,6 +98,8 @@ void OutputWriter::write_history(const OutputState &s)
     for (unsigned int i = 0; i < m.dofs.size(); ++i)
       history << ',' << m.value(i, *s.velocity);
   }
+  for (const Rope &rope : system.ropes)
+    history << ',' << rope.tension(*s.displacement);
   history << '\n';
   if (section_forces.is_open())
   {

@@ -65,7 +65,8 @@ struct OutputState
 
 /**
  * Writes every output file of a run into its RunDirectory (doc/user_guide.md):
- * `history.csv` (monitor points), `contacts.csv` (one row per contact name
+ * `history.csv` (monitor points, then each rope's tension `<name>.tension`,
+ * N, R1), `contacts.csv` (one row per contact name
  * and output time: smallest gap, mean normal velocity, summed impulse, mean
  * force = impulse / duration (the summed static force in a static
  * analysis), number of active rows; with friction the tangential impulse,
