@@ -17,8 +17,15 @@
 // opposite to u_t on the cone's boundary; and on random clusters of three
 // coupled contacts (the all-sticking solution where admissible, the sweeps
 // otherwise), the law at every contact with the others' impulses.
+// Then a wheel joined to its axle by rigid links (true heights): the
+// frictionless bilateral link rows condensed out (condensed_cluster.h)
+// give the velocities of the plain sweeps over the whole cluster, the
+// links' relative velocities zero to round-off and the wheel's law on its
+// condensed problem, in one sweep; with a dependent link row (W_BB
+// singular) too.
 #include "test_tools.h"
 
+#include <hati/contact/condensed_cluster.h>
 #include <hati/contact/friction_solver.h>
 
 #include <cmath>
@@ -186,6 +193,144 @@ void coupled_clusters(std::mt19937 &gen)
         1e-8);
   check("coupled clusters, all sticking: largest |u| (m/s)", worst_stick, 0., 1e-12);
   expect(all_sticking > 50 && swept > 50, "coupled clusters: both paths taken");
+}
+
+/**
+ * A wheel contact point (DoFs 6-8) joined by rigid links to an axle node
+ * (translations 0-2, rotations 3-5) at the arm @p arm: three link rows
+ * `u_p - u_a - theta x arm = 0` (frictionless, bilateral; a fourth,
+ * dependent one if @p dependent), then the wheel's normal (z) and tangents
+ * (x, y) on the contact point, random lumped masses and velocities:
+ * W = L M^-1 L^T, q = L v. Condensed against the plain sweeps.
+ */
+void wheel_on_links(std::mt19937 &gen,
+                    const bool dependent,
+                    double &worst_velocity,
+                    double &worst_link,
+                    double &worst_law,
+                    unsigned int &max_sweeps,
+                    unsigned int &plain_sweeps_max)
+{
+  std::uniform_real_distribution<double> u(-1., 1.), pos(0.5, 2.);
+  const unsigned int n_dofs = 9, n_links = dependent ? 4 : 3, n = n_links + 3;
+  const double arm[3] = {0.3 * u(gen), 0.2 * u(gen), -0.5};
+  FullMatrix<double> L(n, n_dofs);
+  for (unsigned int d = 0; d < 3; ++d)
+  {
+    // u_p,d - u_a,d - (theta x arm)_d, (theta x arm) = (t1 a2 - t2 a1, ...)
+    L(d, 6 + d) = 1.;
+    L(d, d) = -1.;
+    const unsigned int e = (d + 1) % 3, f = (d + 2) % 3;
+    L(d, 3 + e) = -arm[f];
+    L(d, 3 + f) = arm[e];
+  }
+  if (dependent)
+    for (unsigned int j = 0; j < n_dofs; ++j)
+      L(3, j) = L(0, j) + 0.5 * L(1, j);
+  L(n_links, 8) = 1.;     // normal z
+  L(n_links + 1, 6) = 1.; // tangent x
+  L(n_links + 2, 7) = 1.; // tangent y
+  Vector<double> minv(n_dofs), v(n_dofs);
+  for (unsigned int j = 0; j < n_dofs; ++j)
+  {
+    minv[j] = 1. / pos(gen);
+    v[j] = u(gen);
+  }
+  v[8] -= 1.5; // the wheel mostly pushes into its rail
+  FullMatrix<double> W(n, n);
+  Vector<double> q(n);
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    for (unsigned int j = 0; j < n; ++j)
+      for (unsigned int k = 0; k < n_dofs; ++k)
+        W(i, j) += L(i, k) * minv[k] * L(j, k);
+    for (unsigned int k = 0; k < n_dofs; ++k)
+      q[i] += L(i, k) * v[k];
+  }
+  std::vector<unsigned int> first;
+  for (unsigned int k = 0; k <= n_links; ++k)
+    first.push_back(k);
+  first.push_back(n);
+  std::vector<double> mu(n_links, 0.);
+  mu.push_back(0.3);
+  std::vector<bool> bilateral(n_links, true);
+  bilateral.push_back(false);
+  Vector<double> r_c, r_p, u_c(n), u_p(n);
+  std::vector<FrictionState> s_c, s_p;
+  const FrictionSolverResult condensed =
+      solve_condensed_frictional_cluster({W, q, first, mu, bilateral}, r_c, s_c);
+  FrictionSolverControl tight;
+  tight.tolerance = 1e-14;
+  tight.max_sweeps = 100000;
+  const FrictionSolverResult plain =
+      solve_frictional_cluster({W, q, first, mu, bilateral}, r_p, s_p, tight);
+  W.vmult(u_c, r_c);
+  u_c += q;
+  W.vmult(u_p, r_p);
+  u_p += q;
+  const double scale = q.linfty_norm();
+  for (unsigned int i = 0; i < n; ++i)
+    worst_velocity = std::max(worst_velocity, std::abs(u_c[i] - u_p[i]) / scale);
+  for (unsigned int i = 0; i < n_links; ++i)
+    worst_link = std::max(worst_link, std::abs(u_c[i]) / scale);
+  // the wheel's law with the links' impulses as they are
+  std::vector<double> Wk(9);
+  double qk[3], rk[3];
+  for (unsigned int i = 0; i < 3; ++i)
+  {
+    rk[i] = r_c[n_links + i];
+    qk[i] = u_c[n_links + i];
+    for (unsigned int j = 0; j < 3; ++j)
+    {
+      Wk[3 * i + j] = W(n_links + i, n_links + j);
+      qk[i] -= Wk[3 * i + j] * r_c[n_links + j];
+    }
+  }
+  // (in the whole cluster's terms the wheel's local problem is coupled to
+  // the links: the law is checked on its velocities u = W r + q)
+  const double ut = std::hypot(u_c[n_links + 1], u_c[n_links + 2]),
+               rt = std::hypot(rk[1], rk[2]);
+  double law = std::max({-rk[0] / scale,
+                         -u_c[n_links] / scale,
+                         std::abs(rk[0] * u_c[n_links]) / (scale * scale),
+                         (rt - 0.3 * rk[0]) / std::max(scale, rk[0])});
+  if (s_c[n_links] == FrictionState::stick)
+    law = std::max(law, ut / scale);
+  if (s_c[n_links] == FrictionState::slip && ut > 0.)
+    for (unsigned int t = 1; t <= 2; ++t)
+      law = std::max(law, std::abs(rk[t] / std::max(1e-300, rt) + u_c[n_links + t] / ut));
+  worst_law = std::max(worst_law, law);
+  expect(condensed.converged && plain.converged, "wheel on links: both converged");
+  max_sweeps = std::max(max_sweeps, condensed.sweeps);
+  plain_sweeps_max = std::max(plain_sweeps_max, plain.sweeps);
+}
+
+void condensed_links(std::mt19937 &gen)
+{
+  for (const bool dependent : {false, true})
+  {
+    double worst_velocity = 0., worst_link = 0., worst_law = 0.;
+    unsigned int sweeps = 0, plain_sweeps = 0;
+    for (unsigned int trial = 0; trial < 200; ++trial)
+      wheel_on_links(
+          gen, dependent, worst_velocity, worst_link, worst_law, sweeps, plain_sweeps);
+    const std::string what =
+        dependent ? "wheel on links, a dependent link: " : "wheel on links: ";
+    std::cout << "     " << what << "condensed " << sweeps
+              << " sweep(s), the plain sweeps up to " << plain_sweeps << std::endl;
+    // the plain sweeps stop at 1e-14 of the change of r: the velocities
+    // agree to that order
+    check(what + "velocities, condensed vs the plain sweeps (of |q|)",
+          worst_velocity,
+          0.,
+          1e-9);
+    check(what + "links' relative velocities (of |q|)", worst_link, 0., 1e-12);
+    check(what + "the wheel's law (complementarity, cone, slip opposite)",
+          worst_law,
+          0.,
+          1e-10);
+    expect(sweeps == 1, what + "one sweep condensed");
+  }
 }
 } // namespace
 
@@ -364,6 +509,7 @@ HATI_UNIT_TEST(friction_solver)
   expect(n_states[1] > 100 && n_states[2] > 100,
          "random blocks: both stick and slip seen");
   coupled_clusters(gen);
+  condensed_links(gen);
   return finish();
 }
 } // namespace hati_unit_friction_solver

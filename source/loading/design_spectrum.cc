@@ -17,7 +17,7 @@ namespace hati
 namespace
 {
 /** @p x as a short text (10 digits). */
-std::string number_text(const double x)
+std::string ten_digit_text(const double x)
 {
   std::ostringstream s;
   s << std::setprecision(10) << x;
@@ -89,13 +89,14 @@ void DesignSpectrumParameters::parse_parameters(ParameterHandler &prm)
   prm.leave_subsection();
   period_range = {{range[0], range[1]}};
   AssertThrow(range[0] > 0. && range[1] > range[0],
-              ExcMessage("Design spectrum/Period range: '" + number_text(range[0]) +
-                         ", " + number_text(range[1]) +
+              ExcMessage("Design spectrum/Period range: '" + ten_digit_text(range[0]) +
+                         ", " + ten_digit_text(range[1]) +
                          "': two periods 0 < first < last (s) are expected"));
-  AssertThrow(damping_ratio > 0. && damping_ratio < 1.,
-              ExcMessage("Design spectrum/Damping ratio: " + number_text(damping_ratio) +
-                         ": a ratio 0 < xi < 1 is "
-                         "expected"));
+  AssertThrow(
+      damping_ratio > 0. && damping_ratio < 1.,
+      ExcMessage("Design spectrum/Damping ratio: " + ten_digit_text(damping_ratio) +
+                 ": a ratio 0 < xi < 1 is "
+                 "expected"));
   if (type == "EC8 type 1" || type == "EC8 type 2")
     AssertThrow(peak_ground_acceleration > 0.,
                 ExcMessage("Design spectrum/Peak ground acceleration: " + type +
@@ -109,12 +110,12 @@ void DesignSpectrumParameters::parse_parameters(ParameterHandler &prm)
         table_file, "Design spectrum/Table file", table_periods, table_values);
     AssertThrow(table_periods.front() <= range[0] * (1. + 1e-12) &&
                     table_periods.back() >= range[1] * (1. - 1e-12),
-                ExcMessage("Design spectrum/Period range: " + number_text(range[0]) +
-                           " to " + number_text(range[1]) +
+                ExcMessage("Design spectrum/Period range: " + ten_digit_text(range[0]) +
+                           " to " + ten_digit_text(range[1]) +
                            " s is not within the "
                            "table '" +
-                           table_file + "' (" + number_text(table_periods.front()) +
-                           " to " + number_text(table_periods.back()) +
+                           table_file + "' (" + ten_digit_text(table_periods.front()) +
+                           " to " + ten_digit_text(table_periods.back()) +
                            " s): a table is not extrapolated"));
   }
 }
@@ -278,7 +279,8 @@ void DesignSpectrum::read_table(const std::string &file,
                            printable(text) + "'"));
     AssertThrow(periods.empty() || row[0] > periods.back(),
                 ExcMessage(at + "the periods must increase (" + printable(text) +
-                           " after a period of " + number_text(periods.back()) + " s)"));
+                           " after a period of " + ten_digit_text(periods.back()) +
+                           " s)"));
     periods.push_back(row[0]);
     values.push_back(row[1]);
   }

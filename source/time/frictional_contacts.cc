@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <hati/contact/condensed_cluster.h>
 #include <hati/contact/lcp_solver.h>
 #include <hati/contact/sparse_rows.h>
 #include <hati/time/frictional_contacts.h>
@@ -107,7 +108,7 @@ void FrictionalContacts::solve(const std::vector<unsigned int> &cluster,
   }
   else
   {
-    const FrictionSolverResult result = solve_frictional_cluster(
+    const FrictionSolverResult result = solve_condensed_frictional_cluster(
         {W, q, first, mu, bilateral}, r, cluster_states, control);
     sweeps_max = std::max(sweeps_max, result.sweeps);
     if (!result.converged)

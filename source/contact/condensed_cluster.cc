@@ -1,0 +1,183 @@
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <hati/contact/condensed_cluster.h>
+
+#include <cmath>
+#include <vector>
+
+namespace hati
+{
+namespace
+{
+/**
+ * @p X = @p W_BB^-1 by Gauss-Jordan, or the pseudo-inverse (deal.II's SVD,
+ * singular values below 1e-12 of the largest taken as zero) where W_BB is
+ * singular (dependent links): Gauss-Jordan's result is kept only if
+ * `X W_BB = I` to 1e-10.
+ */
+void invert_links(const FullMatrix<double> &W_BB, FullMatrix<double> &X)
+{
+  X = W_BB;
+  bool finite = true;
+  try
+  {
+    X.gauss_jordan();
+  }
+  catch (...)
+  {
+    finite = false;
+  }
+  // an inverse only if X W_BB = I to 1e-10: a singular W_BB can give a
+  // finite but meaningless Gauss-Jordan result (entries of 1e19 seen)
+  const unsigned int n = W_BB.m();
+  for (unsigned int i = 0; i < n && finite; ++i)
+    for (unsigned int j = 0; j < n && finite; ++j)
+    {
+      double p = 0.;
+      for (unsigned int k = 0; k < n; ++k)
+        p += X(i, k) * W_BB(k, j);
+      finite = std::isfinite(p) && std::abs(p - (i == j ? 1. : 0.)) <= 1e-10;
+    }
+  if (finite)
+    return;
+  LAPACKFullMatrix<double> pseudo(n, n);
+  pseudo = W_BB;
+  pseudo.compute_inverse_svd(1e-12);
+  // (its entries are now the SVD's, not the inverse's: column by column)
+  Vector<double> e(n), column(n);
+  for (unsigned int j = 0; j < n; ++j)
+  {
+    e = 0.;
+    e[j] = 1.;
+    pseudo.vmult(column, e);
+    for (unsigned int i = 0; i < n; ++i)
+      X(i, j) = column[i];
+  }
+}
+
+/** The matrix of @p cache for @p n rows, sized @p n x @p columns (reused). */
+FullMatrix<double> &sized(std::vector<FullMatrix<double>> &cache,
+                          const unsigned int n,
+                          const unsigned int columns)
+{
+  if (cache.size() <= n)
+    cache.resize(n + 1);
+  if (cache[n].m() != n || cache[n].n() != columns)
+    cache[n].reinit(n, columns);
+  return cache[n];
+}
+} // namespace
+
+FrictionSolverResult
+solve_condensed_frictional_cluster(const FrictionalCluster &cluster,
+                                   Vector<double> &r,
+                                   std::vector<FrictionState> &state,
+                                   const FrictionSolverControl &control)
+{
+  const FullMatrix<double> &W = cluster.W;
+  const Vector<double> &q = cluster.q;
+  const std::vector<unsigned int> &first = cluster.first;
+  const unsigned int m = cluster.mu.size(), n = q.size();
+  // B: the rows of the frictionless bilateral contacts; C: the other
+  // contacts' rows (kept), in the cluster's order
+  thread_local std::vector<unsigned int> rows_B, rows_C, kept, condensed;
+  rows_B.clear();
+  rows_C.clear();
+  kept.clear();
+  condensed.clear();
+  for (unsigned int k = 0; k < m; ++k)
+    if (cluster.bilateral[k] && cluster.mu[k] == 0. && first[k + 1] - first[k] == 1)
+    {
+      rows_B.push_back(first[k]);
+      condensed.push_back(k);
+    }
+    else
+    {
+      kept.push_back(k);
+      for (unsigned int i = first[k]; i < first[k + 1]; ++i)
+        rows_C.push_back(i);
+    }
+  if (rows_B.empty() || kept.empty())
+    return solve_frictional_cluster(cluster, r, state, control);
+
+  const unsigned int nB = rows_B.size(), nC = rows_C.size();
+  thread_local std::vector<FullMatrix<double>> W_BB_cache, X_cache, T_cache, S_cache;
+  FullMatrix<double> &W_BB = sized(W_BB_cache, nB, nB), &X = sized(X_cache, nB, nB),
+                     &T = sized(T_cache, nB, nC), &S = sized(S_cache, nC, nC);
+  for (unsigned int a = 0; a < nB; ++a)
+    for (unsigned int b = 0; b < nB; ++b)
+      W_BB(a, b) = W(rows_B[a], rows_B[b]);
+  invert_links(W_BB, X);
+  // T = W_BB^-1 W_BC, y = W_BB^-1 q_B
+  thread_local Vector<double> y, q_S, r_S;
+  y.reinit(nB, true);
+  for (unsigned int a = 0; a < nB; ++a)
+  {
+    double s = 0.;
+    for (unsigned int b = 0; b < nB; ++b)
+      s += X(a, b) * q[rows_B[b]];
+    y[a] = s;
+    for (unsigned int c = 0; c < nC; ++c)
+    {
+      double t = 0.;
+      for (unsigned int b = 0; b < nB; ++b)
+        t += X(a, b) * W(rows_B[b], rows_C[c]);
+      T(a, c) = t;
+    }
+  }
+  // the contacts' problem: S = W_CC - W_CB T, q_S = q_C - W_CB y
+  q_S.reinit(nC, true);
+  for (unsigned int c = 0; c < nC; ++c)
+  {
+    double s = q[rows_C[c]];
+    for (unsigned int a = 0; a < nB; ++a)
+      s -= W(rows_C[c], rows_B[a]) * y[a];
+    q_S[c] = s;
+    for (unsigned int d = 0; d < nC; ++d)
+    {
+      double w = W(rows_C[c], rows_C[d]);
+      for (unsigned int a = 0; a < nB; ++a)
+        w -= W(rows_C[c], rows_B[a]) * T(a, d);
+      S(c, d) = w;
+    }
+  }
+  thread_local std::vector<unsigned int> first_S;
+  thread_local std::vector<double> mu_S;
+  thread_local std::vector<bool> bilateral_S;
+  thread_local std::vector<FrictionState> state_S;
+  first_S.assign(1, 0);
+  mu_S.clear();
+  bilateral_S.clear();
+  for (const unsigned int k : kept)
+  {
+    first_S.push_back(first_S.back() + first[k + 1] - first[k]);
+    mu_S.push_back(cluster.mu[k]);
+    bilateral_S.push_back(cluster.bilateral[k]);
+  }
+  const FrictionSolverResult result = solve_frictional_cluster(
+      {S, q_S, first_S, mu_S, bilateral_S}, r_S, state_S, control);
+  // a local problem of the condensed contacts without an exact solution
+  // (rare: 4 of some 10^6 cluster solves on the braked crane with true
+  // heights): the sweeps over the whole cluster, as without condensation
+  if (!result.converged)
+    return solve_frictional_cluster(cluster, r, state, control);
+
+  // back to the whole cluster: r_C, then r_B = -(y + T r_C)
+  if (r.size() != n)
+    r.reinit(n);
+  state.assign(m, FrictionState::open);
+  for (unsigned int c = 0; c < nC; ++c)
+    r[rows_C[c]] = r_S[c];
+  for (unsigned int a = 0; a < nB; ++a)
+  {
+    double s = y[a];
+    for (unsigned int c = 0; c < nC; ++c)
+      s += T(a, c) * r_S[c];
+    r[rows_B[a]] = -s;
+    state[condensed[a]] = r[rows_B[a]] != 0. ? FrictionState::slip : FrictionState::open;
+  }
+  for (unsigned int i = 0; i < kept.size(); ++i)
+    state[kept[i]] = state_S[i];
+  return result;
+}
+} // namespace hati
