@@ -55,16 +55,69 @@ void invert_links(const FullMatrix<double> &W_BB, FullMatrix<double> &X)
   }
 }
 
-/** The matrix of @p cache for @p n rows, sized @p n x @p columns (reused). */
-FullMatrix<double> &sized(std::vector<FullMatrix<double>> &cache,
-                          const unsigned int n,
-                          const unsigned int columns)
+/** @p links for the cluster @p cluster (its W, mu and bilateral flags). */
+void derive_links(const FrictionalCluster &cluster, CondensedLinks &links)
 {
-  if (cache.size() <= n)
-    cache.resize(n + 1);
-  if (cache[n].m() != n || cache[n].n() != columns)
-    cache[n].reinit(n, columns);
-  return cache[n];
+  const FullMatrix<double> &W = cluster.W;
+  const std::vector<unsigned int> &first = cluster.first;
+  const unsigned int m = cluster.mu.size();
+  // B: the rows of the frictionless bilateral contacts; C: the other
+  // contacts' rows (kept), in the cluster's order
+  links.rows_B.clear();
+  links.rows_C.clear();
+  links.kept.clear();
+  links.condensed.clear();
+  for (unsigned int k = 0; k < m; ++k)
+    if (cluster.bilateral[k] && cluster.mu[k] == 0. && first[k + 1] - first[k] == 1)
+    {
+      links.rows_B.push_back(first[k]);
+      links.condensed.push_back(k);
+    }
+    else
+    {
+      links.kept.push_back(k);
+      for (unsigned int i = first[k]; i < first[k + 1]; ++i)
+        links.rows_C.push_back(i);
+    }
+  links.valid = true;
+  if (links.rows_B.empty() || links.kept.empty())
+    return;
+  const std::vector<unsigned int> &rows_B = links.rows_B, &rows_C = links.rows_C;
+  const unsigned int nB = rows_B.size(), nC = rows_C.size();
+  FullMatrix<double> W_BB(nB, nB);
+  for (unsigned int a = 0; a < nB; ++a)
+    for (unsigned int b = 0; b < nB; ++b)
+      W_BB(a, b) = W(rows_B[a], rows_B[b]);
+  links.X.reinit(nB, nB);
+  invert_links(W_BB, links.X);
+  // T = W_BB^-1 W_BC, S = W_CC - W_CB T
+  links.T.reinit(nB, nC);
+  for (unsigned int a = 0; a < nB; ++a)
+    for (unsigned int c = 0; c < nC; ++c)
+    {
+      double t = 0.;
+      for (unsigned int b = 0; b < nB; ++b)
+        t += links.X(a, b) * W(rows_B[b], rows_C[c]);
+      links.T(a, c) = t;
+    }
+  links.S.reinit(nC, nC);
+  for (unsigned int c = 0; c < nC; ++c)
+    for (unsigned int d = 0; d < nC; ++d)
+    {
+      double w = W(rows_C[c], rows_C[d]);
+      for (unsigned int a = 0; a < nB; ++a)
+        w -= W(rows_C[c], rows_B[a]) * links.T(a, d);
+      links.S(c, d) = w;
+    }
+  links.first_S.assign(1, 0);
+  links.mu_S.clear();
+  links.bilateral_S.clear();
+  for (const unsigned int k : links.kept)
+  {
+    links.first_S.push_back(links.first_S.back() + first[k + 1] - first[k]);
+    links.mu_S.push_back(cluster.mu[k]);
+    links.bilateral_S.push_back(cluster.bilateral[k]);
+  }
 }
 } // namespace
 
@@ -72,43 +125,26 @@ FrictionSolverResult
 solve_condensed_frictional_cluster(const FrictionalCluster &cluster,
                                    Vector<double> &r,
                                    std::vector<FrictionState> &state,
-                                   const FrictionSolverControl &control)
+                                   const FrictionSolverControl &control,
+                                   CondensedLinks *links)
 {
-  const FullMatrix<double> &W = cluster.W;
-  const Vector<double> &q = cluster.q;
-  const std::vector<unsigned int> &first = cluster.first;
-  const unsigned int m = cluster.mu.size(), n = q.size();
-  // B: the rows of the frictionless bilateral contacts; C: the other
-  // contacts' rows (kept), in the cluster's order
-  thread_local std::vector<unsigned int> rows_B, rows_C, kept, condensed;
-  rows_B.clear();
-  rows_C.clear();
-  kept.clear();
-  condensed.clear();
-  for (unsigned int k = 0; k < m; ++k)
-    if (cluster.bilateral[k] && cluster.mu[k] == 0. && first[k + 1] - first[k] == 1)
-    {
-      rows_B.push_back(first[k]);
-      condensed.push_back(k);
-    }
-    else
-    {
-      kept.push_back(k);
-      for (unsigned int i = first[k]; i < first[k + 1]; ++i)
-        rows_C.push_back(i);
-    }
-  if (rows_B.empty() || kept.empty())
+  thread_local CondensedLinks own;
+  if (links == nullptr)
+  {
+    own.valid = false;
+    links = &own;
+  }
+  if (!links->valid)
+    derive_links(cluster, *links);
+  const std::vector<unsigned int> &rows_B = links->rows_B, &rows_C = links->rows_C;
+  if (rows_B.empty() || links->kept.empty())
     return solve_frictional_cluster(cluster, r, state, control);
 
-  const unsigned int nB = rows_B.size(), nC = rows_C.size();
-  thread_local std::vector<FullMatrix<double>> W_BB_cache, X_cache, T_cache, S_cache;
-  FullMatrix<double> &W_BB = sized(W_BB_cache, nB, nB), &X = sized(X_cache, nB, nB),
-                     &T = sized(T_cache, nB, nC), &S = sized(S_cache, nC, nC);
-  for (unsigned int a = 0; a < nB; ++a)
-    for (unsigned int b = 0; b < nB; ++b)
-      W_BB(a, b) = W(rows_B[a], rows_B[b]);
-  invert_links(W_BB, X);
-  // T = W_BB^-1 W_BC, y = W_BB^-1 q_B
+  const FullMatrix<double> &W = cluster.W, &X = links->X, &T = links->T;
+  const Vector<double> &q = cluster.q;
+  const unsigned int nB = rows_B.size(), nC = rows_C.size(), n = q.size(),
+                     m = cluster.mu.size();
+  // y = W_BB^-1 q_B, q_S = q_C - W_CB y
   thread_local Vector<double> y, q_S, r_S;
   y.reinit(nB, true);
   for (unsigned int a = 0; a < nB; ++a)
@@ -117,15 +153,7 @@ solve_condensed_frictional_cluster(const FrictionalCluster &cluster,
     for (unsigned int b = 0; b < nB; ++b)
       s += X(a, b) * q[rows_B[b]];
     y[a] = s;
-    for (unsigned int c = 0; c < nC; ++c)
-    {
-      double t = 0.;
-      for (unsigned int b = 0; b < nB; ++b)
-        t += X(a, b) * W(rows_B[b], rows_C[c]);
-      T(a, c) = t;
-    }
   }
-  // the contacts' problem: S = W_CC - W_CB T, q_S = q_C - W_CB y
   q_S.reinit(nC, true);
   for (unsigned int c = 0; c < nC; ++c)
   {
@@ -133,29 +161,13 @@ solve_condensed_frictional_cluster(const FrictionalCluster &cluster,
     for (unsigned int a = 0; a < nB; ++a)
       s -= W(rows_C[c], rows_B[a]) * y[a];
     q_S[c] = s;
-    for (unsigned int d = 0; d < nC; ++d)
-    {
-      double w = W(rows_C[c], rows_C[d]);
-      for (unsigned int a = 0; a < nB; ++a)
-        w -= W(rows_C[c], rows_B[a]) * T(a, d);
-      S(c, d) = w;
-    }
   }
-  thread_local std::vector<unsigned int> first_S;
-  thread_local std::vector<double> mu_S;
-  thread_local std::vector<bool> bilateral_S;
   thread_local std::vector<FrictionState> state_S;
-  first_S.assign(1, 0);
-  mu_S.clear();
-  bilateral_S.clear();
-  for (const unsigned int k : kept)
-  {
-    first_S.push_back(first_S.back() + first[k + 1] - first[k]);
-    mu_S.push_back(cluster.mu[k]);
-    bilateral_S.push_back(cluster.bilateral[k]);
-  }
   const FrictionSolverResult result = solve_frictional_cluster(
-      {S, q_S, first_S, mu_S, bilateral_S}, r_S, state_S, control);
+      {links->S, q_S, links->first_S, links->mu_S, links->bilateral_S},
+      r_S,
+      state_S,
+      control);
   // a local problem of the condensed contacts without an exact solution
   // (rare: 4 of some 10^6 cluster solves on the braked crane with true
   // heights): the sweeps over the whole cluster, as without condensation
@@ -174,10 +186,11 @@ solve_condensed_frictional_cluster(const FrictionalCluster &cluster,
     for (unsigned int c = 0; c < nC; ++c)
       s += T(a, c) * r_S[c];
     r[rows_B[a]] = -s;
-    state[condensed[a]] = r[rows_B[a]] != 0. ? FrictionState::slip : FrictionState::open;
+    state[links->condensed[a]] =
+        r[rows_B[a]] != 0. ? FrictionState::slip : FrictionState::open;
   }
-  for (unsigned int i = 0; i < kept.size(); ++i)
-    state[kept[i]] = state_S[i];
+  for (unsigned int i = 0; i < links->kept.size(); ++i)
+    state[links->kept[i]] = state_S[i];
   return result;
 }
 } // namespace hati

@@ -87,9 +87,21 @@ void FrictionalContacts::solve(const std::vector<unsigned int> &cluster,
   // size allocates: the crane's clusters alternate between sizes)
   if (work_space.size() <= n)
     work_space.resize(n + 1);
-  FullMatrix<double> &W = work_space[n].W;
   Vector<double> &q = work_space[n].q, &r = work_space[n].r;
-  delassus(rows, inverse_mass, W);
+  // W = L M^-1 L^T, formed when the cluster's rows change
+  if (cached_clusters.size() != contacts.size())
+    cached_clusters.resize(contacts.size());
+  CachedCluster &cached = cached_clusters[cluster[0]];
+  if (cached.cluster != cluster || cached.mu != mu ||
+      cached.inverse_mass != &inverse_mass)
+  {
+    cached.cluster = cluster;
+    cached.mu = mu;
+    cached.inverse_mass = &inverse_mass;
+    delassus(rows, inverse_mass, cached.W);
+    cached.links.valid = false;
+  }
+  const FullMatrix<double> &W = cached.W;
   if (q.size() != n)
     q.reinit(n);
   for (unsigned int a = 0; a < cluster.size(); ++a)
@@ -109,7 +121,7 @@ void FrictionalContacts::solve(const std::vector<unsigned int> &cluster,
   else
   {
     const FrictionSolverResult result = solve_condensed_frictional_cluster(
-        {W, q, first, mu, bilateral}, r, cluster_states, control);
+        {W, q, first, mu, bilateral}, r, cluster_states, control, &cached.links);
     sweeps_max = std::max(sweeps_max, result.sweeps);
     if (!result.converged)
       ++n_unconverged;

@@ -6,6 +6,25 @@
 namespace hati
 {
 /**
+ * What solve_condensed_frictional_cluster() derives from the cluster's W, mu
+ * and bilateral flags alone: the condensed rows B and the kept ones C (and
+ * their contacts), `X = W_BB^-1`, `T = X W_BC`, the condensed Delassus
+ * matrix `S = W_CC - W_CB T` and the condensed cluster's layout. A caller
+ * that keeps a cluster's W from step to step keeps this with it, passed as
+ * @p links below (`valid`: derived for that W; set it false when W
+ * changes; nullptr: derived at every call).
+ */
+struct CondensedLinks
+{
+  bool valid = false;
+  std::vector<unsigned int> rows_B, rows_C, kept, condensed;
+  FullMatrix<double> X, T, S;
+  std::vector<unsigned int> first_S;
+  std::vector<double> mu_S;
+  std::vector<bool> bilateral_S;
+};
+
+/**
  * solve_frictional_cluster() with the cluster's frictionless bilateral rows
  * (rigid links, ties: equalities `u_b = 0` with an impulse of either sign)
  * condensed out first (A9, doc/theory.md A9 "Links in a frictional
@@ -32,7 +51,9 @@ FrictionSolverResult
 solve_condensed_frictional_cluster(const FrictionalCluster &cluster,
                                    Vector<double> &r,
                                    std::vector<FrictionState> &state,
-                                   const FrictionSolverControl &control = {});
+                                   const FrictionSolverControl &control = {},
+                                   CondensedLinks *links = nullptr);
+
 } // namespace hati
 
 #endif
