@@ -3,7 +3,6 @@
 
 #include <hati/time/cd_lagrange.h>
 #include <hati/time/cd_lagrange_kernels.h>
-#include <hati/time/quadratic_form.h>
 
 #include <algorithm>
 #include <cmath>
@@ -548,7 +547,7 @@ Energies CDLagrange::energies() const
   for (unsigned int i = 0; i < n; ++i)
     e.kinetic += 0.5 * (*V_prev)[i] * system.lumped_mass[i] * (*V)[i];
   if (system.has_stiffness())
-    e.internal = 0.5 * quadratic_form(system.stiffness, U);
+    e.internal = 0.5 * system.stiffness.matrix_norm_square(U);
   for (const auto &law : laws) // e.g. the ropes' energy, the contact work
     law->add_energies(e);
   Vector<double> du(U);

@@ -3,7 +3,6 @@
 
 #include <hati/contact/lcp_solver.h>
 #include <hati/time/event_driven.h>
-#include <hati/time/quadratic_form.h>
 #include <hati/time/unilateral_contacts.h>
 
 #include <cvode/cvode.h>
@@ -268,7 +267,7 @@ Energies EventDriven::energies() const
   for (unsigned int i = 0; i < V.size(); ++i)
     e.kinetic += 0.5 * system.lumped_mass[i] * V[i] * V[i];
   if (system.has_stiffness())
-    e.internal = 0.5 * quadratic_form(system.stiffness, U);
+    e.internal = 0.5 * system.stiffness.matrix_norm_square(U);
   Vector<double> du(U);
   du -= U0;
   AssertThrow(system.time_dependent_loads.empty(),

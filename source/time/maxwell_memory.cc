@@ -1,7 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
 #include <hati/time/maxwell_memory.h>
-#include <hati/time/quadratic_form.h>
 
 #include <cmath>
 
@@ -105,7 +104,7 @@ double MaxwellMemory::stored_energy(const SparseMatrix<double> &K) const
   if (K.empty())
     return 0.;
   for (unsigned int l = 0; l < alpha.size(); ++l)
-    e += 0.5 * alpha[l] * quadratic_form(K, q[l]);
+    e += 0.5 * alpha[l] * K.matrix_norm_square(q[l]);
   return e;
 }
 
