@@ -145,10 +145,9 @@ private:
   std::vector<double> mu;
   std::vector<bool> bilateral;
   std::vector<FrictionState> cluster_states;
-  /** The Delassus matrix, q and the impulses of a cluster, per number of rows. */
+  /** q and the impulses of a cluster, per number of rows (W: cached_clusters). */
   struct WorkSpace
   {
-    FullMatrix<double> W;
     Vector<double> q, r;
   };
   std::vector<WorkSpace> work_space;
