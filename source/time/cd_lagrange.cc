@@ -172,15 +172,15 @@ void CDLagrange::build_stiffness_operator()
   // whatever the group order.
   row_groups.clear();
   row_work.assign(n, 0.);
-  std::vector<unsigned int> row_width(n, 0);
+  std::vector<unsigned int> row_nonzeros(n, 0);
   for (unsigned int i = 0; i < n; ++i)
     if (system.has_stiffness() && !system.fixed[i])
       for (auto it = system.stiffness.begin(i); it != system.stiffness.end(i); ++it)
-        row_width[i] += it->value() != 0.;
+        row_nonzeros[i] += it->value() != 0.;
   std::map<unsigned int, RowGroup> groups;
   for (unsigned int i = 0; i < n; ++i)
   {
-    unsigned int w = padded_width(row_width[i], KernelWidths());
+    unsigned int w = padded_width(row_nonzeros[i], KernelWidths());
     if (!has_compiled_width(w, KernelWidths()))
       w = 0;
     RowGroup &g = groups[w];
@@ -188,7 +188,7 @@ void CDLagrange::build_stiffness_operator()
     if (w == 0 && g.start.empty())
       g.start.push_back(0);
     g.rows.push_back(i);
-    if (row_width[i] > 0)
+    if (row_nonzeros[i] > 0)
       for (auto it = system.stiffness.begin(i); it != system.stiffness.end(i); ++it)
         if (it->value() != 0.)
         {
@@ -198,7 +198,7 @@ void CDLagrange::build_stiffness_operator()
     if (w == 0)
       g.start.push_back(g.column.size());
     else
-      for (unsigned int k = row_width[i]; k < w; ++k)
+      for (unsigned int k = row_nonzeros[i]; k < w; ++k)
       {
         g.column.push_back(i);
         g.value.push_back(0.);

@@ -34,9 +34,10 @@ using namespace dealii;
  * whether it holds a point mass, a bar or a solid.
  *
  * The stiffness is copied once into an operator scaled by `dt M^-1`, its
- * rows padded to a fixed width (ELLPACK) so that the row loop is unrolled at
- * compile time (bench/explicit_throughput.sh; rows wider than every
- * compiled width, those of solids, in CSR without padding), so that the hot loop of a
+ * rows grouped by their number of entries and padded to the group's width
+ * (sliced ELLPACK) so that the row loop is unrolled at compile time
+ * (bench/explicit_throughput.sh; rows wider than every compiled width, those
+ * of solids, in CSR without padding), so that the hot loop of a
  * step is one pass over U (A1) and one fused pass computing `V_free = V + dt M^-1 (F_ext
  * - K U)` (A2-A3); contacts (A4-A6) only touch the contact DoFs. With damping (A7) a
  * second kernel of the same shape computes `V_free = c1 V + c2 dt M^-1 (F_ext - K U - a1

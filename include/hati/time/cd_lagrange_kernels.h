@@ -83,27 +83,33 @@ struct RowGroup
 };
 
 /**
- * Row @p r of the group @p g applied to two vectors: `sx += (S x)_i`,
- * `sy += (S y)_i` for its DoF i, the entries summed in row order (the
- * damped and the frequency-range kernels; inlined, so that a compile-time
- * width unrolls the loop). W > 0: rows padded to W (ELLPACK); W = 0: CSR.
+ * For every row r of the group @p g, with its DoF i: `row(i, (S x)_i,
+ * (S y)_i)`, the entries summed in row order (the damped and the
+ * frequency-range kernels; inlined, so that a compile-time width unrolls
+ * the loop). W > 0: rows padded to W (ELLPACK); W = 0: CSR.
  */
-template <unsigned int W>
-inline void two_row_products(const std::size_t r,
-                             const std::size_t *__restrict start,
-                             const unsigned int *__restrict col,
-                             const double *__restrict val,
-                             const double *__restrict x,
-                             const double *__restrict y,
-                             double &sx,
-                             double &sy)
+template <unsigned int W, typename Row>
+inline void for_each_two_row_products(const RowGroup &g,
+                                      const double *__restrict x,
+                                      const double *__restrict y,
+                                      const Row &row)
 {
-  const std::size_t begin = W > 0 ? r * W : start[r],
-                    end = W > 0 ? begin + W : start[r + 1];
-  for (std::size_t ik = begin; ik < end; ++ik)
+  const std::size_t n = g.rows.size();
+  const unsigned int *__restrict rows = g.rows.data();
+  const std::size_t *__restrict start = g.start.data();
+  const unsigned int *__restrict col = g.column.data();
+  const double *__restrict val = g.value.data();
+  for (std::size_t r = 0; r < n; ++r)
   {
-    sx += val[ik] * x[col[ik]];
-    sy += val[ik] * y[col[ik]];
+    const std::size_t begin = W > 0 ? r * W : start[r],
+                      end = W > 0 ? begin + W : start[r + 1];
+    double sx = 0., sy = 0.;
+    for (std::size_t ik = begin; ik < end; ++ik)
+    {
+      sx += val[ik] * x[col[ik]];
+      sy += val[ik] * y[col[ik]];
+    }
+    row(rows[r], sx, sy);
   }
 }
 
@@ -163,22 +169,20 @@ void damped_free_velocity_rows(const RowGroup &g,
                                double *__restrict kv_out,
                                double *__restrict work)
 {
-  const std::size_t n = g.rows.size();
-  const unsigned int *__restrict rows = g.rows.data();
-  for (std::size_t r = 0; r < n; ++r)
-  {
-    double ku = 0., kv = 0.;
-    two_row_products<W>(r, g.start.data(), g.column.data(), g.value.data(), u, v, ku, kv);
-    const unsigned int i = rows[r];
-    const double gi = a[i] - ku;
-    const double vn = c1 * v[i] + c2 * (gi - a1 * kv);
-    const double dn = gi - (vn - v[i]);
-    work[i] = m[i] * v[i] * (d[i] + dn);
-    d[i] = dn;
-    v_new[i] = vn;
-    if (kv_out != nullptr)
-      kv_out[i] = kv;
-  }
+  for_each_two_row_products<W>(g,
+                               u,
+                               v,
+                               [&](const unsigned int i, const double ku, const double kv)
+                               {
+                                 const double gi = a[i] - ku;
+                                 const double vn = c1 * v[i] + c2 * (gi - a1 * kv);
+                                 const double dn = gi - (vn - v[i]);
+                                 work[i] = m[i] * v[i] * (d[i] + dn);
+                                 d[i] = dn;
+                                 v_new[i] = vn;
+                                 if (kv_out != nullptr)
+                                   kv_out[i] = kv;
+                               });
 }
 
 /**
@@ -201,17 +205,15 @@ void branch_free_velocity_rows(const RowGroup &g,
                                double *__restrict v_new,
                                double *__restrict work)
 {
-  const std::size_t n = g.rows.size();
-  const unsigned int *__restrict rows = g.rows.data();
-  for (std::size_t r = 0; r < n; ++r)
-  {
-    double ku = 0., ks = 0.;
-    two_row_products<W>(r, g.start.data(), g.column.data(), g.value.data(), u, s, ku, ks);
-    const unsigned int i = rows[r];
-    v_new[i] = v[i] + a[i] - ku - ks;
-    work[i] = m[i] * v[i] * (d[i] + ks);
-    d[i] = ks;
-  }
+  for_each_two_row_products<W>(g,
+                               u,
+                               s,
+                               [&](const unsigned int i, const double ku, const double ks)
+                               {
+                                 v_new[i] = v[i] + a[i] - ku - ks;
+                                 work[i] = m[i] * v[i] * (d[i] + ks);
+                                 d[i] = ks;
+                               });
 }
 } // namespace cd_lagrange_kernels
 } // namespace hati
