@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Speed-up of HATI over the fully explicit run on the default bridge crane
 # (parameter_files/bridge_crane_hati.prm and bridge_crane_full_explicit.prm,
-# tied and with a rigid hoist for the two damping types, as the files for
-# braked_rope:
+# tied, with a rigid hoist and on the member axes for the two damping types,
+# as the files (braked, rope, true heights) for braked_rope:
 # Northridge Rinaldi 228 along X and UP along Z, static start on the
 # wheels), END_TIME seconds of earthquake (default 8), under BOTH damping
 # types, each run at the steps its damping allows:
@@ -40,7 +40,8 @@ rm -f "$out"/frequency_range/*.times "$out"/Rayleigh/*.times "$out"/braked_rope/
 for damping in frequency_range Rayleigh braked_rope; do
   # the damping comparisons on the tied, rigid-hoist crane (the files' crane
   # is braked with its rope: the third case)
-  tied=(--set "Model/Bridge crane/Travel=tied" --set "Model/Bridge crane/Hoist=rigid")
+  tied=(--set "Model/Bridge crane/Travel=tied" --set "Model/Bridge crane/Hoist=rigid"
+        --set "Model/Bridge crane/Eccentricities=false")
   if [ "$damping" = braked_rope ]; then
     fe=(--set "Model/Bridge crane/Travel=braked" --set "Model/Bridge crane/Hoist=rope")
     hati=("${fe[@]}")

@@ -172,7 +172,7 @@ def main():
     p.add_argument("--png")
     p.add_argument("--set", action="append", default=[],
                    help="one more --set for every run, e.g. "
-                        "'Model/Bridge crane/Eccentricities=true' (repeatable)")
+                        "'Model/Bridge crane/Eccentricities=false' (repeatable)")
     args = p.parse_args()
     if not os.access(args.hati, os.X_OK):
         sys.exit("crane_physics_table: %s is not an executable: build hati first "

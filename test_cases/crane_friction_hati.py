@@ -34,7 +34,9 @@ from hati_test import Context, read_csv, read_summary
 
 ctx = Context()
 records = os.path.join(ctx.source, "data", "accelerograms")
-common = ["Model/Bridge crane/Travel=braked",
+# the axis model (the files have true heights; the comparison is the same and
+# half as long on the member axes)
+common = ["Model/Bridge crane/Travel=braked", "Model/Bridge crane/Eccentricities=false",
           "Time integration/Time step=2e-5",
           "Time integration/End time=3.2",
           "Output/Output interval=0",
