@@ -27,7 +27,8 @@ reduction changes only the implicit part's basis).
    3.8e-8, the unreduced run 2.0e-8).
 4. the output rows (doc/theory.md 12.2): the history rows between two
    rows of `Section force interval` and of the VTU recover only the DoFs
-   they read (monitors, section-force members, the cuts' layers). Reference:
+   they read (monitors, section-force members) and the cuts' section forces
+   as `(L T) q` (Model::output_functionals()). Reference:
    the same run with a full expansion at every row (Section force interval
    = History interval): history.csv, the section force envelope and the
    rows of section_forces.csv they share equal to 1e-12 of the peak.
@@ -133,7 +134,9 @@ ctx.check("static start, reduced: impacts", read_summary(out)["n_impacts"], 0, a
 ROWS = FORWARD + [CB, "Model/Decomposition/Reduction cutoff frequency=3000",
                   "Model/Frame/Solid cuts=c1: prism, x=0.75; c2: prism, x=1.5",
                   "Model/Frame/Section force members=a", "Output/Output interval=0"]
-partial, _ = ctx.run(prm, "rows_partial", ROWS + ["Output/Section force interval=1e-3"])
+# (Section force interval = 1 s: full rows at t = 0 and at the end only, so
+# that the envelope's peaks come from the history rows between them)
+partial, _ = ctx.run(prm, "rows_partial", ROWS + ["Output/Section force interval=1"])
 full, _ = ctx.run(prm, "rows_full", ROWS + ["Output/Section force interval=1e-4"])
 hp, hf = read_csv(partial + "/history.csv"), read_csv(full + "/history.csv")
 ctx.check_true("rows: the same history rows", len(hp) == len(hf) and len(hp) > 100, str(len(hp)))
@@ -142,9 +145,16 @@ worst = max(np.max(np.abs(hp[c] - hf[c])) / max(np.max(np.abs(hf[c])), 1e-300)
 ctx.check("rows: history, partial against full recovery / peak", worst, 0.0, abs_tol=1e-12)
 ep = read_summary(partial)["section_force_envelope"]
 ef = read_summary(full)["section_force_envelope"]
+# the history rows take the cuts' section forces from the reduced
+# coordinates, (L T) q (Model::output_functionals()), the full rows from the
+# expanded displacement: the same sums in another order. The axial force N
+# is zero here (the loads at B1 are transverse and a torque): its envelope
+# is round-off of the cut's terms (some 1e7 N each), compared to 1e-10 of
+# the 1e4 N load (measured 2e-8 N)
 for k in ("N", "My", "Mz"):
     ctx.check("rows: section force envelope %s, partial / full" % k,
-              ep[k]["max_abs"], ef[k]["max_abs"], rel=1e-12)
+              ep[k]["max_abs"], ef[k]["max_abs"], rel=1e-12,
+              abs_tol=1e-6 if k == "N" else 0.)
 sp, sf = read_csv(partial + "/section_forces.csv"), read_csv(full + "/section_forces.csv")
 shared = np.isin(sf["time"], sp["time"])
 ctx.check_true("rows: section_forces.csv rows shared", np.count_nonzero(shared) == len(sp),

@@ -565,9 +565,10 @@ std::string BridgeCrane::section_forces_header() const
 
 void BridgeCrane::write_section_forces(std::ostream *out,
                                        const double time,
-                                       const Vector<double> &U) const
+                                       const Vector<double> &U,
+                                       const Vector<double> *functional_values) const
 {
-  frame.write_section_forces(out, time, U);
+  frame.write_section_forces(out, time, U, functional_values);
 }
 
 DecompositionParameters BridgeCrane::default_decomposition() const

@@ -11,6 +11,7 @@
 #include <hati/model/solid_tie.h>
 
 #include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -556,7 +557,8 @@ std::string Frame::section_forces_header() const { return section_force_output.h
 
 void Frame::write_section_forces(std::ostream *out,
                                  const double time,
-                                 const Vector<double> &U) const
+                                 const Vector<double> &U,
+                                 const Vector<double> *functional_values) const
 {
   if (frame.section_force_members.empty() && frame.solids.cuts.empty())
     return;
@@ -564,7 +566,43 @@ void Frame::write_section_forces(std::ostream *out,
   constraints.distribute(u);
   section_force_output.write(out, time, u, cells, gravity);
   if (solids)
-    solids->cuts().write(out, time, u, gravity, section_force_output);
+    solids->cuts().write(out,
+                         time,
+                         u,
+                         gravity,
+                         section_force_output,
+                         functional_values ? functional_values->data() : nullptr);
+}
+
+std::vector<SparseRow> Frame::output_functionals() const
+{
+  if (!solids)
+    return {};
+  // write_section_forces() distributes the constraints before the cuts'
+  // rows read u: each constrained DoF's coefficient goes to its sources
+  // (closed, homogeneous constraints: one level)
+  std::vector<SparseRow> rows = solids->cuts().rows();
+  for (SparseRow &row : rows)
+  {
+    std::map<types::global_dof_index, double> folded;
+    for (unsigned int i = 0; i < row.dofs.size(); ++i)
+      if (const auto *entries = constraints.get_constraint_entries(row.dofs[i]))
+      {
+        AssertThrow(constraints.get_inhomogeneity(row.dofs[i]) == 0., ExcInternalError());
+        for (const auto &[source, weight] : *entries)
+          folded[source] += weight * row.coefficients[i];
+      }
+      else if (!constraints.is_constrained(row.dofs[i]))
+        folded[row.dofs[i]] += row.coefficients[i];
+    row.dofs.clear();
+    row.coefficients.clear();
+    for (const auto &[dof, coefficient] : folded)
+    {
+      row.dofs.push_back(dof);
+      row.coefficients.push_back(coefficient);
+    }
+  }
+  return rows;
 }
 
 std::vector<types::global_dof_index> Frame::section_force_dofs() const
@@ -574,11 +612,6 @@ std::vector<types::global_dof_index> Frame::section_force_dofs() const
     for (const auto &cell : cells)
       if (frame.members[cell.member].name == name)
         dofs.insert(dofs.end(), cell.dofs.begin(), cell.dofs.end());
-  if (solids)
-  {
-    const auto cut_dofs = solids->cuts().dofs();
-    dofs.insert(dofs.end(), cut_dofs.begin(), cut_dofs.end());
-  }
   // write_section_forces() distributes the constraints: their sources too
   // (closed constraints: one level)
   const std::size_t n_read = dofs.size();

@@ -301,16 +301,20 @@ std::vector<std::string> SolidCuts::names() const
   return n;
 }
 
-std::vector<std::array<double, 6>>
-SolidCuts::section_forces(const Vector<double> &U, const Tensor<1, 3> &gravity) const
+std::vector<std::array<double, 6>> SolidCuts::section_forces(
+    const Vector<double> &U, const Tensor<1, 3> &gravity, const double *row_values) const
 {
   std::vector<std::array<double, 6>> s(cuts.size(), std::array<double, 6>{});
   for (unsigned int c = 0; c < cuts.size(); ++c)
   {
     const Cut &cut = cuts[c];
-    for (unsigned int i = 0; i < cut.dofs.size(); ++i)
+    if (row_values != nullptr)
       for (unsigned int k = 0; k < 6; ++k)
-        s[c][k] += cut.coefficients[i][k] * U[cut.dofs[i]];
+        s[c][k] = row_values[6 * c + k];
+    else
+      for (unsigned int i = 0; i < cut.dofs.size(); ++i)
+        for (unsigned int k = 0; k < 6; ++k)
+          s[c][k] += cut.coefficients[i][k] * U[cut.dofs[i]];
     // the layer's weight beyond the plane by q but not by the step H
     // (theory 11.4): taken off, so that self-weight gives exact values
     const Tensor<1, 3> force = cut.triad * (cut.weight_mass * gravity),
@@ -322,6 +326,20 @@ SolidCuts::section_forces(const Vector<double> &U, const Tensor<1, 3> &gravity) 
     }
   }
   return s;
+}
+
+std::vector<SparseRow> SolidCuts::rows() const
+{
+  std::vector<SparseRow> r(6 * cuts.size());
+  for (unsigned int c = 0; c < cuts.size(); ++c)
+    for (unsigned int k = 0; k < 6; ++k)
+    {
+      SparseRow &row = r[6 * c + k];
+      row.dofs = cuts[c].dofs;
+      for (const auto &coefficients : cuts[c].coefficients)
+        row.coefficients.push_back(coefficients[k]);
+    }
+  return r;
 }
 
 std::vector<types::global_dof_index> SolidCuts::dofs() const
@@ -338,9 +356,10 @@ void SolidCuts::write(std::ostream *out,
                       const double time,
                       const Vector<double> &U,
                       const Tensor<1, 3> &gravity,
-                      FrameSectionForces &output) const
+                      FrameSectionForces &output,
+                      const double *row_values) const
 {
-  const auto s = section_forces(U, gravity);
+  const auto s = section_forces(U, gravity, row_values);
   for (unsigned int c = 0; c < cuts.size(); ++c)
     output.add_row(out, time, cuts[c].cut.name, 0, cuts[c].cut.value, s[c]);
 }

@@ -104,8 +104,10 @@ void OutputWriter::write_history(const OutputState &s)
   if (section_forces.is_open())
   {
     section_rows.str("");
-    model.write_section_forces(
-        s.section_force_rows ? &section_rows : nullptr, s.time, *s.displacement);
+    model.write_section_forces(s.section_force_rows ? &section_rows : nullptr,
+                               s.time,
+                               *s.displacement,
+                               s.output_functionals);
     if (s.section_force_rows)
       section_forces << section_rows.str();
   }

@@ -48,7 +48,8 @@ void set_law_columns(const LawSample &l, OutputState &s)
  * The output row of CD-Lagrange: its state and its laws' sample (into
  * @p sample). (`history_dofs_only`: see the HATI overload.)
  */
-OutputState output_state(const CDLagrange &integrator, LawSample &sample, const bool)
+OutputState
+output_state(const CDLagrange &integrator, LawSample &sample, const bool, const bool)
 {
   OutputState s;
   s.time = integrator.time();
@@ -77,18 +78,21 @@ const std::vector<std::unique_ptr<ForceLaw>> &force_laws_of(const Newmark &)
 }
 
 /**
- * The output row of HATI. With @p history_dofs_only (a history row without
- * section forces and VTU), a reduced implicit part recovers only the DoFs
- * that the row reads (HATICoupling::set_history_dofs()).
+ * The output row of HATI. With @p history_displacements (a history row
+ * without section forces and VTU) and @p history_velocities (a row without
+ * VTU: only the VTU reads every velocity), a reduced implicit part recovers
+ * only the DoFs that the row reads (HATICoupling::set_history_dofs()).
  */
-OutputState
-output_state(const HATICoupling &integrator, LawSample &, const bool history_dofs_only)
+OutputState output_state(const HATICoupling &integrator,
+                         LawSample &,
+                         const bool history_displacements,
+                         const bool history_velocities)
 {
   // contacts.csv is written at the micro steps (connect_micro_steps())
   OutputState s = contact_state(integrator,
                                 integrator.micro_time_step(),
-                                integrator.displacement(history_dofs_only),
-                                integrator.velocity(history_dofs_only));
+                                integrator.displacement(history_displacements),
+                                integrator.velocity(history_velocities));
   s.contact_rows = false;
   return s;
 }
@@ -126,7 +130,7 @@ const Vector<double> &checked_displacement(const HATICoupling &i)
 }
 const Vector<double> &checked_velocity(const HATICoupling &i) { return i.velocity(true); }
 
-OutputState output_state(const Newmark &integrator, LawSample &, const bool)
+OutputState output_state(const Newmark &integrator, LawSample &, const bool, const bool)
 {
   OutputState s;
   s.time = integrator.time();
@@ -349,8 +353,11 @@ TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
       postprocessors.push_back(std::move(p));
   if constexpr (std::is_same_v<Integrator, HATICoupling>)
   {
-    // a history row without section forces and VTU reads the monitors and
-    // the DoFs of Model::write_section_forces() (its envelope)
+    // a history row without section forces and VTU reads the monitors, the
+    // DoFs of Model::write_section_forces() (its envelope) and the values of
+    // the model's output functionals (the solid cuts), which a reduced
+    // implicit part gives from its coordinates
+    integrator.set_output_functionals(problem.model->output_functionals());
     std::vector<types::global_dof_index> displacement_dofs =
         problem.model->section_force_dofs();
     const auto velocity_dofs = monitor_dofs(system);
@@ -366,7 +373,11 @@ template <class Integrator> void TimeLoop<Integrator>::write(const unsigned long
   const WallClock::Scope scope(output_clock);
   const bool section_force_row = step % every_section_row == 0 || step == n_steps;
   const bool vtu_row = every_vtu > 0 && (step % every_vtu == 0 || step == n_steps);
-  OutputState s = output_state(integrator, row_sample, !section_force_row && !vtu_row);
+  OutputState s =
+      output_state(integrator, row_sample, !section_force_row && !vtu_row, !vtu_row);
+  if constexpr (std::is_same_v<Integrator, HATICoupling>)
+    if (!section_force_row && !vtu_row)
+      s.output_functionals = integrator.output_functionals();
   check_state(watchdog, writer, *s.displacement, s.velocity, s.time);
   if (step % every_history == 0 || step == n_steps)
   {

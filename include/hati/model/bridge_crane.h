@@ -200,7 +200,13 @@ public:
   std::string section_forces_header() const override;
   void write_section_forces(std::ostream *out,
                             const double time,
-                            const Vector<double> &U) const override;
+                            const Vector<double> &U,
+                            const Vector<double> *functional_values) const override;
+  /** Frame::output_functionals(). */
+  std::vector<SparseRow> output_functionals() const override
+  {
+    return frame.output_functionals();
+  }
   /** Frame::section_force_dofs(). */
   std::vector<types::global_dof_index> section_force_dofs() const override
   {

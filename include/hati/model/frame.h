@@ -72,8 +72,11 @@ public:
   std::string results_table() const override;
   void write_section_forces(std::ostream *out,
                             const double time,
-                            const Vector<double> &U) const override;
-  /** The DoFs of the section force members' elements and of the solids' cuts. */
+                            const Vector<double> &U,
+                            const Vector<double> *functional_values) const override;
+  /** The solids' cuts' rows (SolidCuts::rows()) with the constraints folded in. */
+  std::vector<SparseRow> output_functionals() const override;
+  /** The DoFs of the section force members' elements (the cuts: output_functionals()). */
   std::vector<types::global_dof_index> section_force_dofs() const override;
   /** `solids` for a frame with solids (SolidStressOutput), none otherwise. */
   std::vector<std::string> vtu_series() const override;

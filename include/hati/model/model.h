@@ -286,19 +286,35 @@ public:
    * Section forces at time @p time for displacement @p U: their envelope
    * is updated, and the rows of `section_forces.csv` go to @p out unless it
    * is null (`Output/Section force interval` coarser than the history).
+   * With @p functional_values, the values of output_functionals() for @p U,
+   * the outputs that they give are taken from them (U is read for the
+   * others).
    */
   virtual void write_section_forces(std::ostream * /*out*/,
                                     const double /*time*/,
-                                    const Vector<double> & /*U*/) const
+                                    const Vector<double> & /*U*/,
+                                    const Vector<double> * /*functional_values*/) const
   {
   }
 
   /**
-   * The DoFs of `U` that write_section_forces() reads (the sources of the
-   * constrained ones included): a Craig-Bampton reduced implicit part (C1)
-   * recovers only these and the monitors' at the history rows that write
-   * no section forces and no VTU. None by default; a model that overrides
-   * write_section_forces() overrides this too.
+   * Linear functionals of the displacement that write_section_forces()
+   * can take as values instead of reading `U` (the solid cuts' section
+   * forces, doc/theory.md 11.4): rows over the global DoFs, the model's
+   * constraints folded in (their product with `U` before the constraints
+   * are distributed). A Craig-Bampton reduced implicit part (C1) evaluates
+   * them from its reduced coordinates (`(L T) q`, theory 12.2) at the
+   * history rows. None by default.
+   */
+  virtual std::vector<SparseRow> output_functionals() const { return {}; }
+
+  /**
+   * The DoFs of `U` that write_section_forces() reads besides
+   * output_functionals() (the sources of the constrained ones included): a
+   * Craig-Bampton reduced implicit part (C1) recovers only these and the
+   * monitors' at the history rows that write no section forces and no
+   * VTU. None by default; a model that overrides write_section_forces()
+   * overrides this too.
    */
   virtual std::vector<types::global_dof_index> section_force_dofs() const { return {}; }
 

@@ -7,6 +7,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/vector.h>
 
+#include <hati/contact/sparse_rows.h>
 #include <hati/model/solid_description.h>
 
 #include <array>
@@ -69,10 +70,21 @@ public:
   /**
    * The section forces (N, Vy, Vz in N; T, My, Mz in N m) of every cut for
    * the displacement @p U (the frame's global numbering, constraints
-   * distributed, m) under @p gravity (m/s^2, the solid's weight).
+   * distributed, m) under @p gravity (m/s^2, the solid's weight). With
+   * @p row_values, the values of rows() for that displacement (6 per cut),
+   * @p U is not read.
    */
-  std::vector<std::array<double, 6>> section_forces(const Vector<double> &U,
-                                                    const Tensor<1, 3> &gravity) const;
+  std::vector<std::array<double, 6>>
+  section_forces(const Vector<double> &U,
+                 const Tensor<1, 3> &gravity,
+                 const double *row_values = nullptr) const;
+
+  /**
+   * The cuts' section forces as rows over the global DoFs, six per cut in
+   * the order N, Vy, Vz, T, My, Mz: section_forces() is their product with
+   * `U` less the layers' weight (doc/theory.md 11.4).
+   */
+  std::vector<SparseRow> rows() const;
 
   /**
    * Their rows of `section_forces.csv` at time @p time (s) to @p out
@@ -83,7 +95,8 @@ public:
              const double time,
              const Vector<double> &U,
              const Tensor<1, 3> &gravity,
-             FrameSectionForces &output) const;
+             FrameSectionForces &output,
+             const double *row_values = nullptr) const;
 
   /** The DoFs the cuts' rows read (section_forces()), ascending, each once. */
   std::vector<types::global_dof_index> dofs() const;

@@ -61,6 +61,11 @@ struct OutputState
    * still updated).
    */
   bool section_force_rows = true;
+  /**
+   * The values of Model::output_functionals() for `displacement`, or null
+   * (write_section_forces() then reads the displacement).
+   */
+  const Vector<double> *output_functionals = nullptr;
 };
 
 /**

@@ -149,6 +149,21 @@ public:
   void set_history_dofs(const std::vector<types::global_dof_index> &displacement_dofs,
                         const std::vector<types::global_dof_index> &velocity_dofs);
 
+  /**
+   * Linear functionals of the whole model's displacement (rows over the
+   * global DoFs, Model::output_functionals()) that output_functionals()
+   * evaluates from a reduced implicit part's coordinates, `(L_I T) q + L_E
+   * u_E` (C1, doc/theory.md 12.2), without recovering the DoFs they read.
+   * Returns false (nothing set) without a reduced implicit part or rows.
+   */
+  bool set_output_functionals(const std::vector<SparseRow> &rows);
+  /**
+   * The values of the functionals of set_output_functionals() for the
+   * current displacement; null if none are set (or the reduced coordinates
+   * are not finite: the full expansion is then read).
+   */
+  const Vector<double> *output_functionals() const;
+
   /** Contact gaps, normal velocities, impulses, active flags (explicit subdomain). */
   const std::vector<double> &gaps() const { return explicit_integrator.gaps(); }
   std::vector<double> normal_velocities() const
@@ -357,6 +372,14 @@ private:
     mutable Vector<double> values;
   };
   PartialExpansion history_displacement, history_velocity;
+  /** The functionals of set_output_functionals(): `L_I T` and `L_E`. */
+  struct ReducedFunctionals
+  {
+    FullMatrix<double> implicit_basis;
+    std::vector<SparseRow> explicit_rows;
+    mutable Vector<double> values;
+  };
+  ReducedFunctionals functionals;
   CDLagrange::Snapshot snapshot;
 };
 } // namespace hati

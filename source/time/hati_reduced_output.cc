@@ -1,0 +1,134 @@
+#include <deal.II/base/exceptions.h>
+
+#include <hati/analysis/reduced_part.h>
+#include <hati/time/hati_coupling.h>
+
+#include <algorithm>
+#include <cmath>
+
+// HATI's outputs of a Craig-Bampton reduced implicit part (C1,
+// doc/theory.md 12.2): the whole model's state, the history rows' DoFs and
+// the model's output functionals from the reduced coordinates.
+
+namespace hati
+{
+const Vector<double> &HATICoupling::implicit_dofs(const Vector<double> &state,
+                                                  Vector<double> &buffer,
+                                                  const PartialExpansion *partial) const
+{
+  if (!decomposition.reduced)
+    return state;
+  // C1: the full subdomain's values from the reduced coordinates, u = T q
+  const unsigned int n = decomposition.parts[1].global_dofs.size();
+  if (partial != nullptr && buffer.size() == n &&
+      std::all_of(
+          state.begin(), state.end(), [](const double x) { return std::isfinite(x); }))
+  {
+    // only the rows the history reads; the others keep the last full values
+    partial->values.reinit(partial->rows.size());
+    partial->basis.vmult(partial->values, state);
+    for (unsigned int i = 0; i < partial->rows.size(); ++i)
+      buffer[partial->rows[i]] = partial->values[i];
+  }
+  else
+    decomposition.reduced->expand(state, buffer);
+  return buffer;
+}
+
+const Vector<double> &HATICoupling::displacement(const bool history_dofs_only) const
+{
+  return to_global(implicit_dofs(implicit.displacement(),
+                                 expanded_U,
+                                 history_dofs_only ? &history_displacement : nullptr),
+                   explicit_integrator.displacement(),
+                   global_U);
+}
+
+const Vector<double> &HATICoupling::velocity(const bool history_dofs_only) const
+{
+  return to_global(implicit_dofs(implicit.velocity(),
+                                 expanded_V,
+                                 history_dofs_only ? &history_velocity : nullptr),
+                   explicit_integrator.velocity(),
+                   global_V);
+}
+
+void HATICoupling::set_history_dofs(
+    const std::vector<types::global_dof_index> &displacement_dofs,
+    const std::vector<types::global_dof_index> &velocity_dofs)
+{
+  if (!decomposition.reduced)
+    return;
+  const auto &implicit_global = decomposition.parts[1].global_dofs;
+  const auto set =
+      [&](const std::vector<types::global_dof_index> &dofs, PartialExpansion &partial)
+  {
+    std::vector<bool> wanted(global_U.size(), false);
+    for (const auto dof : dofs)
+    {
+      AssertThrow(dof < wanted.size(),
+                  ExcMessage("HATICoupling::set_history_dofs: a DoF out of range"));
+      wanted[dof] = true;
+    }
+    partial.rows.clear();
+    for (unsigned int i = 0; i < implicit_global.size(); ++i)
+      if (wanted[implicit_global[i]])
+        partial.rows.push_back(i);
+    partial.basis = decomposition.reduced->reduction().basis_rows(partial.rows);
+  };
+  set(displacement_dofs, history_displacement);
+  set(velocity_dofs, history_velocity);
+}
+
+bool HATICoupling::set_output_functionals(const std::vector<SparseRow> &rows)
+{
+  functionals.explicit_rows.clear();
+  if (!decomposition.reduced || rows.empty())
+    return false;
+  // where each global DoF lives: the explicit copy first (to_global())
+  const auto &E = decomposition.parts[0].global_dofs,
+             &I = decomposition.parts[1].global_dofs;
+  std::vector<int> explicit_index(global_U.size(), -1),
+      implicit_index(global_U.size(), -1);
+  for (unsigned int i = 0; i < E.size(); ++i)
+    explicit_index[E[i]] = i;
+  for (unsigned int i = 0; i < I.size(); ++i)
+    implicit_index[I[i]] = i;
+  const CraigBamptonReduction &T = decomposition.reduced->reduction();
+  functionals.implicit_basis.reinit(rows.size(), T.size());
+  functionals.explicit_rows.resize(rows.size());
+  for (unsigned int r = 0; r < rows.size(); ++r)
+    for (unsigned int j = 0; j < rows[r].dofs.size(); ++j)
+    {
+      const auto dof = rows[r].dofs[j];
+      AssertThrow(dof < global_U.size(),
+                  ExcMessage("HATICoupling::set_output_functionals: a DoF out of range"));
+      const double c = rows[r].coefficients[j];
+      if (explicit_index[dof] >= 0)
+      {
+        functionals.explicit_rows[r].dofs.push_back(explicit_index[dof]);
+        functionals.explicit_rows[r].coefficients.push_back(c);
+      }
+      else if (implicit_index[dof] >= 0) // (L_I T): the row of T times c
+        for (unsigned int k = 0; k < T.size(); ++k)
+          functionals.implicit_basis(r, k) += c * T.column(k)[implicit_index[dof]];
+      // a fixed DoF: zero displacement
+    }
+  functionals.values.reinit(rows.size());
+  return true;
+}
+
+const Vector<double> *HATICoupling::output_functionals() const
+{
+  if (functionals.explicit_rows.empty())
+    return nullptr;
+  const Vector<double> &q = implicit.displacement();
+  if (!std::all_of(q.begin(), q.end(), [](const double x) { return std::isfinite(x); }))
+    return nullptr; // the full expansion shows the watchdog where
+  functionals.implicit_basis.vmult(functionals.values, q);
+  const Vector<double> &u = explicit_integrator.displacement();
+  for (unsigned int r = 0; r < functionals.explicit_rows.size(); ++r)
+    functionals.values[r] += functionals.explicit_rows[r].apply(u);
+  return &functionals.values;
+}
+} // namespace hati
