@@ -171,6 +171,18 @@ private:
   DoFHandler<3> dof_handler;
   types::global_dof_index first_dof = 0;
   std::vector<MonitorNode> monitors;
+  /** stresses(): per quadrature point of every cell, and the reference cell's gradients.
+   */
+  struct StressPoints
+  {
+    std::vector<Point<3>> points;
+    /** `J^-1 = d xi / d x` at each point (cell-major). */
+    std::vector<Tensor<2, 3>> inverse_jacobians;
+    /** Shape gradients on the reference cell, point-major, and their components. */
+    std::vector<Tensor<1, 3>> reference_gradients;
+    std::vector<unsigned int> components;
+  };
+  mutable StressPoints stress_points;
   /** Created last: they read the DoFHandler. */
   std::unique_ptr<SolidStressOutput> output;
   std::unique_ptr<SolidCuts> cut_output;
