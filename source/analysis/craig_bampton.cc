@@ -388,26 +388,46 @@ void CraigBamptonReduction::expand(const Vector<double> &q, Vector<double> &u) c
   AssertThrow(q.size() == size(), ExcMessage("CraigBamptonReduction::expand: size"));
   if (size() > 0 && u.size() != columns[0].size())
     u.reinit(columns[0].size());
-  u = 0.;
-  // by blocks of rows: the block of u stays in the L1 cache while the
-  // columns stream through it once (column by column, u went through the
-  // memory once per column: 278 times on the 3D crane). The same products
-  // and sums in the same order as u.add(q[k], column k) for k = 0, 1, ...
-  constexpr std::size_t block = 512;
-  const std::size_t n = u.size();
-  double *const values = u.data();
-  for (std::size_t begin = 0; begin < n; begin += block)
+  if (size() == 0)
   {
-    const std::size_t end = std::min(n, begin + block);
-    for (unsigned int k = 0; k < size(); ++k)
+    u = 0.;
+    return;
+  }
+  // T in blocks of rows_per_block rows, each block column by column
+  // (block_rows()): one stream through memory, the block's sums side by
+  // side. Each u_i sums q_k T_ik over k = 0, 1, ... from 0 as u.add(q_k,
+  // column k) did: the same results, bitwise (the column by column product
+  // took u through memory once per column, the blocked one by 512 rows had
+  // 278 streams on the 3D crane: 21 ms a product)
+  if (blocked.empty())
+    block_rows();
+  const std::size_t n = u.size(), r = size();
+  double *const values = u.data();
+  for (std::size_t b = 0; b * rows_per_block < n; ++b)
+  {
+    double s[rows_per_block] = {};
+    const double *const t = &blocked[b * r * rows_per_block];
+    for (std::size_t k = 0; k < r; ++k)
       if (q[k] != 0.)
       {
         const double a = q[k];
-        const double *const c = columns[k].data();
-        for (std::size_t i = begin; i < end; ++i)
-          values[i] += a * c[i];
+        for (unsigned int j = 0; j < rows_per_block; ++j)
+          s[j] += a * t[k * rows_per_block + j];
       }
+    for (std::size_t j = 0; j < rows_per_block && b * rows_per_block + j < n; ++j)
+      values[b * rows_per_block + j] = s[j];
   }
+}
+
+void CraigBamptonReduction::block_rows() const
+{
+  const std::size_t n = columns[0].size(), r = size();
+  const std::size_t n_blocks = (n + rows_per_block - 1) / rows_per_block;
+  blocked.assign(n_blocks * r * rows_per_block, 0.);
+  for (std::size_t k = 0; k < r; ++k)
+    for (std::size_t i = 0; i < n; ++i)
+      blocked[((i / rows_per_block) * r + k) * rows_per_block + i % rows_per_block] =
+          columns[k][i];
 }
 
 FullMatrix<double>

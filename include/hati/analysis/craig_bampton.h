@@ -166,6 +166,17 @@ private:
                                  const CraigBamptonSettings &settings);
   /** `M_r` and `K_r` from the columns. */
   void assemble_reduced_matrices(const DiscreteSystem &system);
+
+  /** Rows of T per block of `blocked` (expand()). */
+  static constexpr unsigned int rows_per_block = 8;
+  /**
+   * T by blocks of rows_per_block rows, each block column by column (entry
+   * `(b r + k) rows_per_block + j` is `T(b rows_per_block + j, k)`; the
+   * last block padded with zeros): filled at the first expand().
+   */
+  mutable std::vector<double> blocked;
+  /** Fill `blocked` from the columns. */
+  void block_rows() const;
 };
 } // namespace hati
 
