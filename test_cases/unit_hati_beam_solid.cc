@@ -11,8 +11,12 @@
 // eliminated in the implicit part. Then the reverse: the solid explicit,
 // both beams implicit: both ties cross (twelve rows, general on the explicit
 // side, C_E the face's B1 rows). Undamped, zero load: the radius must be
-// <= 1 + 1e-10 for every m = 1 ... 50 (stable) and >= 1 - 1e-8 (no
-// artificial damping of the coupled modes) each way round.
+// <= 1 + 1e-9 for every m = 1 ... 50 (stable) and >= 1 - 1e-8 (no
+// artificial damping of the coupled modes) each way round. The limit is the
+// round-off of LAPACK's eigenvalues of this non-normal map: measured up to
+// 1 + 1.1e-10 with numpy, 1 + 0.996e-10 with Debian's reference BLAS and
+// 1 + 1.9e-10 (m = 21) with OpenBLAS; the unstable G3 variant gives 1.0006
+// to 1.064 on a frame (unit_hati_stability.cc).
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/lapack_full_matrix.h>
@@ -113,11 +117,11 @@ HATI_UNIT_TEST(hati_beam_solid)
                             parameters,
                             NewmarkParameters());
       const double rho = spectral_radius(coupling);
-      const bool ok = rho <= 1. + 1e-10 && rho >= 1. - 1e-8;
+      const bool ok = rho <= 1. + 1e-9 && rho >= 1. - 1e-8;
       failures += ok ? 0 : 1;
       std::cout << (ok ? "ok   " : "FAIL ") << "explicit '" << explicit_part
                 << "', m = " << m << ": spectral radius " << std::setprecision(15) << rho
-                << " (limit 1 + 1e-10, undamped: >= 1 - 1e-8)" << std::setprecision(6)
+                << " (limit 1 + 1e-9, undamped: >= 1 - 1e-8)" << std::setprecision(6)
                 << std::endl;
     }
   }
