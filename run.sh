@@ -2,7 +2,7 @@
 # ./run.sh [file.prm] [hati options]: set up (Debian packages, Release build)
 # and run a parameter file, by default the main example: the bridge crane
 # under the Northridge earthquake with HATI (parameter_files/bridge_crane_hati.prm,
-# about 20 s on 2 cores). For a crane it then draws crane.png (trolley
+# about 40 s on 2 cores). For a crane it then draws crane.png (trolley
 # wheel Z displacements, paper Fig. 8, and the wheel forces); for the
 # bouncing ball bouncing_ball.png (numerical vs analytical solution).
 set -euo pipefail
