@@ -342,16 +342,6 @@ std::vector<SparseRow> SolidCuts::rows() const
   return r;
 }
 
-std::vector<types::global_dof_index> SolidCuts::dofs() const
-{
-  std::vector<types::global_dof_index> all;
-  for (const Cut &cut : cuts)
-    all.insert(all.end(), cut.dofs.begin(), cut.dofs.end());
-  std::sort(all.begin(), all.end());
-  all.erase(std::unique(all.begin(), all.end()), all.end());
-  return all;
-}
-
 void SolidCuts::write(std::ostream *out,
                       const double time,
                       const Vector<double> &U,

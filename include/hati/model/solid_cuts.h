@@ -98,9 +98,6 @@ public:
              FrameSectionForces &output,
              const double *row_values = nullptr) const;
 
-  /** The DoFs the cuts' rows read (section_forces()), ascending, each once. */
-  std::vector<types::global_dof_index> dofs() const;
-
   /** The area (m^2) of cut @p c. */
   double area(const unsigned int c) const { return cuts[c].area; }
   /** The centroid (m, global axes) of cut @p c. */
