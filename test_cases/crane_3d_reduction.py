@@ -21,6 +21,7 @@ At the 150 Hz cut-off (96 boundary DoFs and 81 fixed-interface modes up to
 The convergence with the cut-off (50, 100, 150, 300 Hz) is
 bench/crane3d_reduction.sh's table."""
 import csv
+import os
 
 import numpy as np
 
@@ -31,7 +32,11 @@ prm = ctx.prm("bridge_crane_3d.prm")
 COMMON = ["Model/Bridge crane/Girder element size=0.55",
           "Model/Bridge crane/Travel=tied", "Model/Bridge crane/Hoist=rigid",
           "Time integration/End time=0.2", "Output/Output interval=0",
-          "Output/History interval=0.001"]
+          "Output/History interval=0.001",
+          "Loading/Accelerogram X=" + os.path.join(ctx.source, "data", "accelerograms",
+                                                   "Rinaldi228.AT2"),
+          "Loading/Accelerogram Z=" + os.path.join(ctx.source, "data", "accelerograms",
+                                                   "RinaldiUP.AT2")]
 full, _ = ctx.run(prm, "unreduced", COMMON + ["Model/Decomposition/Implicit reduction=none"])
 reduced, _ = ctx.run(prm, "reduced_150", COMMON + [
     "Model/Decomposition/Implicit reduction=Craig-Bampton",
