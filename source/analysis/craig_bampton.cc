@@ -7,6 +7,7 @@
 #include <hati/analysis/craig_bampton.h>
 #include <hati/analysis/modal_analysis.h>
 #include <hati/analysis/row_elimination.h>
+#include <hati/linear_algebra/column_major.h>
 #include <hati/linear_algebra/direct_solver.h>
 
 #include <algorithm>
@@ -243,6 +244,7 @@ CraigBamptonReduction::CraigBamptonReduction(const DiscreteSystem &system,
   phase_seconds[0] = since(start);
   add_fixed_interface_modes(system, settings);
   phase_seconds[1] = since(start) - phase_seconds[0];
+  store_basis();
   assemble_reduced_matrices(system);
   seconds = since(start);
   phase_seconds[2] = seconds - phase_seconds[0] - phase_seconds[1];
@@ -367,67 +369,83 @@ void CraigBamptonReduction::add_fixed_interface_modes(
 
 void CraigBamptonReduction::assemble_reduced_matrices(const DiscreteSystem &system)
 {
-  const unsigned int r = columns.size(), n = system.n_dofs();
+  const std::size_t r = size(), n = n_rows;
   reduced_mass.reinit(r, r);
   reduced_stiffness.reinit(r, r);
-  Vector<double> Mt(n), Kt(n);
-  for (unsigned int b = 0; b < r; ++b)
+  if (r == 0 || n == 0)
+    return;
+  // T^T (M T) and T^T (K T) by blocks of columns, BLAS dgemm (the products
+  // column by column, 38,000 dot products on the 3D crane, took 11 s)
+  constexpr std::size_t width = 32;
+  std::vector<double> MT(n * width), KT(n * width), R(r * width);
+  Vector<double> t(n), Mt(n), Kt(n);
+  for (std::size_t b0 = 0; b0 < r; b0 += width)
   {
-    reduction_mass_vmult(system, columns[b], Mt);
-    system.stiffness.vmult(Kt, columns[b]);
-    for (unsigned int a = 0; a <= b; ++a)
+    const std::size_t w = std::min(width, r - b0);
+    for (std::size_t j = 0; j < w; ++j)
     {
-      reduced_mass(a, b) = reduced_mass(b, a) = columns[a] * Mt;
-      reduced_stiffness(a, b) = reduced_stiffness(b, a) = columns[a] * Kt;
+      const ArrayView<const double> column_j = column(b0 + j);
+      std::copy(column_j.begin(), column_j.end(), t.begin());
+      reduction_mass_vmult(system, t, Mt);
+      system.stiffness.vmult(Kt, t);
+      std::copy(Mt.begin(), Mt.end(), MT.begin() + j * n);
+      std::copy(Kt.begin(), Kt.end(), KT.begin() + j * n);
+    }
+    for (auto [product, reduced] :
+         {std::make_pair(&MT, &reduced_mass), std::make_pair(&KT, &reduced_stiffness)})
+    {
+      column_major_mmult(true, r, w, n, basis.data(), product->data(), R.data());
+      for (std::size_t j = 0; j < w; ++j)
+        for (std::size_t a = 0; a < r; ++a)
+          (*reduced)(a, b0 + j) = R[j * r + a];
     }
   }
+  // symmetric to round-off: the mean of the two triangles
+  for (auto *reduced : {&reduced_mass, &reduced_stiffness})
+    for (std::size_t a = 0; a < r; ++a)
+      for (std::size_t b = 0; b < a; ++b)
+        (*reduced)(a, b) = (*reduced)(b, a) = 0.5 * ((*reduced)(a, b) + (*reduced)(b, a));
+}
+
+void CraigBamptonReduction::store_basis()
+{
+  n_columns = columns.size();
+  n_rows = n_columns > 0 ? columns[0].size() : 0;
+  basis.resize(n_rows * n_columns);
+  for (std::size_t k = 0; k < n_columns; ++k)
+  {
+    std::copy(columns[k].begin(), columns[k].end(), basis.begin() + k * n_rows);
+    columns[k].reinit(0); // one copy of T at a time
+  }
+  columns.clear();
+  columns.shrink_to_fit();
 }
 
 void CraigBamptonReduction::expand(const Vector<double> &q, Vector<double> &u) const
 {
   AssertThrow(q.size() == size(), ExcMessage("CraigBamptonReduction::expand: size"));
-  if (size() > 0 && u.size() != columns[0].size())
-    u.reinit(columns[0].size());
-  if (size() == 0)
+  if (u.size() != n_rows)
+    u.reinit(n_rows);
+  if (size() == 0 || n_rows == 0)
   {
     u = 0.;
     return;
   }
-  // T in blocks of rows_per_block rows, each block column by column
-  // (block_rows()): one stream through memory, the block's sums side by
-  // side. Each u_i sums q_k T_ik over k = 0, 1, ... from 0 as u.add(q_k,
-  // column k) did: the same results, bitwise (the column by column product
-  // took u through memory once per column, the blocked one by 512 rows had
-  // 278 streams on the 3D crane: 21 ms a product)
-  if (blocked.empty())
-    block_rows();
-  const std::size_t n = u.size(), r = size();
-  double *const values = u.data();
-  for (std::size_t b = 0; b * rows_per_block < n; ++b)
-  {
-    double s[rows_per_block] = {};
-    const double *const t = &blocked[b * r * rows_per_block];
-    for (std::size_t k = 0; k < r; ++k)
-      if (q[k] != 0.)
-      {
-        const double a = q[k];
-        for (unsigned int j = 0; j < rows_per_block; ++j)
-          s[j] += a * t[k * rows_per_block + j];
-      }
-    for (std::size_t j = 0; j < rows_per_block && b * rows_per_block + j < n; ++j)
-      values[b * rows_per_block + j] = s[j];
-  }
+  // BLAS dgemv on the column-major T: one stream of T through memory (10 ms
+  // a product on the 3D crane, 120 MB at the memory bandwidth of one core)
+  column_major_vmult(false, n_rows, n_columns, 1., basis.data(), q.data(), 0., u.data());
 }
 
-void CraigBamptonReduction::block_rows() const
+void CraigBamptonReduction::expand_many(const std::vector<double> &Q,
+                                        const unsigned int m,
+                                        std::vector<double> &U) const
 {
-  const std::size_t n = columns[0].size(), r = size();
-  const std::size_t n_blocks = (n + rows_per_block - 1) / rows_per_block;
-  blocked.assign(n_blocks * r * rows_per_block, 0.);
-  for (std::size_t k = 0; k < r; ++k)
-    for (std::size_t i = 0; i < n; ++i)
-      blocked[((i / rows_per_block) * r + k) * rows_per_block + i % rows_per_block] =
-          columns[k][i];
+  AssertThrow(Q.size() == std::size_t(size()) * m,
+              ExcMessage("CraigBamptonReduction::expand_many: size"));
+  U.assign(n_rows * m, 0.);
+  if (size() == 0 || n_rows == 0 || m == 0)
+    return;
+  column_major_mmult(false, n_rows, m, n_columns, basis.data(), Q.data(), U.data());
 }
 
 FullMatrix<double>
@@ -436,15 +454,17 @@ CraigBamptonReduction::basis_rows(const std::vector<unsigned int> &rows) const
   FullMatrix<double> B(rows.size(), size());
   for (unsigned int k = 0; k < size(); ++k)
     for (unsigned int i = 0; i < rows.size(); ++i)
-      B(i, k) = columns[k][rows[i]];
+      B(i, k) = basis[k * n_rows + rows[i]];
   return B;
 }
 
 void CraigBamptonReduction::project(const Vector<double> &f, Vector<double> &r) const
 {
   r.reinit(size());
-  for (unsigned int k = 0; k < size(); ++k)
-    r[k] = columns[k] * f;
+  if (size() == 0 || n_rows == 0)
+    return;
+  AssertThrow(f.size() == n_rows, ExcMessage("CraigBamptonReduction::project: size"));
+  column_major_vmult(true, n_rows, n_columns, 1., basis.data(), f.data(), 0., r.data());
 }
 
 void CraigBamptonReduction::free_interface_modes(

@@ -29,6 +29,7 @@
 
 #include <hati/analysis/modal_analysis.h>
 #include <hati/analysis/row_elimination.h>
+#include <hati/linear_algebra/column_major.h>
 #include <hati/linear_algebra/direct_solver.h>
 
 #include <algorithm>
@@ -110,28 +111,39 @@ private:
 class DeflatedInverse
 {
 public:
+  /**
+   * @p Z and @p MZ: the deflated modes and their M products, column-major
+   * (n x n_z, contiguous: the projections are BLAS dgemv, one pass of each
+   * through memory, not 2 n_z vector operations).
+   */
   DeflatedInverse(const ShiftedInverse &inverse,
-                  const std::vector<Vector<double>> &Z,
-                  const std::vector<const Vector<double> *> &MZ)
-      : inverse(inverse), Z(Z), MZ(MZ)
+                  const std::vector<double> &Z,
+                  const std::vector<double> &MZ,
+                  const unsigned int n_z)
+      : inverse(inverse), Z(Z), MZ(MZ), n_z(n_z), coefficients(n_z)
   {
   }
 
-  /** dst = P (K - sigma M)^-1 P^T src. */
+  /** dst = P (K - sigma M)^-1 P^T src, P = I - Z (M Z)^T. */
   void vmult(Vector<double> &dst, const Vector<double> &src) const
   {
+    const std::size_t n = src.size();
+    double *const c = coefficients.data();
+    // projected = src - M Z (Z^T src)
     Vector<double> projected(src);
-    for (unsigned int k = 0; k < Z.size(); ++k)
-      projected.add(-(Z[k] * src), *MZ[k]);
+    column_major_vmult(true, n, n_z, 1., Z.data(), src.data(), 0., c);
+    column_major_vmult(false, n, n_z, -1., MZ.data(), c, 1., projected.data());
     inverse.vmult(dst, projected);
-    for (unsigned int k = 0; k < Z.size(); ++k)
-      dst.add(-(*MZ[k] * dst), Z[k]);
+    // dst -= Z (M Z)^T dst
+    column_major_vmult(true, n, n_z, 1., MZ.data(), dst.data(), 0., c);
+    column_major_vmult(false, n, n_z, -1., Z.data(), c, 1., dst.data());
   }
 
 private:
   const ShiftedInverse &inverse;
-  const std::vector<Vector<double>> &Z;
-  const std::vector<const Vector<double> *> &MZ;
+  const std::vector<double> &Z, &MZ;
+  const unsigned int n_z;
+  mutable std::vector<double> coefficients;
 };
 
 /** Dense generalized eigenproblem on the free DoFs (LAPACK dsygv). */
@@ -538,18 +550,25 @@ ModalProblem::modes_near(const double shift,
     else
     {
       // the deflated modes on the condensed problem: zero on its fixed DoFs
-      std::vector<Vector<double>> Z(deflated.size());
-      std::vector<const Vector<double> *> MZ(deflated.size());
-      for (unsigned int k = 0; k < deflated.size(); ++k)
+      const std::size_t n = K.m(), n_z = deflated.size();
+      std::vector<double> Z(n * n_z), MZ(n * n_z);
+      for (std::size_t k = 0; k < n_z; ++k)
       {
-        Z[k] = deflated[k]->phi;
-        for (unsigned int i = 0; i < Z[k].size(); ++i)
-          if (fixed[i])
-            Z[k][i] = 0.;
-        MZ[k] = &deflated[k]->Mphi;
+        const Vector<double> &phi = deflated[k]->phi, &Mphi = deflated[k]->Mphi;
+        AssertThrow(phi.size() == n && Mphi.size() == n, ExcInternalError());
+        for (std::size_t i = 0; i < n; ++i)
+        {
+          Z[k * n + i] = fixed[i] ? 0. : phi[i];
+          MZ[k * n + i] = Mphi[i];
+        }
       }
-      pairs = arpack_modes(
-          K, M, fixed, DeflatedInverse(inverse, Z, MZ), inverse.shift(), n_modes, ncv);
+      pairs = arpack_modes(K,
+                           M,
+                           fixed,
+                           DeflatedInverse(inverse, Z, MZ, n_z),
+                           inverse.shift(),
+                           n_modes,
+                           ncv);
     }
   }
   else

@@ -85,9 +85,12 @@ ReducedImplicitPart::ReducedImplicitPart(const DiscreteSystem &full,
   const unsigned int nb = basis.n_boundary(), nm = basis.n_modes(), n = full.n_dofs();
   mass_modes.assign(nm, Vector<double>(n));
   FullMatrix<double> modal_mass(nm, nm);
+  Vector<double> mode(n);
   for (unsigned int a = 0; a < nm; ++a)
   {
-    reduction_mass_vmult(full, basis.column(nb + a), mass_modes[a]);
+    const ArrayView<const double> t = basis.column(nb + a);
+    std::copy(t.begin(), t.end(), mode.begin());
+    reduction_mass_vmult(full, mode, mass_modes[a]);
     for (unsigned int b = 0; b < nm; ++b)
       modal_mass(a, b) = basis.mass()(nb + a, nb + b);
   }
@@ -114,7 +117,9 @@ void ReducedImplicitPart::coordinates(const Vector<double> &u, Vector<double> &q
   for (unsigned int k = 0; k < nb; ++k)
   {
     q[k] = basis.boundary_rows()[k].apply(u);
-    interior.add(-q[k], basis.column(k));
+    const ArrayView<const double> t = basis.column(k);
+    for (unsigned int i = 0; i < interior.size(); ++i)
+      interior[i] -= q[k] * t[i];
   }
   Vector<double> p(nm), eta(nm);
   for (unsigned int a = 0; a < nm; ++a)

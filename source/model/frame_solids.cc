@@ -301,60 +301,95 @@ void FrameSolids::stresses(const Vector<double> &U,
                            std::vector<SymmetricTensor<2, 3>> &stress,
                            std::vector<Point<3>> &points) const
 {
-  // the geometry is fixed: the inverse Jacobians and points of every cell's
-  // quadrature points are kept from the first call; the displacement
-  // gradient is summed on the reference cell (its shape gradients are the
-  // same for every cell), then mapped, grad u = (sum_i u_i grad_ref phi_i)
-  // J^-1: a cell costs n_q (3 n + 27) products instead of FEValues::reinit()
-  // and n_q n mapped shape gradients (the stress envelope of the 3D crane's
-  // 1530 cells at every section-force row)
+  // the geometry is fixed: every cell's DoFs and the inverse Jacobians and
+  // points of its quadrature points are kept from the first call; the
+  // displacement gradient is summed on the reference cell (the scalar shape
+  // gradients of FE_Q(p) are the same for every cell), then mapped,
+  // grad u = (sum_b u_b grad_ref phi_b) J^-1 (the stress envelope of the 3D
+  // crane's 1530 cells at every section-force row)
   const QGauss<3> quadrature(fe.degree + 1);
   const unsigned int n = fe.n_dofs_per_cell(), n_q = quadrature.size();
+  const unsigned int n_b = n / 3; // scalar shape functions (FE_Q(p)^3)
   StressPoints &cache = stress_points;
   if (cache.points.empty())
-  {
-    FEValues<3> values(
-        fe, quadrature, update_inverse_jacobians | update_quadrature_points);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-    {
-      values.reinit(cell);
-      for (unsigned int q = 0; q < n_q; ++q)
-      {
-        cache.points.push_back(values.quadrature_point(q));
-        cache.inverse_jacobians.push_back(Tensor<2, 3>(values.inverse_jacobian(q)));
-      }
-    }
-    cache.reference_gradients.resize(n_q * n);
-    cache.components.resize(n);
-    for (unsigned int i = 0; i < n; ++i)
-    {
-      cache.components[i] = fe.system_to_component_index(i).first;
-      for (unsigned int q = 0; q < n_q; ++q)
-        cache.reference_gradients[q * n + i] =
-            fe.shape_grad_component(i, quadrature.point(q), cache.components[i]);
-    }
-  }
-  std::vector<types::global_dof_index> dofs(n);
-  std::vector<double> u(n);
+    fill_stress_points(quadrature);
+  // per cell: u by component and scalar shape function, then at each point
+  // the nine sums over the scalar functions b, in registers. Each sum runs
+  // over b in the order of the system's DoFs from 0, as the sum over the
+  // cell's DoFs did: the same results, bitwise
+  std::vector<double> u(3 * n_b);
   stress.resize(cache.points.size());
   points = cache.points;
-  for (const auto &cell : dof_handler.active_cell_iterators())
+  const unsigned int n_cells = cache.dofs.size() / n;
+  for (unsigned int cell = 0; cell < n_cells; ++cell)
   {
-    global_dofs(cell, first_dof, dofs);
+    const types::global_dof_index *const dofs = &cache.dofs[std::size_t(cell) * n];
     for (unsigned int i = 0; i < n; ++i)
-      u[i] = U[dofs[i]];
-    const unsigned int first = cell->active_cell_index() * n_q;
+      u[cache.components[i] * n_b + cache.scalar_index[i]] = U[dofs[i]];
+    const double *const u0 = u.data(), *const u1 = u0 + n_b, *const u2 = u1 + n_b;
+    const unsigned int first = cell * n_q;
     for (unsigned int q = 0; q < n_q; ++q)
     {
+      double s[3][3] = {};
+      const double *const phi = &cache.reference_gradients[q * n_b * 3];
+      for (unsigned int b = 0; b < n_b; ++b)
+      {
+        const double p0 = phi[3 * b], p1 = phi[3 * b + 1], p2 = phi[3 * b + 2];
+        const double a0 = u0[b], a1 = u1[b], a2 = u2[b];
+        s[0][0] += a0 * p0, s[0][1] += a0 * p1, s[0][2] += a0 * p2;
+        s[1][0] += a1 * p0, s[1][1] += a1 * p1, s[1][2] += a1 * p2;
+        s[2][0] += a2 * p0, s[2][1] += a2 * p1, s[2][2] += a2 * p2;
+      }
       Tensor<2, 3> reference_grad;
-      const Tensor<1, 3> *const g = &cache.reference_gradients[q * n];
-      for (unsigned int i = 0; i < n; ++i)
-        reference_grad[cache.components[i]] += u[i] * g[i];
+      for (unsigned int c = 0; c < 3; ++c)
+        for (unsigned int d = 0; d < 3; ++d)
+          reference_grad[c][d] = s[c][d];
       stress[first + q] =
-          this->stress(cell->material_id(),
+          this->stress(cache.materials[cell],
                        symmetrize(reference_grad * cache.inverse_jacobians[first + q]));
     }
   }
+}
+
+void FrameSolids::fill_stress_points(const Quadrature<3> &quadrature) const
+{
+  StressPoints &cache = stress_points;
+  const unsigned int n = fe.n_dofs_per_cell(), n_q = quadrature.size();
+  FEValues<3> values(fe, quadrature, update_inverse_jacobians | update_quadrature_points);
+  std::vector<types::global_dof_index> dofs(n);
+  for (const auto &cell : dof_handler.active_cell_iterators())
+  {
+    AssertThrow(cell->active_cell_index() * n == cache.dofs.size(), ExcInternalError());
+    values.reinit(cell);
+    for (unsigned int q = 0; q < n_q; ++q)
+    {
+      cache.points.push_back(values.quadrature_point(q));
+      cache.inverse_jacobians.push_back(Tensor<2, 3>(values.inverse_jacobian(q)));
+    }
+    global_dofs(cell, first_dof, dofs);
+    cache.dofs.insert(cache.dofs.end(), dofs.begin(), dofs.end());
+    cache.materials.push_back(cell->material_id());
+  }
+  const FiniteElement<3> &scalar = fe.base_element(0);
+  AssertThrow(fe.n_base_elements() == 1 && fe.element_multiplicity(0) == 3 &&
+                  scalar.n_dofs_per_cell() * 3 == n,
+              ExcInternalError());
+  const unsigned int n_b = scalar.n_dofs_per_cell();
+  cache.components.resize(n);
+  cache.scalar_index.resize(n);
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    cache.components[i] = fe.system_to_component_index(i).first;
+    cache.scalar_index[i] = fe.system_to_component_index(i).second;
+  }
+  cache.reference_gradients.resize(n_b * 3 * n_q);
+  for (unsigned int b = 0; b < n_b; ++b)
+    for (unsigned int q = 0; q < n_q; ++q)
+    {
+      const Tensor<1, 3> g = scalar.shape_grad(b, quadrature.point(q));
+      for (unsigned int d = 0; d < 3; ++d)
+        cache.reference_gradients[(q * n_b + b) * 3 + d] = g[d];
+    }
 }
 
 std::vector<Point<3>> FrameSolids::cell_centres() const

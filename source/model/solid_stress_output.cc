@@ -146,6 +146,10 @@ void SolidStressOutput::write_envelope(std::ostream &out) const
   data_out.add_data_vector(value, "max_von_mises", DataOut<3>::type_cell_data);
   data_out.add_data_vector(when, "max_von_mises_time", DataOut<3>::type_cell_data);
   data_out.build_patches();
+  // rewritten at every VTU row: the fastest zlib level
+  DataOutBase::VtkFlags flags;
+  flags.compression_level = DataOutBase::VtkFlags::best_speed;
+  data_out.set_flags(flags);
   data_out.write_vtu(out);
 }
 

@@ -111,7 +111,7 @@ void OutputWriter::write_history(const OutputState &s)
     if (s.section_force_rows)
       section_forces << section_rows.str();
   }
-  if (s.section_force_rows)
+  if (s.section_force_rows && !s.envelope_deferred)
     model.update_envelopes(s.time, *s.displacement);
   if (s.contact_rows)
     write_contacts(s);
@@ -305,6 +305,11 @@ void OutputWriter::write_vtu(const OutputState &s)
     last_pvd_sync = now;
   write_envelopes(false);
   flush();
+}
+
+void OutputWriter::update_envelopes(const double time, const Vector<double> &displacement)
+{
+  model.update_envelopes(time, displacement);
 }
 
 void OutputWriter::write_envelopes(const bool durable)

@@ -131,4 +131,39 @@ const Vector<double> *HATICoupling::output_functionals() const
     functionals.values[r] += functionals.explicit_rows[r].apply(u);
   return &functionals.values;
 }
+
+bool HATICoupling::defer_displacement()
+{
+  if (!decomposition.reduced)
+    return false;
+  const Vector<double> &q = implicit.displacement();
+  if (!std::all_of(q.begin(), q.end(), [](const double x) { return std::isfinite(x); }))
+    return false;
+  deferred.times.push_back(time());
+  deferred.coordinates.insert(deferred.coordinates.end(), q.begin(), q.end());
+  deferred.explicit_displacements.push_back(explicit_integrator.displacement());
+  return true;
+}
+
+void HATICoupling::expand_deferred(
+    const std::function<void(double, const Vector<double> &)> &f)
+{
+  const unsigned int m = deferred.times.size();
+  if (m == 0)
+    return;
+  // C1: U = T Q, one pass of T through memory for the m states
+  std::vector<double> U;
+  decomposition.reduced->reduction().expand_many(deferred.coordinates, m, U);
+  const std::size_t n = U.size() / m;
+  Vector<double> implicit_part(n), global(global_U.size());
+  for (unsigned int j = 0; j < m; ++j)
+  {
+    std::copy(U.begin() + j * n, U.begin() + (j + 1) * n, implicit_part.begin());
+    f(deferred.times[j],
+      to_global(implicit_part, deferred.explicit_displacements[j], global));
+  }
+  deferred.times.clear();
+  deferred.coordinates.clear();
+  deferred.explicit_displacements.clear();
+}
 } // namespace hati

@@ -1,6 +1,7 @@
 #ifndef hati_analysis_craig_bampton_h
 #define hati_analysis_craig_bampton_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -97,7 +98,7 @@ public:
   /** Number of fixed-interface modes kept (-). */
   unsigned int n_modes() const { return modal_frequencies.size(); }
   /** Number of reduced coordinates, boundary DoFs plus modes (-). */
-  unsigned int size() const { return columns.size(); }
+  unsigned int size() const { return n_columns; }
   /** The boundary rows, in the order of the reduced coordinates. */
   const std::vector<SparseRow> &boundary_rows() const { return boundary; }
 
@@ -106,7 +107,10 @@ public:
   /** `K_r = T^T K T`. */
   const FullMatrix<double> &stiffness() const { return reduced_stiffness; }
   /** Column @p k of `T` on the system's DoFs (a constraint mode, then the modes). */
-  const Vector<double> &column(const unsigned int k) const { return columns[k]; }
+  ArrayView<const double> column(const unsigned int k) const
+  {
+    return ArrayView<const double>(basis.data() + std::size_t(k) * n_rows, n_rows);
+  }
 
   /** Frequencies of the kept fixed-interface modes (Hz), ascending. */
   const std::vector<double> &fixed_interface_frequencies() const
@@ -116,6 +120,16 @@ public:
 
   /** `u = T q` (m): the system's displacements from reduced coordinates. */
   void expand(const Vector<double> &q, Vector<double> &u) const;
+
+  /**
+   * `U = T Q` for several states at once: column `j` of @p U (size n x m,
+   * column-major, resized) from column `j` of @p Q (size() x m, column-major).
+   * One pass of `T` through memory for the m states (BLAS dgemm): on the 3D
+   * crane 2.7 ms a state by 16 against 10 ms for one.
+   */
+  void expand_many(const std::vector<double> &Q,
+                   const unsigned int m,
+                   std::vector<double> &U) const;
 
   /** The rows @p rows of `T` (one per entry, in order), for a partial expand. */
   FullMatrix<double> basis_rows(const std::vector<unsigned int> &rows) const;
@@ -152,7 +166,12 @@ public:
 
 private:
   std::vector<SparseRow> boundary;
+  /** The columns of `T` while the reduction is built (then moved to basis). */
   std::vector<Vector<double>> columns;
+  /** `T`, column-major (n_rows x n_columns): the constructor's last step. */
+  std::vector<double> basis;
+  std::size_t n_rows = 0;
+  unsigned int n_columns = 0;
   std::vector<double> modal_frequencies;
   FullMatrix<double> reduced_mass, reduced_stiffness;
   double seconds = 0.;
@@ -164,19 +183,11 @@ private:
   /** The fixed-interface modes up to the cut-off. */
   void add_fixed_interface_modes(const DiscreteSystem &system,
                                  const CraigBamptonSettings &settings);
-  /** `M_r` and `K_r` from the columns. */
+  /** `M_r = T^T M T` and `K_r = T^T K T` from basis (BLAS dgemm by blocks of columns). */
   void assemble_reduced_matrices(const DiscreteSystem &system);
 
-  /** Rows of T per block of `blocked` (expand()). */
-  static constexpr unsigned int rows_per_block = 8;
-  /**
-   * T by blocks of rows_per_block rows, each block column by column (entry
-   * `(b r + k) rows_per_block + j` is `T(b rows_per_block + j, k)`; the
-   * last block padded with zeros): filled at the first expand().
-   */
-  mutable std::vector<double> blocked;
-  /** Fill `blocked` from the columns. */
-  void block_rows() const;
+  /** Move the columns into basis (column-major). */
+  void store_basis();
 };
 } // namespace hati
 

@@ -1,6 +1,7 @@
 #ifndef hati_contact_sparse_rows_h
 #define hati_contact_sparse_rows_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/types.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -27,6 +28,15 @@ struct SparseRow
 
   /** L_k . x for a vector x. */
   double apply(const Vector<double> &x) const
+  {
+    double s = 0.;
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      s += coefficients[i] * x[dofs[i]];
+    return s;
+  }
+
+  /** L_k . x for the values @p x of a vector (e.g. a column of a basis). */
+  double apply(const ArrayView<const double> &x) const
   {
     double s = 0.;
     for (unsigned int i = 0; i < dofs.size(); ++i)

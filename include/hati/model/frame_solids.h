@@ -178,11 +178,20 @@ private:
     std::vector<Point<3>> points;
     /** `J^-1 = d xi / d x` at each point (cell-major). */
     std::vector<Tensor<2, 3>> inverse_jacobians;
-    /** Shape gradients on the reference cell, point-major, and their components. */
-    std::vector<Tensor<1, 3>> reference_gradients;
-    std::vector<unsigned int> components;
+    /** Every cell's global DoFs (cell-major) and material id. */
+    std::vector<types::global_dof_index> dofs;
+    std::vector<types::material_id> materials;
+    /**
+     * The scalar shape functions' gradients on the reference cell, entry
+     * `(q n_b + b) 3 + d` for point q, function b (of n_b), direction d.
+     */
+    std::vector<double> reference_gradients;
+    /** Component and scalar shape function of each DoF of a cell. */
+    std::vector<unsigned int> components, scalar_index;
   };
   mutable StressPoints stress_points;
+  /** Fill stress_points at the points of @p quadrature. */
+  void fill_stress_points(const Quadrature<3> &quadrature) const;
   /** Created last: they read the DoFHandler. */
   std::unique_ptr<SolidStressOutput> output;
   std::unique_ptr<SolidCuts> cut_output;

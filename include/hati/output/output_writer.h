@@ -62,6 +62,12 @@ struct OutputState
    */
   bool section_force_rows = true;
   /**
+   * Whether a section_forces.csv row leaves the model's stress envelopes to
+   * a later update_envelopes() (a reduced implicit part expands them by
+   * batches): `displacement` then holds only the DoFs the rows read.
+   */
+  bool envelope_deferred = false;
+  /**
    * The values of Model::output_functionals() for `displacement`, or null
    * (write_section_forces() then reads the displacement).
    */
@@ -113,6 +119,8 @@ public:
    * envelope files replaced (not made durable).
    */
   void write_vtu(const OutputState &state);
+  /** Update the model's envelopes (Model::update_envelopes()) with a deferred row. */
+  void update_envelopes(const double time, const Vector<double> &displacement);
   /**
    * Track impacts and the largest penetration from the gaps and impulses
    * of the contacts (call after every step; touches contacts only).

@@ -164,6 +164,22 @@ public:
    */
   const Vector<double> *output_functionals() const;
 
+  /**
+   * Keep the current whole displacement for later (expand_deferred()): the
+   * stress envelope's rows of a reduced implicit part are expanded by
+   * batches, `U = T Q` (CraigBamptonReduction::expand_many(), C1). Returns
+   * false and keeps nothing without a reduced part or with reduced
+   * coordinates that are not finite: the caller reads displacement() now.
+   */
+  bool defer_displacement();
+  /** Number of displacements kept by defer_displacement() (-). */
+  unsigned int n_deferred() const { return deferred.times.size(); }
+  /**
+   * The kept displacements in full (global numbering), in the order kept:
+   * @p f(time, U) for each; then none is kept.
+   */
+  void expand_deferred(const std::function<void(double, const Vector<double> &)> &f);
+
   /** Contact gaps, normal velocities, impulses, active flags (explicit subdomain). */
   const std::vector<double> &gaps() const { return explicit_integrator.gaps(); }
   std::vector<double> normal_velocities() const
@@ -380,6 +396,14 @@ private:
     mutable Vector<double> values;
   };
   ReducedFunctionals functionals;
+  /** The states of defer_displacement(): times, reduced coordinates, explicit part. */
+  struct DeferredStates
+  {
+    std::vector<double> times;
+    std::vector<double> coordinates;
+    std::vector<Vector<double>> explicit_displacements;
+  };
+  DeferredStates deferred;
   CDLagrange::Snapshot snapshot;
 };
 } // namespace hati
