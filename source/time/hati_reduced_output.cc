@@ -12,45 +12,56 @@
 
 namespace hati
 {
-const Vector<double> &HATICoupling::implicit_dofs(const Vector<double> &state,
-                                                  Vector<double> &buffer,
-                                                  const PartialExpansion *partial) const
+const Vector<double> &HATICoupling::whole_state(const Vector<double> &state,
+                                                const Vector<double> &explicit_part,
+                                                Vector<double> &buffer,
+                                                Vector<double> &global,
+                                                const PartialExpansion *partial) const
 {
   if (!decomposition.reduced)
-    return state;
+    return to_global(state, explicit_part, global);
   // C1: the full subdomain's values from the reduced coordinates, u = T q
-  const unsigned int n = decomposition.parts[1].global_dofs.size();
-  if (partial != nullptr && buffer.size() == n &&
+  const auto &I = decomposition.parts[1].global_dofs,
+             &E = decomposition.parts[0].global_dofs;
+  if (partial != nullptr && buffer.size() == I.size() &&
       std::all_of(
           state.begin(), state.end(), [](const double x) { return std::isfinite(x); }))
   {
     // only the rows the history reads; the others keep the last full values
+    // in buffer and in global (which a full call filled from buffer): only
+    // these rows and the explicit part change there (the explicit copy of
+    // an interface DoF last, as in to_global())
     partial->values.reinit(partial->rows.size());
     partial->basis.vmult(partial->values, state);
     for (unsigned int i = 0; i < partial->rows.size(); ++i)
+    {
       buffer[partial->rows[i]] = partial->values[i];
+      global[I[partial->rows[i]]] = partial->values[i];
+    }
+    for (unsigned int i = 0; i < E.size(); ++i)
+      global[E[i]] = explicit_part[i];
+    return global;
   }
-  else
-    decomposition.reduced->expand(state, buffer);
-  return buffer;
+  decomposition.reduced->expand(state, buffer);
+  return to_global(buffer, explicit_part, global);
 }
 
 const Vector<double> &HATICoupling::displacement(const bool history_dofs_only) const
 {
-  return to_global(implicit_dofs(implicit.displacement(),
-                                 expanded_U,
-                                 history_dofs_only ? &history_displacement : nullptr),
-                   explicit_integrator.displacement(),
-                   global_U);
+  return whole_state(implicit.displacement(),
+                     explicit_integrator.displacement(),
+                     expanded_U,
+                     global_U,
+                     history_dofs_only ? &history_displacement : nullptr);
 }
 
 const Vector<double> &HATICoupling::velocity(const bool history_dofs_only) const
 {
-  return to_global(implicit_dofs(implicit.velocity(),
-                                 expanded_V,
-                                 history_dofs_only ? &history_velocity : nullptr),
-                   explicit_integrator.velocity(),
-                   global_V);
+  return whole_state(implicit.velocity(),
+                     explicit_integrator.velocity(),
+                     expanded_V,
+                     global_V,
+                     history_dofs_only ? &history_velocity : nullptr);
 }
 
 void HATICoupling::set_history_dofs(

@@ -319,16 +319,19 @@ private:
   /** Fill @p sample from the explicit integrator. */
   void take_sample(ContactSample &sample) const;
   /**
-   * The implicit subdomain's DoF values of the implicit integrator's
-   * @p state: itself, or expanded from reduced coordinates into @p buffer
-   * (C1): all of them, or with @p history_dofs_only those of
-   * set_history_dofs() (once @p buffer holds a full expansion and the
-   * coordinates are finite).
+   * The whole model's values in @p global from the implicit integrator's
+   * @p state and the explicit part's @p explicit_part: with a reduced part
+   * (C1) its DoFs expanded into @p buffer, all of them or, with @p partial
+   * (once a full call filled @p buffer and @p global, and the coordinates
+   * are finite), those of set_history_dofs(), which with the explicit part
+   * are then the only entries of @p global updated.
    */
   struct PartialExpansion;
-  const Vector<double> &implicit_dofs(const Vector<double> &state,
-                                      Vector<double> &buffer,
-                                      const PartialExpansion *partial) const;
+  const Vector<double> &whole_state(const Vector<double> &state,
+                                    const Vector<double> &explicit_part,
+                                    Vector<double> &buffer,
+                                    Vector<double> &global,
+                                    const PartialExpansion *partial) const;
   /** @p global = the implicit and explicit parts in the global numbering. */
   const Vector<double> &to_global(const Vector<double> &implicit_part,
                                   const Vector<double> &explicit_part,
