@@ -442,9 +442,12 @@ void CraigBamptonReduction::expand_many(const std::vector<double> &Q,
 {
   AssertThrow(Q.size() == std::size_t(size()) * m,
               ExcMessage("CraigBamptonReduction::expand_many: size"));
-  U.assign(n_rows * m, 0.);
   if (size() == 0 || n_rows == 0 || m == 0)
+  {
+    U.assign(n_rows * m, 0.);
     return;
+  }
+  U.resize(n_rows * m); // dgemm with beta = 0 writes every entry
   column_major_mmult(false, n_rows, m, n_columns, basis.data(), Q.data(), U.data());
 }
 

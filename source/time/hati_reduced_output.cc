@@ -12,6 +12,16 @@
 
 namespace hati
 {
+namespace
+{
+/** Whether every entry of @p v is finite (else the full expansion shows the watchdog
+ * where). */
+bool all_finite(const Vector<double> &v)
+{
+  return std::all_of(v.begin(), v.end(), [](const double x) { return std::isfinite(x); });
+}
+} // namespace
+
 const Vector<double> &HATICoupling::whole_state(const Vector<double> &state,
                                                 const Vector<double> &explicit_part,
                                                 Vector<double> &buffer,
@@ -23,9 +33,7 @@ const Vector<double> &HATICoupling::whole_state(const Vector<double> &state,
   // C1: the full subdomain's values from the reduced coordinates, u = T q
   const auto &I = decomposition.parts[1].global_dofs,
              &E = decomposition.parts[0].global_dofs;
-  if (partial != nullptr && buffer.size() == I.size() &&
-      std::all_of(
-          state.begin(), state.end(), [](const double x) { return std::isfinite(x); }))
+  if (partial != nullptr && buffer.size() == I.size() && all_finite(state))
   {
     // only the rows the history reads; the others keep the last full values
     // in buffer and in global (which a full call filled from buffer): only
@@ -134,7 +142,7 @@ const Vector<double> *HATICoupling::output_functionals() const
   if (functionals.explicit_rows.empty())
     return nullptr;
   const Vector<double> &q = implicit.displacement();
-  if (!std::all_of(q.begin(), q.end(), [](const double x) { return std::isfinite(x); }))
+  if (!all_finite(q))
     return nullptr; // the full expansion shows the watchdog where
   functionals.implicit_basis.vmult(functionals.values, q);
   const Vector<double> &u = explicit_integrator.displacement();
@@ -148,7 +156,7 @@ bool HATICoupling::defer_displacement()
   if (!decomposition.reduced)
     return false;
   const Vector<double> &q = implicit.displacement();
-  if (!std::all_of(q.begin(), q.end(), [](const double x) { return std::isfinite(x); }))
+  if (!all_finite(q))
     return false;
   deferred.times.push_back(time());
   deferred.coordinates.insert(deferred.coordinates.end(), q.begin(), q.end());

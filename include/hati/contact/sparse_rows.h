@@ -29,10 +29,7 @@ struct SparseRow
   /** L_k . x for a vector x. */
   double apply(const Vector<double> &x) const
   {
-    double s = 0.;
-    for (unsigned int i = 0; i < dofs.size(); ++i)
-      s += coefficients[i] * x[dofs[i]];
-    return s;
+    return apply(ArrayView<const double>(x.begin(), x.size()));
   }
 
   /** L_k . x for the values @p x of a vector (e.g. a column of a basis). */
