@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 # of the Craig-Bampton reduction: 30 % of the 3D crane's set-up with
 # Debian's reference BLAS), single-threaded so that the MPI suites keep one
 # process per core. Results differ from the reference BLAS's at round-off.
-packages=(libdeal.ii-dev numdiff libboost-program-options-dev cmake make g++
+packages=(libdeal.ii-dev libmumps-dev numdiff libboost-program-options-dev cmake make g++
           python3-numpy python3-matplotlib nlohmann-json3-dev libopenblas0-serial)
 missing=()
 for p in "${packages[@]}"; do

@@ -9,6 +9,7 @@
 #include <hati/analysis/row_elimination.h>
 #include <hati/linear_algebra/column_major.h>
 #include <hati/linear_algebra/direct_solver.h>
+#include <hati/linear_algebra/sparse_nonzeros.h>
 
 #include <algorithm>
 #include <chrono>
@@ -287,32 +288,45 @@ void CraigBamptonReduction::add_constraint_modes(const DiscreteSystem &system,
                        " found a zero pivot in the stiffness held at the boundary (the "
                        "implicit part moves as a rigid body with its interface held: "
                        "add supports or interface rows).");
+  // the particular parts U_p (g = e_k, masters 0), then T_0^T K T_0 v =
+  // -T_0^T K U_p, all boundary rows' right-hand sides at once (MUMPS: one
+  // pass through the factor for a block of them)
+  std::vector<double> rhs(std::size_t(n) * nb), v(std::size_t(n) * nb);
+  Vector<double> x(n + nb), U_p(n), column(n), product(n);
   for (unsigned int k = 0; k < nb; ++k)
   {
-    // the particular part U_p (g = e_k, masters 0), then T_0^T K T_0 v = -T_0^T K U_p
-    Vector<double> x(n + nb);
+    x = 0.;
     x[n + k] = 1.;
     elimination.distribute(x);
-    Vector<double> U_p(n), rhs(n), v(n), residual(n), correction(n);
     for (unsigned int i = 0; i < n; ++i)
       U_p[i] = x[i];
-    system.stiffness.vmult(rhs, U_p);
-    rhs *= -1.;
-    elimination.transpose_apply(rhs);
+    system.stiffness.vmult(column, U_p);
+    column *= -1.;
+    elimination.transpose_apply(column);
     for (unsigned int i = 0; i < n; ++i)
-      if (system.fixed[i])
-        rhs[i] = 0.;
-    solver.solve(v, rhs);
-    // one step of iterative refinement: thin plates make K ill conditioned
-    K_0.vmult(residual, v);
-    residual.sadd(-1., rhs);
-    solver.solve(correction, residual);
-    v += correction;
-    for (const auto &entry : elimination.slaves)
-      v[entry.first] = 0.;
+      rhs[std::size_t(k) * n + i] = system.fixed[i] ? 0. : column[i];
+  }
+  v = rhs;
+  solver.solve_many(v.data(), nb);
+  // one step of iterative refinement: thin plates make K ill conditioned
+  std::vector<double> residuals(std::size_t(n) * nb);
+  for (unsigned int k = 0; k < nb; ++k)
+  {
+    std::copy(v.begin() + std::size_t(k) * n,
+              v.begin() + std::size_t(k + 1) * n,
+              column.begin());
+    K_0.vmult(product, column);
+    for (unsigned int i = 0; i < n; ++i)
+      residuals[std::size_t(k) * n + i] = rhs[std::size_t(k) * n + i] - product[i];
+  }
+  solver.solve_many(residuals.data(), nb);
+  for (unsigned int k = 0; k < nb; ++k)
+  {
     x = 0.;
     for (unsigned int i = 0; i < n; ++i)
-      x[i] = v[i];
+      x[i] = v[std::size_t(k) * n + i] + residuals[std::size_t(k) * n + i];
+    for (const auto &entry : elimination.slaves)
+      x[entry.first] = 0.;
     x[n + k] = 1.;
     elimination.distribute(x);
     Vector<double> psi(n);
@@ -377,6 +391,11 @@ void CraigBamptonReduction::assemble_reduced_matrices(const DiscreteSystem &syst
   // T^T (M T) and T^T (K T) by blocks of columns, BLAS dgemm (the products
   // column by column, 38,000 dot products on the 3D crane, took 11 s)
   constexpr std::size_t width = 32;
+  // the consistent mass without its zero entries (a third of them for solids)
+  SparsityPattern mass_pattern;
+  SparseMatrix<double> mass;
+  if (system.has_consistent_mass())
+    copy_nonzeros(system.consistent_mass, mass_pattern, mass);
   std::vector<double> MT(n * width), KT(n * width), R(r * width);
   Vector<double> t(n), Mt(n), Kt(n);
   for (std::size_t b0 = 0; b0 < r; b0 += width)
@@ -386,7 +405,10 @@ void CraigBamptonReduction::assemble_reduced_matrices(const DiscreteSystem &syst
     {
       const ArrayView<const double> column_j = column(b0 + j);
       std::copy(column_j.begin(), column_j.end(), t.begin());
-      reduction_mass_vmult(system, t, Mt);
+      if (system.has_consistent_mass())
+        mass.vmult(Mt, t);
+      else
+        reduction_mass_vmult(system, t, Mt);
       system.stiffness.vmult(Kt, t);
       std::copy(Mt.begin(), Mt.end(), MT.begin() + j * n);
       std::copy(Kt.begin(), Kt.end(), KT.begin() + j * n);

@@ -31,6 +31,7 @@
 #include <hati/analysis/row_elimination.h>
 #include <hati/linear_algebra/column_major.h>
 #include <hati/linear_algebra/direct_solver.h>
+#include <hati/linear_algebra/sparse_nonzeros.h>
 
 #include <algorithm>
 #include <cmath>
@@ -421,6 +422,9 @@ struct ModalProblem::Data
   std::vector<bool> fixed;
   SparsityPattern condensed_pattern;
   SparseMatrix<double> K_condensed, M_condensed;
+  /** M() without its zero entries: the products of the Lanczos runs. */
+  SparsityPattern product_pattern;
+  SparseMatrix<double> M_products;
   unsigned int n_free = 0;
   /** The last factorisation, of the shift @p factorised_shift asked for. */
   mutable std::unique_ptr<ShiftedInverse> inverse;
@@ -454,6 +458,7 @@ struct ModalProblem::Data
       elimination.condense(matrices.M, zero, condensed_pattern, M_condensed);
     }
     n_free = std::count(fixed.begin(), fixed.end(), false);
+    copy_nonzeros(M(), product_pattern, M_products);
   }
 
   /** K of the eigenproblem solved (condensed if rows are eliminated). */
@@ -527,7 +532,9 @@ ModalProblem::modes_near(const double shift,
                          " (the number of modes)."));
   if (n_modes == 0)
     return {};
-  const SparseMatrix<double> &K = data->K(), &M = data->M();
+  // M on the pattern of K (shifted: K - sigma M) and without its zeros (products)
+  const SparseMatrix<double> &K = data->K(), &M = data->M(),
+                             &M_products = data->M_products;
   const std::vector<bool> &fixed = data->fixed;
   const unsigned int ncv = data->ncv(n_modes, deflated.size());
   const bool lanczos = lanczos_applies(n_modes, deflated.size());
@@ -546,7 +553,7 @@ ModalProblem::modes_near(const double shift,
     }
     const ShiftedInverse &inverse = *data->inverse;
     if (deflated.empty())
-      pairs = arpack_modes(K, M, fixed, inverse, inverse.shift(), n_modes, ncv);
+      pairs = arpack_modes(K, M_products, fixed, inverse, inverse.shift(), n_modes, ncv);
     else
     {
       // the deflated modes on the condensed problem: zero on its fixed DoFs
@@ -563,7 +570,7 @@ ModalProblem::modes_near(const double shift,
         }
       }
       pairs = arpack_modes(K,
-                           M,
+                           M_products,
                            fixed,
                            DeflatedInverse(inverse, Z, MZ, n_z),
                            inverse.shift(),
@@ -592,7 +599,8 @@ ModalProblem::modes_near(const double shift,
   for (unsigned int k = 0; k < n_modes; ++k)
   {
     Vector<double> &phi = pairs[k].phi;
-    normalise_and_check(k, pairs[k].lambda, K, M, fixed, norm_K, phi, pairs[k].Mphi);
+    normalise_and_check(
+        k, pairs[k].lambda, K, M_products, fixed, norm_K, phi, pairs[k].Mphi);
     data->elimination.distribute(phi);
     unsigned int largest = 0;
     for (unsigned int i = 0; i < phi.size(); ++i)

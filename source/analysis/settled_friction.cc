@@ -31,18 +31,28 @@ void settle_sticking_tangents(const DirectSolver &solver,
   const unsigned int nt = tangent_rows.size(), N = x.size();
   if (nt == 0)
     return;
-  // the columns of A^-1 on the tangent rows, one refinement step each
+  // the columns of A^-1 on the tangent rows, one refinement step each (all
+  // at once: one pass through the factor for the block)
+  std::vector<double> block(std::size_t(N) * nt, 0.), corrections(std::size_t(N) * nt);
+  for (unsigned int j = 0; j < nt; ++j)
+    block[std::size_t(j) * N + n + tangent_rows[j]] = 1.;
+  solver.solve_many(block.data(), nt);
   std::vector<Vector<double>> columns(nt, Vector<double>(N));
-  Vector<double> e(N), r(N), dx(N);
+  Vector<double> e(N), r(N);
   for (unsigned int j = 0; j < nt; ++j)
   {
+    std::copy(block.begin() + std::size_t(j) * N,
+              block.begin() + std::size_t(j + 1) * N,
+              columns[j].begin());
     e = 0.;
     e[n + tangent_rows[j]] = 1.;
-    solver.solve(columns[j], e);
     A.residual(r, columns[j], e);
-    solver.solve(dx, r);
-    columns[j] += dx;
+    std::copy(r.begin(), r.end(), corrections.begin() + std::size_t(j) * N);
   }
+  solver.solve_many(corrections.data(), nt);
+  for (unsigned int j = 0; j < nt; ++j)
+    for (unsigned int i = 0; i < N; ++i)
+      columns[j][i] += corrections[std::size_t(j) * N + i];
   LAPACKFullMatrix<double> S(nt, nt);
   double largest = 0.;
   for (unsigned int i = 0; i < nt; ++i)

@@ -139,7 +139,8 @@ std::vector<double> solve_closed(const DiscreteSystem &system,
                                  Vector<double> &U,
                                  const std::vector<unsigned int> &centred,
                                  const std::vector<unsigned int> &tangent_rows,
-                                 PlayProbe &probe)
+                                 PlayProbe &probe,
+                                 DirectSolver *reusable)
 {
   const unsigned int n = system.n_dofs(), m = closed.size(), N = n + m;
   const std::vector<bool> &fixed = system.fixed;
@@ -178,10 +179,14 @@ std::vector<double> solve_closed(const DiscreteSystem &system,
       }
     b[n + k] = closed_rhs[k];
   }
-  DirectSolver solver(package);
-  solver.factorize(A,
-                   singular_message + " with its closed contacts (" + package +
-                       " found a zero pivot in [K L^T; L 0]).");
+  DirectSolver local(package);
+  DirectSolver &solver = reusable ? *reusable : local;
+  const std::string failure = singular_message + " with its closed contacts (" + package +
+                              " found a zero pivot in [K L^T; L 0]).";
+  if (reusable)
+    solver.factorize_or_update(A, failure);
+  else
+    solver.factorize(A, failure);
   solver.solve(x, b);
   const double norm_b = b.l2_norm();
   for (unsigned int refinement = 0; refinement < 2; ++refinement)
@@ -223,14 +228,14 @@ std::vector<double> solve_closed(const DiscreteSystem &system,
       probe.rows.push_back(r);
   const unsigned int np = probe.rows.size();
   probe.block.assign(np * np, 0.);
+  // all the unit right-hand sides at once (one pass through the factor)
+  std::vector<double> columns(std::size_t(N) * np, 0.);
   for (unsigned int j = 0; j < np; ++j)
-  {
-    Vector<double> e(N);
-    e[n + probe.rows[j]] = 1.;
-    solver.solve(x, e);
+    columns[std::size_t(j) * N + n + probe.rows[j]] = 1.;
+  solver.solve_many(columns.data(), np);
+  for (unsigned int j = 0; j < np; ++j)
     for (unsigned int i = 0; i < np; ++i)
-      probe.block[i * np + j] = x[n + probe.rows[i]];
-  }
+      probe.block[i * np + j] = columns[std::size_t(j) * N + n + probe.rows[i]];
   return lambda;
 }
 
@@ -243,12 +248,19 @@ void solve_direct(const std::string &package,
                   const SparseMatrix<double> &K,
                   const Vector<double> &F,
                   const std::vector<bool> &fixed,
-                  Vector<double> &U)
+                  Vector<double> &U,
+                  DirectSolver *reusable)
 {
   const double norm_F = F.l2_norm();
   Vector<double> r(U.size());
-  DirectSolver solver(package);
-  solver.factorize(K, singular_message + " (" + package + " found a zero pivot in K).");
+  DirectSolver local(package);
+  DirectSolver &solver = reusable ? *reusable : local;
+  const std::string failure =
+      singular_message + " (" + package + " found a zero pivot in K).";
+  if (reusable)
+    solver.factorize_or_update(K, failure);
+  else
+    solver.factorize(K, failure);
   solver.solve(U, F);
   for (unsigned int refinement = 0; refinement < 2; ++refinement)
   {
@@ -341,6 +353,11 @@ struct StaticSolve
   std::vector<PushedPair> *pushed;
   /** Their block of the inverse saddle matrix (solve_closed()). */
   PlayProbe *probe;
+  /**
+   * A factorisation kept between the solves of the rope iteration
+   * (solve_with_ropes(): DirectSolver::factorize_or_update()), or nullptr.
+   */
+  DirectSolver *reusable = nullptr;
 };
 
 /**
@@ -372,7 +389,8 @@ void solve_linear(const StaticSolve &s,
                                                     U,
                                                     centred,
                                                     s.held.tangent_rows(),
-                                                    *s.probe);
+                                                    *s.probe,
+                                                    s.reusable);
     s.pushed->clear();
     const std::vector<double> forces =
         closed_contact_forces(s.system, s.contacts, lambda, F, s.pushed);
@@ -396,7 +414,7 @@ void solve_linear(const StaticSolve &s,
   }
 
   if (s.linear_solver != "iterative")
-    solve_direct(s.package, K, F, fixed, U);
+    solve_direct(s.package, K, F, fixed, U, s.reusable);
   else if (norm_F > 0.)
     solve_iterative(s.system, K, F, U);
 
@@ -444,6 +462,12 @@ void solve_with_ropes(const StaticSolve &s, const Vector<double> &F, Vector<doub
   U.reinit(n);
   Vector<double> U_next(n), Ft(n), rope_u(n);
   double du = 0., un = 0.;
+  // the ropes' tangent changes only their ends' rows: one factorisation,
+  // then low-rank updates of it (DirectSolver::factorize_or_update())
+  DirectSolver factorisation(s.package);
+  StaticSolve with_reuse = s;
+  if (s.linear_solver != "iterative")
+    with_reuse.reusable = &factorisation;
   for (unsigned int iteration = 0; iteration < max_rope_iterations; ++iteration)
   {
     SparseMatrix<double> K(system.stiffness_pattern);
@@ -462,7 +486,7 @@ void solve_with_ropes(const StaticSolve &s, const Vector<double> &F, Vector<doub
     for (unsigned int i = 0; i < n; ++i)
       if (fixed[i])
         Ft[i] = 0.;
-    solve_linear(s, K, Ft, U_next);
+    solve_linear(with_reuse, K, Ft, U_next);
     const double du_previous = iteration > 0 ? du : 0.;
     du = 0.;
     for (unsigned int i = 0; i < n; ++i)

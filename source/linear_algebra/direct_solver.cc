@@ -5,6 +5,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <hati/linear_algebra/direct_solver.h>
+#include <hati/linear_algebra/low_rank_update.h>
+#include <hati/linear_algebra/symmetric_mumps.h>
 
 #include <chrono>
 
@@ -19,6 +21,10 @@ struct DirectSolver::Data
   std::unique_ptr<TrilinosWrappers::SolverDirect> solver;
   // Epetra-compatible vectors of the solve
   LinearAlgebra::distributed::Vector<double> x, b;
+  // MUMPS's L D L^T of a symmetric matrix (instead of Amesos' L U)
+  std::unique_ptr<SymmetricMumps> symmetric;
+  // factorize_or_update(): the matrix factorised and the update of it
+  std::unique_ptr<LowRankUpdate> update;
 };
 
 std::string resolve_linear_solver(const std::string &linear_solver,
@@ -57,6 +63,23 @@ void DirectSolver::factorize(const SparseMatrix<double> &matrix,
 {
   const auto start = std::chrono::steady_clock::now();
   failure = failure_message;
+  size = matrix.m();
+  data->solver.reset();
+  data->symmetric.reset();
+  data->update.reset();
+  // MUMPS on a symmetric matrix: L D L^T called directly (SymmetricMumps)
+  if (amesos_package == "Amesos_Mumps" && is_symmetric(matrix))
+  {
+    data->symmetric = std::make_unique<SymmetricMumps>();
+    if (!data->symmetric->factorize(matrix))
+    {
+      data->symmetric.reset();
+      AssertThrow(false, ExcMessage(failure));
+    }
+    seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return;
+  }
   data->matrix.reinit(matrix, 0.);
   data->solver = std::make_unique<TrilinosWrappers::SolverDirect>(
       data->control,
@@ -76,20 +99,72 @@ void DirectSolver::factorize(const SparseMatrix<double> &matrix,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-bool DirectSolver::initialized() const { return data->solver != nullptr; }
+bool DirectSolver::initialized() const
+{
+  return data->solver != nullptr || data->symmetric != nullptr;
+}
+
+bool DirectSolver::factorize_or_update(const SparseMatrix<double> &matrix,
+                                       const std::string &failure_message,
+                                       const unsigned int max_rank)
+{
+  std::vector<unsigned int> rows;
+  if (data->update && initialized() &&
+      data->update->differing_rows(matrix, max_rank, rows))
+  {
+    failure = failure_message;
+    data->update->clear();
+    const bool regular =
+        data->update->update(matrix,
+                             rows,
+                             [this](double *columns, const unsigned int n_rhs)
+                             { solve_factorised(columns, n_rhs); });
+    AssertThrow(regular, ExcMessage(failure));
+    return false;
+  }
+  factorize(matrix, failure_message);
+  data->update = std::make_unique<LowRankUpdate>();
+  data->update->set_base(matrix);
+  return true;
+}
 
 void DirectSolver::solve(Vector<double> &x, const Vector<double> &b) const
 {
   Assert(initialized(), ExcMessage("DirectSolver::solve before factorize"));
-  std::copy(b.begin(), b.end(), data->b.begin());
-  try
+  if (&x != &b)
+    x = b;
+  solve_many(x.begin(), 1);
+}
+
+void DirectSolver::solve_many(double *columns, const unsigned int n_rhs) const
+{
+  Assert(initialized(), ExcMessage("DirectSolver::solve_many before factorize"));
+  solve_factorised(columns, n_rhs);
+  if (data->update && data->update->active())
+    for (unsigned int k = 0; k < n_rhs; ++k)
+      data->update->correct(columns + std::size_t(k) * size);
+}
+
+void DirectSolver::solve_factorised(double *columns, const unsigned int n_rhs) const
+{
+  if (data->symmetric)
   {
-    data->solver->solve(data->x, data->b);
+    AssertThrow(data->symmetric->solve(columns, n_rhs), ExcMessage(failure));
+    return;
   }
-  catch (const std::exception &)
+  for (unsigned int k = 0; k < n_rhs; ++k)
   {
-    AssertThrow(false, ExcMessage(failure));
+    double *const column = columns + std::size_t(k) * size;
+    std::copy(column, column + size, data->b.begin());
+    try
+    {
+      data->solver->solve(data->x, data->b);
+    }
+    catch (const std::exception &)
+    {
+      AssertThrow(false, ExcMessage(failure));
+    }
+    std::copy(data->x.begin(), data->x.end(), column);
   }
-  std::copy(data->x.begin(), data->x.end(), x.begin());
 }
 } // namespace hati

@@ -28,7 +28,8 @@ using namespace dealii;
  * tangents' multipliers are split into their projection on the null space
  * (the forces the mechanisms need, kept) and the rest (self-stress), which
  * the slips `delta = -S^+ (rest)` relieve: `b` on the tangent rows gets
- * `delta` and `x` becomes `A^-1 b`. One back-substitution per tangent row.
+ * `delta` and `x` becomes `A^-1 b`. One back-substitution pass for all the tangent rows
+ * (DirectSolver::solve_many()), one more for their refinement.
  */
 void settle_sticking_tangents(const DirectSolver &solver,
                               const SparseMatrix<double> &A,

@@ -73,9 +73,28 @@ public:
    */
   void factorize(const SparseMatrix<double> &matrix, const std::string &failure_message);
 
+  /**
+   * Factorise @p matrix as factorize() does, unless it differs from the
+   * matrix of the last factorize_or_update() that factorised (same
+   * pattern) only in at most @p max_rank rows and columns: then keep that
+   * factorisation and solve with a low-rank correction (LowRankUpdate,
+   * Woodbury). Returns whether it factorised.
+   */
+  bool factorize_or_update(const SparseMatrix<double> &matrix,
+                           const std::string &failure_message,
+                           unsigned int max_rank = 48);
+
   /** x = A^-1 b; @p x and @p b may be the same vector. */
   void solve(Vector<double> &x, const Vector<double> &b) const;
 
+  /**
+   * Solve in place for @p n_rhs right-hand sides at once: @p columns holds
+   * them one after another (column-major, the matrix's size each) and gets
+   * the solutions. With MUMPS on a symmetric matrix one substitution pass
+   * serves them all (BLAS 3 on the factor's blocks); otherwise one solve()
+   * each.
+   */
+  void solve_many(double *columns, unsigned int n_rhs) const;
   /** Whether factorize() succeeded. */
   bool initialized() const;
 
@@ -86,11 +105,16 @@ public:
   const std::string &package() const { return amesos_package; }
 
 private:
+  /** Solve in place with the factorisation only (no LowRankUpdate). */
+  void solve_factorised(double *columns, unsigned int n_rhs) const;
+
   struct Data;
   std::unique_ptr<Data> data;
   std::string amesos_package;
   std::string failure;
   double seconds = 0.;
+  /** The size of the factorised matrix. */
+  std::size_t size = 0;
 };
 } // namespace hati
 

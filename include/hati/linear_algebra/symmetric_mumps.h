@@ -1,0 +1,70 @@
+#ifndef hati_linear_algebra_symmetric_mumps_h
+#define hati_linear_algebra_symmetric_mumps_h
+
+#include <deal.II/lac/sparse_matrix.h>
+
+#include <memory>
+#include <vector>
+
+namespace hati
+{
+using namespace dealii;
+
+/** Relative mismatch of `a_ij` and `a_ji` that is_symmetric() accepts (-). */
+constexpr double symmetry_tolerance = 1e-12;
+
+/**
+ * Whether @p matrix is symmetric: every pair of entries `a_ij`, `a_ji`
+ * agrees to symmetry_tolerance of the largest entry of rows i and j (an
+ * entry missing from the pattern counts as zero). The matrices that hati factorises (the
+ * Newmark effective matrix of N2, the static saddle matrix, the shifted stiffness of the
+ * modal analysis, the condensed stiffness of C1) are symmetric; this checks
+ * it before the symmetric factorisation of SymmetricMumps.
+ */
+bool is_symmetric(const SparseMatrix<double> &matrix);
+
+/**
+ * A symmetric (possibly indefinite) sparse matrix factorised `L D L^T` by
+ * MUMPS directly (`sym = 2`, on `MPI_COMM_SELF`), then any number of
+ * forward/backward substitutions, one or many right-hand sides at once.
+ *
+ * Why not through Amesos: Trilinos 13.2's Amesos_Mumps always asks MUMPS
+ * for an unsymmetric `L U` (its `MDS.sym = 0`, Amesos bug 2331), twice the
+ * factorisation's work and memory of `L D L^T`, twice the factor that every
+ * substitution reads; and it solves a multi-vector one column at a time.
+ * Only the upper triangle of the matrix is handed over (MUMPS sums the two
+ * triangles' entries otherwise).
+ */
+class SymmetricMumps
+{
+public:
+  SymmetricMumps();
+  ~SymmetricMumps();
+  SymmetricMumps(const SymmetricMumps &) = delete;
+  SymmetricMumps &operator=(const SymmetricMumps &) = delete;
+
+  /**
+   * Analyse and factorise @p matrix (symmetric: is_symmetric()). Returns
+   * false if MUMPS fails (a singular matrix: a zero pivot), true otherwise.
+   */
+  bool factorize(const SparseMatrix<double> &matrix);
+
+  /**
+   * Solve in place: @p columns holds @p n_rhs right-hand sides of the
+   * matrix's size one after another (column-major) and gets the solutions.
+   * Returns false if MUMPS reports an error.
+   */
+  bool solve(double *columns, unsigned int n_rhs) const;
+
+  /** The size of the factorised matrix. */
+  unsigned int size() const { return n; }
+
+private:
+  struct Data;
+  std::unique_ptr<Data> data;
+  unsigned int n = 0;
+};
+
+} // namespace hati
+
+#endif
