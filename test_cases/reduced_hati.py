@@ -41,6 +41,8 @@ reduction changes only the implicit part's basis).
    closes with the damping's dissipation (1e-10; measured 1.6e-14), which
    the undamped run of section 1 does not have, and summary.json
    `reduction.modal_damping_ratio` (null in section 1)."""
+import re
+
 import numpy as np
 
 from hati_test import Context, read_csv, read_summary
@@ -147,8 +149,18 @@ full, _ = ctx.run(prm, "rows_full", ROWS + ["Output/Section force interval=1e-4"
                                             "Output/Output interval=1e-4"])
 hp, hf = read_csv(partial + "/history.csv"), read_csv(full + "/history.csv")
 ctx.check_true("rows: the same history rows", len(hp) == len(hf) and len(hp) > 100, str(len(hp)))
-worst = max(np.max(np.abs(hp[c] - hf[c])) / max(np.max(np.abs(hf[c])), 1e-300)
-            for c in hf.dtype.names if c != "time")
+# each column against its peak, at least 1e-3 of the largest peak of its
+# kind (displacements u..., velocities v...): the axial columns (ux, vx) are
+# round-off of zero here (1e-17 m of 3e-3 m), whose two summation orders
+# (the rows of T against BLAS dgemv, whose order depends on the kernels
+# OpenBLAS picks) differ by 2e-4 of themselves
+def kind(c):
+    return re.search(r"([uv])r?[xyz]$", c).group(1)
+columns = [c for c in hf.dtype.names if c != "time"]
+largest = {k: max(np.max(np.abs(hf[c])) for c in columns if kind(c) == k)
+           for k in ("u", "v")}
+worst = max(np.max(np.abs(hp[c] - hf[c])) /
+            max(np.max(np.abs(hf[c])), 1e-3 * largest[kind(c)], 1e-300) for c in columns)
 ctx.check("rows: history, partial against full recovery / peak", worst, 0.0, abs_tol=1e-12)
 ep = read_summary(partial)["section_force_envelope"]
 ef = read_summary(full)["section_force_envelope"]
