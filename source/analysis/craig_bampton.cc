@@ -17,6 +17,7 @@
 #include <limits>
 #include <numeric>
 #include <sstream>
+#include <tuple>
 
 namespace hati
 {
@@ -383,12 +384,12 @@ void CraigBamptonReduction::add_fixed_interface_modes(
 
 void CraigBamptonReduction::assemble_reduced_matrices(const DiscreteSystem &system)
 {
-  const std::size_t r = size(), n = n_rows;
+  const std::size_t r = size(), n = n_rows, nb = n_boundary();
   reduced_mass.reinit(r, r);
   reduced_stiffness.reinit(r, r);
   if (r == 0 || n == 0)
     return;
-  // T^T (M T) and T^T (K T) by blocks of columns, BLAS dgemm (the products
+  // T^T (M T) and T^T (K Psi) by blocks of columns, BLAS dgemm (the products
   // column by column, 38,000 dot products on the 3D crane, took 11 s)
   constexpr std::size_t width = 32;
   // the consistent mass without its zero entries (a third of them for solids)
@@ -401,6 +402,8 @@ void CraigBamptonReduction::assemble_reduced_matrices(const DiscreteSystem &syst
   for (std::size_t b0 = 0; b0 < r; b0 += width)
   {
     const std::size_t w = std::min(width, r - b0);
+    // the stiffness products of the constraint modes only (below)
+    const std::size_t w_K = b0 < nb ? std::min(w, nb - b0) : 0;
     for (std::size_t j = 0; j < w; ++j)
     {
       const ArrayView<const double> column_j = column(b0 + j);
@@ -409,18 +412,36 @@ void CraigBamptonReduction::assemble_reduced_matrices(const DiscreteSystem &syst
         mass.vmult(Mt, t);
       else
         reduction_mass_vmult(system, t, Mt);
-      system.stiffness.vmult(Kt, t);
       std::copy(Mt.begin(), Mt.end(), MT.begin() + j * n);
-      std::copy(Kt.begin(), Kt.end(), KT.begin() + j * n);
+      if (j < w_K)
+      {
+        system.stiffness.vmult(Kt, t);
+        std::copy(Kt.begin(), Kt.end(), KT.begin() + j * n);
+      }
     }
-    for (auto [product, reduced] :
-         {std::make_pair(&MT, &reduced_mass), std::make_pair(&KT, &reduced_stiffness)})
+    for (auto [product, reduced, columns] :
+         {std::make_tuple(&MT, &reduced_mass, w),
+          std::make_tuple(&KT, &reduced_stiffness, w_K)})
     {
-      column_major_mmult(true, r, w, n, basis.data(), product->data(), R.data());
-      for (std::size_t j = 0; j < w; ++j)
+      if (columns == 0)
+        continue;
+      column_major_mmult(true, r, columns, n, basis.data(), product->data(), R.data());
+      for (std::size_t j = 0; j < columns; ++j)
         for (std::size_t a = 0; a < r; ++a)
           (*reduced)(a, b0 + j) = R[j * r + a];
     }
+  }
+  // the modes' columns of T^T K T without products: Psi^T K phi_j =
+  // (K Psi)^T phi_j (computed), and K phi_j = lambda_j M phi_j + L^T mu_j
+  // (the interface and support reactions, where phi_i vanishes), so that
+  // phi_i^T K phi_j = lambda_j phi_i^T M phi_j (doc/theory.md 12.1)
+  for (std::size_t j = nb; j < r; ++j)
+  {
+    const double omega = 2. * M_PI * modal_frequencies[j - nb];
+    for (std::size_t a = 0; a < nb; ++a)
+      reduced_stiffness(a, j) = reduced_stiffness(j, a);
+    for (std::size_t a = nb; a < r; ++a)
+      reduced_stiffness(a, j) = omega * omega * reduced_mass(a, j);
   }
   // symmetric to round-off: the mean of the two triangles
   for (auto *reduced : {&reduced_mass, &reduced_stiffness})

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <memory>
 #include <sstream>
 
 namespace hati
@@ -276,11 +277,33 @@ void OutputWriter::write_vtu(const OutputState &s)
     model.write_vtu(out, snapshot);
     out.close();
   }
-  for (const auto &other : series)
+  // the other series' snapshots (the solids': most of a snapshot's time)
+  // are written by a second thread while the run goes on, one snapshot at
+  // a time: the previous one is complete first (its index then names it)
+  wait_for_series();
+  if (!series.empty())
   {
-    OutputStream out(run.open(snapshot_name(other, cycle)));
-    model.write_series_vtu(other, out, snapshot);
-    out.close();
+    auto files = std::make_shared<std::vector<OutputFile>>();
+    for (const auto &other : series)
+      files->push_back(run.open(snapshot_name(other, cycle)));
+    // the fields the series read, copied (the run changes them meanwhile)
+    auto fields = std::make_shared<std::vector<std::pair<std::string, Vector<double>>>>();
+    for (const auto &[field, values] : snapshot.fields)
+      fields->emplace_back(field, *values);
+    const double time = s.time;
+    pending_series = std::async(std::launch::async,
+                                [this, files, fields, time, cycle]()
+                                {
+                                  VtuSnapshot copy{{}, time, cycle};
+                                  for (const auto &[field, values] : *fields)
+                                    copy.fields.emplace_back(field, &values);
+                                  for (unsigned int k = 0; k < series.size(); ++k)
+                                  {
+                                    OutputStream out(std::move((*files)[k]));
+                                    model.write_series_vtu(series[k], out, copy);
+                                    out.close();
+                                  }
+                                });
   }
   // the indices name complete snapshots only, and are replaced atomically
   vtu_files.emplace_back(s.time, name);
@@ -292,19 +315,28 @@ void OutputWriter::write_vtu(const OutputState &s)
   pvd_durable =
       std::chrono::duration<double>(now - last_pvd_sync).count() >= flush_interval;
   run.replace("solution.pvd", pvd.str(), pvd_durable);
+  if (pvd_durable)
+    last_pvd_sync = now;
+  write_envelopes(false);
+  flush();
+}
+
+void OutputWriter::wait_for_series()
+{
+  if (!pending_series.valid())
+    return;
+  pending_series.get(); // rethrows the writer's error
+  // the series' indices: every snapshot up to the one just completed
+  const unsigned int complete = vtu_files.size();
   for (const auto &other : series)
   {
     std::vector<std::pair<double, std::string>> files;
-    for (unsigned int k = 0; k < vtu_files.size(); ++k)
+    for (unsigned int k = 0; k < complete; ++k)
       files.emplace_back(vtu_files[k].first, snapshot_name(other, k));
     std::ostringstream index;
     DataOutBase::write_pvd_record(index, files);
     run.replace(other + ".pvd", index.str(), pvd_durable);
   }
-  if (pvd_durable)
-    last_pvd_sync = now;
-  write_envelopes(false);
-  flush();
 }
 
 void OutputWriter::update_envelopes(const double time, const Vector<double> &displacement)
@@ -324,6 +356,7 @@ void OutputWriter::write_envelopes(const bool durable)
 
 void OutputWriter::finish()
 {
+  wait_for_series();
   flush();
   if (!pvd_durable)
   {

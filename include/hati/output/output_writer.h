@@ -12,6 +12,7 @@
 #include <hati/time/energies.h>
 
 #include <chrono>
+#include <future>
 #include <map>
 #include <sstream>
 #include <string>
@@ -98,6 +99,10 @@ struct OutputState
  * ends on a complete line at every instant. `solution.pvd` is replaced
  * atomically after its snapshot is complete, and made durable (fsync) at
  * most every 2 s and by finish(); so are the indices of the other series.
+ * The other series' snapshots (the solids': evaluating and compressing
+ * their stresses takes most of a snapshot's time) are written by a second
+ * thread while the run goes on, one at a time; their indices name a
+ * snapshot once it is complete (at the next snapshot or in finish()).
  */
 class OutputWriter
 {
@@ -159,6 +164,11 @@ private:
   void group_friction(const OutputState &state);
   /** Replace the model's envelope files by their current content. */
   void write_envelopes(const bool durable);
+  /**
+   * Wait until the snapshot of the other series being written is complete
+   * (rethrowing its error), then replace their indices to name it.
+   */
+  void wait_for_series();
 
   RunDirectory &run;
   const std::string dir;
@@ -189,6 +199,13 @@ private:
   std::vector<std::pair<double, std::string>> vtu_files;
   /** The model's VTU series besides `solution` and its envelope files. */
   const std::vector<std::string> series, envelope_files;
+  /**
+   * The snapshot of the other series being written by a second thread
+   * (write_vtu(); at most one at a time: wait_for_series()). Declared last:
+   * destroyed first, its destructor waits for the thread, which uses the
+   * members above.
+   */
+  std::future<void> pending_series;
 };
 
 } // namespace hati
