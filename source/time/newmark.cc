@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <hati/linear_algebra/amg_preconditioner.h>
+#include <hati/linear_algebra/column_major.h>
 #include <hati/time/newmark.h>
 
 #include <algorithm>
@@ -341,6 +342,9 @@ void Newmark::build_row_operators()
       }
     row_start.push_back(row_column.size());
   }
+  // a dense operator (a reduced part, 12.2 of doc/theory.md): its rows are a
+  // row-major matrix, whose products go to BLAS dgemv
+  dense_rows = n >= dense_rows_from && row_column.size() == std::size_t(n) * n;
 }
 
 void Newmark::row_vmult(const std::vector<double> &values,
@@ -348,6 +352,12 @@ void Newmark::row_vmult(const std::vector<double> &values,
                         const Vector<double> &src) const
 {
   const unsigned int n = dst.size();
+  if (dense_rows)
+  {
+    // row-major n x n: the transpose of a column-major one
+    column_major_vmult(true, n, n, 1., values.data(), src.data(), 0., dst.data());
+    return;
+  }
   for (unsigned int i = 0; i < n; ++i)
   {
     double s = 0.;
@@ -475,6 +485,16 @@ void Newmark::free_step()
   // (N2) M_eff A_{n+1} = F_{n+1} - C V* - K U*, K and C in one pass
   const double t_new = (n_steps + 1) * dt;
   system.external_force(t_new, F_new);
+  if (dense_rows)
+  {
+    // r = F - K U* - C V* (row-major: the transposes of column-major matrices)
+    double *const r = rhs.data();
+    column_major_vmult(true, n, n, -1., row_stiffness.data(), displacement, 0., r);
+    column_major_vmult(true, n, n, -1., row_damping.data(), V_star.data(), 1., r);
+    for (unsigned int i = 0; i < n; ++i)
+      r[i] = system.fixed[i] ? 0. : F_new[i] + r[i];
+  }
+  else
   {
     const double *__restrict f = F_new.data(), *__restrict us = displacement,
                              *__restrict vs = V_star.data(),

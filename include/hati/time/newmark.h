@@ -19,6 +19,13 @@ namespace hati
 using namespace dealii;
 
 /**
+ * Size (DoFs) from which Newmark stores a fully dense system (a reduced
+ * part) as dense rows and multiplies through BLAS: below it, the rows'
+ * own loop (the small models' results stay bitwise those of the sparse path).
+ */
+constexpr unsigned int dense_rows_from = 64;
+
+/**
  * Parameters of the implicit Newmark integrator (algorithms.md section 2,
  * N1-N3). The defaults are the average acceleration scheme (trapezoidal rule,
  * `beta = 1/4`, `gamma = 1/2`): unconditionally stable, second order, no
@@ -282,6 +289,12 @@ private:
   double factorization_seconds = 0.;
 
   // K and C on one pattern, row by row (build_row_operators())
+  /**
+   * Whether every row holds every column (a reduced part's dense matrices,
+   * from dense_rows_from DoFs): the row operators are then row-major dense
+   * matrices and their products BLAS dgemv (build_row_operators()).
+   */
+  bool dense_rows = false;
   std::vector<std::size_t> row_start;
   std::vector<unsigned int> row_column;
   std::vector<double> row_stiffness, row_damping;
