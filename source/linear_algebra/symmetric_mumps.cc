@@ -98,10 +98,8 @@ bool SymmetricMumps::factorize(const SparseMatrix<double> &matrix)
       {
         rows.push_back(i + 1);
         columns.push_back(it->column() + 1);
-        // the symmetric part (is_symmetric(): the two differ at round-off)
-        values.push_back(it->column() == i
-                             ? it->value()
-                             : 0.5 * (it->value() + matrix.el(it->column(), i)));
+        // (is_symmetric(): the lower triangle equals it to round-off)
+        values.push_back(it->value());
       }
 
   m = DMUMPS_STRUC_C();
