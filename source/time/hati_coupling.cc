@@ -54,8 +54,9 @@ void HATIParameters::declare_parameters(ParameterHandler &prm)
       "true",
       Patterns::Bool(),
       "true: a macro step with contacts or ropes within reach of the interface whose "
-      "pushing contacts stay the same and stick over the macro step (and whose ropes "
-      "the correction moves by less than round-off) adds the interface correction by "
+      "pushing contacts stay the same and stick over the macro step (and whose ropes' "
+      "forces the correction changes by at most 1e-8 of their largest tension) adds the "
+      "interface correction by "
       "superposition of the unit-ramp responses (doc/theory.md 9.6); the others are "
       "redone with the full multiplier. false (a check, slower): every such macro step "
       "is redone; the results agree with true to round-off and the friction solver's "
@@ -188,7 +189,10 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
         v_end[k] = v;
       }
     if (pass)
+    {
       record.record_load_weights(j, explicit_view);
+      record.record_law_forces(j, explicit_integrator);
+    }
     if (record_damping)
       record.record_damping_force(j, explicit_view.damping_force());
     if (record_contacts)

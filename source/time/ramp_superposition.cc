@@ -39,10 +39,14 @@ RampSuperposition::RampSuperposition(const DiscreteSystem &system,
   for (unsigned int i = 0; i < laws.size(); ++i)
   {
     const auto dofs = laws[i]->nonlinear_dofs();
-    if (!dofs.empty())
-      nonlinear_laws.push_back(i);
+    if (dofs.empty())
+      continue;
+    nonlinear_laws.push_back(i);
+    nonlinear_first.push_back(nonlinear_dofs.size());
     nonlinear_dofs.insert(nonlinear_dofs.end(), dofs.begin(), dofs.end());
   }
+  nonlinear_first.push_back(nonlinear_dofs.size());
+  pass_law_force.assign((m + 1) * nonlinear_dofs.size(), 0.);
   compute_ramp({}, open_ramp, false);
   find_reach();
   if (contacts_in_reach() || damped)
@@ -149,8 +153,13 @@ void RampSuperposition::compute_ramp(const std::vector<bool> &active_set,
   FullMatrix<double> increment_sum(n_gamma, n_gamma),
       increment_weighted(n_gamma, n_gamma);
   FullMatrix<double> H_E(n_gamma, n_gamma);
-  // the displacements on the nonlinear laws' DoFs after each micro step
-  FullMatrix<double> nonlinear_displacement(m * nonlinear_dofs.size(), n_gamma);
+  // the displacements on the nonlinear laws' DoFs after each micro step, and
+  // their velocities V_{j-1/2} before it (a held DoF: 0)
+  const unsigned int n_nonlinear = nonlinear_dofs.size();
+  FullMatrix<double> nonlinear_displacement(m * n_nonlinear, n_gamma),
+      nonlinear_velocity(m * n_nonlinear, n_gamma);
+  const auto at = [](const Vector<double> &x, const types::global_dof_index dof)
+  { return dof == numbers::invalid_dof_index ? 0. : x[dof]; };
   r.load_work.assign(shapes.size(),
                      std::vector<Vector<double>>(m, Vector<double>(n_gamma)));
   // filled as dense per micro step, stored sparse
@@ -189,6 +198,8 @@ void RampSuperposition::compute_ramp(const std::vector<bool> &active_set,
       if (with_damping)
         for (unsigned int i = 0; i < nR; ++i)
           velocity_reach[j](i, l) = V[reach_dofs[i]];
+      for (unsigned int i = 0; i < n_nonlinear; ++i)
+        nonlinear_velocity((j - 1) * n_nonlinear + i, l) = at(V, nonlinear_dofs[i]);
       ramp.predict();
       ramp.free_velocity(false);
       ramp.add_force(rows_E[l], double(j) / m); // unit ramp (j/m) e_l
@@ -197,9 +208,9 @@ void RampSuperposition::compute_ramp(const std::vector<bool> &active_set,
       if (j == m)
         for (unsigned int k = 0; k < n_gamma; ++k)
           H_E(k, l) = integer_velocity(rows_E[k], ramp);
-      for (unsigned int i = 0; i < nonlinear_dofs.size(); ++i)
-        nonlinear_displacement((j - 1) * nonlinear_dofs.size() + i, l) =
-            integrator.displacement()[nonlinear_dofs[i]];
+      for (unsigned int i = 0; i < n_nonlinear; ++i)
+        nonlinear_displacement((j - 1) * n_nonlinear + i, l) =
+            at(integrator.displacement(), nonlinear_dofs[i]);
       for (unsigned int c = 0; c < nrc; ++c)
       {
         const auto &row = system.contacts[reach_contacts[c]];
@@ -251,6 +262,7 @@ void RampSuperposition::compute_ramp(const std::vector<bool> &active_set,
   if (with_damping)
     store_dissipation(velocity_reach, damping_reach, r);
   r.nonlinear_displacement = SparseColumns(nonlinear_displacement);
+  r.nonlinear_velocity = SparseColumns(nonlinear_velocity);
   r.increment_sum = SparseColumns(increment_sum);
   r.increment_weighted = SparseColumns(increment_weighted);
   r.H_E = SparseColumns(H_E);
@@ -344,6 +356,7 @@ RampSuperposition::response_for_pass(bool &same_active_set)
 void RampSuperposition::start_pass(const CDLagrange &integrator, const bool contacts)
 {
   pass_load_weight.resize(system.time_dependent_loads.size() * m);
+  record_law_forces(0, integrator);
   // the normal velocities L V_{j-1/2} before each micro step: the first
   // here, the others from the sample after the step before
   const unsigned int nrc = reach_contacts.size();
@@ -376,6 +389,8 @@ bool RampSuperposition::superpose(const Response &r,
   if (contacts_in_reach() &&
       !superpose_contacts(r, lambda, integrator, samples, n_samples))
     return false;
+  if (r.moves_nonlinear_law)
+    add_nonlinear_work(r, lambda, integrator);
 
   // superposition of the ramp response: the state, the interface
   // increments and the work of the time-dependent loads
@@ -424,6 +439,38 @@ bool RampSuperposition::nonlinear_laws_hold(const Response &r,
           nonlinear_force_tolerance))
       return false;
   return true;
+}
+
+void RampSuperposition::add_nonlinear_work(const Response &r,
+                                           const Vector<double> &lambda,
+                                           CDLagrange &integrator)
+{
+  // the work of the pass's forces of each law on the velocity the correction
+  // adds, sum_j 1/2 dt dV_{j-1/2} . (F_{j-1} + F_j) (the trapezoid of the
+  // law's step() on the corrected velocities; the change of the forces
+  // themselves is below nonlinear_force_tolerance and left out)
+  const unsigned int n = nonlinear_dofs.size();
+  if (ramp_nonlinear.size() != m * n)
+    ramp_nonlinear.reinit(m * n);
+  r.nonlinear_velocity.vmult(ramp_nonlinear, lambda);
+  for (unsigned int a = 0; a < nonlinear_laws.size(); ++a)
+  {
+    double work = 0.;
+    for (unsigned int j = 1; j <= m; ++j)
+      for (unsigned int i = nonlinear_first[a]; i < nonlinear_first[a + 1]; ++i)
+        work += 0.5 * dt * ramp_nonlinear[(j - 1) * n + i] *
+                (pass_law_force[(j - 1) * n + i] + pass_law_force[j * n + i]);
+    integrator.force_laws()[nonlinear_laws[a]]->add_superposed_work(work);
+  }
+}
+
+void RampSuperposition::record_law_forces(const unsigned int j,
+                                          const CDLagrange &integrator)
+{
+  const unsigned int n = nonlinear_dofs.size();
+  for (unsigned int a = 0; a < nonlinear_laws.size(); ++a)
+    integrator.force_laws()[nonlinear_laws[a]]->applied_force(pass_law_force.data() +
+                                                              j * n + nonlinear_first[a]);
 }
 
 bool RampSuperposition::superpose_contacts(const Response &r,

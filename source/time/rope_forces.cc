@@ -96,6 +96,14 @@ std::vector<types::global_dof_index> RopeForces::nonlinear_dofs() const
   return dofs;
 }
 
+void RopeForces::applied_force(double *f) const
+{
+  // before start(): no force yet
+  for (unsigned int r = 0; r < ropes.size(); ++r)
+    for (unsigned int a = 0; a < 6; ++a)
+      f[6 * r + a] = r < current.force.size() ? current.force[r][a] : 0.;
+}
+
 double RopeForces::relative_force_change(const double du) const
 {
   if (du == 0.)

@@ -151,6 +151,20 @@ public:
   {
     return du == 0. ? 0. : std::numeric_limits<double>::infinity();
   }
+
+  /**
+   * The force (N) the last step applied on each DoF of nonlinear_dofs(),
+   * in that order, into @p f (HATI's superposition books its work on the
+   * corrected velocities, G3'). Nothing by default (a law without
+   * nonlinear_dofs()).
+   */
+  virtual void applied_force(double *f) const { (void)f; }
+
+  /**
+   * Add @p work (J) to the law's work on the structure: what a
+   * superposition (G3') changed of the trapezoid of step() (E1).
+   */
+  virtual void add_superposed_work(const double work) { (void)work; }
   /** @} */
 
   /** @name Rows of the velocity-level operator (A4-A6) */

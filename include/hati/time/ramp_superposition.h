@@ -134,9 +134,12 @@ public:
    * superposed only while the change of the law's force it can cause is at
    * most this fraction of the law's force scale
    * (ForceLaw::relative_force_change()): the pass's forces of the law then
-   * hold for the corrected micro steps to this fraction.
+   * hold for the corrected micro steps to this fraction, the tolerance to
+   * which a redone macro step meets the velocity continuity
+   * (continuity_tolerance; doc/theory.md 10.5). The work of the pass's
+   * forces on the corrected velocities is booked (add_nonlinear_work()).
    */
-  static constexpr double nonlinear_force_tolerance = 1e-12;
+  static constexpr double nonlinear_force_tolerance = 1e-8;
   /** @} */
 
   /**
@@ -205,7 +208,12 @@ public:
      * `(j - 1) n_nonlinear + i`), or the micro steps are redone.
      */
     bool moves_nonlinear_law = false;
-    SparseColumns nonlinear_displacement;
+    /**
+     * With moves_nonlinear_law: the velocities `V_{j-1/2}` on those DoFs
+     * before micro step j (rows as nonlinear_displacement), for the work of
+     * the pass's forces on the corrected velocities.
+     */
+    SparseColumns nonlinear_displacement, nonlinear_velocity;
   };
 
   /** Whether contacts are within reach of the ramp response. */
@@ -247,6 +255,11 @@ public:
   void record_stiffness_velocity(const unsigned int j);
   /** After micro step @p j: the load weights of its step. */
   void record_load_weights(const unsigned int j, const CDLagrange::CouplingView &view);
+  /**
+   * After micro step @p j (before the first, from start_pass(): j = 0): the
+   * forces the nonlinear laws applied (ForceLaw::applied_force()).
+   */
+  void record_law_forces(const unsigned int j, const CDLagrange &integrator);
   /** After micro step @p j (before the first: j = 0): d_j on the reach. */
   void record_damping_force(const unsigned int j, const Vector<double> &d);
   /**
@@ -330,6 +343,14 @@ private:
   bool nonlinear_laws_hold(const Response &r,
                            const Vector<double> &lambda,
                            const CDLagrange &integrator);
+  /**
+   * The work the correction `r lambda` adds to each nonlinear law: its
+   * pass's forces on the velocities the correction adds to its DoFs, the
+   * trapezoid of ForceLaw::step() (ForceLaw::add_superposed_work()).
+   */
+  void add_nonlinear_work(const Response &r,
+                          const Vector<double> &lambda,
+                          CDLagrange &integrator);
   /** The contacts of superpose(): false if the active set does not hold. */
   bool superpose_contacts(const Response &r,
                           const Vector<double> &lambda,
@@ -358,6 +379,10 @@ private:
   std::vector<types::global_dof_index> nonlinear_dofs;
   /** The indices of those laws among the integrator's force_laws(). */
   std::vector<unsigned int> nonlinear_laws;
+  /** Where each of those laws' DoFs start in nonlinear_dofs (one more entry). */
+  std::vector<unsigned int> nonlinear_first;
+  /** The forces those laws applied in the pass, row `j n_nonlinear + i` (N). */
+  std::vector<double> pass_law_force;
   /** Work vector of nonlinear_laws_hold(). */
   Vector<double> ramp_nonlinear;
   // contacts within reach of the ramp response (indices)

@@ -80,6 +80,9 @@ public:
    * taut and @p du > 0).
    */
   double relative_force_change(const double du) const override;
+  /** `F_r,n+1` of every rope, hook x, y, z, load x, y, z (held DoFs: 0). */
+  void applied_force(double *f) const override;
+  void add_superposed_work(const double work) override { current.work += work; }
 
   /**
    * 0: the ropes' bound `k (1/m_a + 1/m_b)` is part of the model's
