@@ -33,6 +33,20 @@ void select_blas_kernels(char **argv)
   if (target == nullptr)
     return;
   setenv("OPENBLAS_CORETYPE", target, 1);
+  // OpenBLAS's dynamic-architecture entry points: forget the kernel table
+  // and choose it again, now from OPENBLAS_CORETYPE (what OpenBLAS does when
+  // it is loaded); no BLAS call has run yet. Where they are missing or the
+  // core did not change, start again with the variable set (0.5 s more)
+  using Entry = void (*)();
+  const auto quit = reinterpret_cast<Entry>(dlsym(RTLD_DEFAULT, "gotoblas_dynamic_quit"));
+  const auto init = reinterpret_cast<Entry>(dlsym(RTLD_DEFAULT, "gotoblas_dynamic_init"));
+  if (quit != nullptr && init != nullptr)
+  {
+    quit();
+    init();
+    if (core_name() != nullptr && std::string(core_name()) == target)
+      return;
+  }
   execv("/proc/self/exe", argv);
   // exec failed: go on with the kernels OpenBLAS chose
   unsetenv("OPENBLAS_CORETYPE");

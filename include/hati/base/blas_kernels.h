@@ -15,8 +15,11 @@ namespace hati
  * If OpenBLAS reports a core without AVX2 kernels (Prescott, Core2,
  * Penryn, Dunnington, Nehalem, Sandybridge) while the CPU has AVX-512
  * (F, CD, DQ, BW, VL: SkylakeX) or AVX2 and FMA (Haswell), this sets
- * `OPENBLAS_CORETYPE` and starts the program again with the same arguments
- * (OpenBLAS reads it when it is loaded, before `main`). Nothing changes
+ * `OPENBLAS_CORETYPE` and has OpenBLAS choose its kernels again
+ * (`gotoblas_dynamic_quit()`, `gotoblas_dynamic_init()`: what it runs when
+ * it is loaded, before `main`, reading that variable); where those entry
+ * points are missing, it starts the program again with the same arguments
+ * (which costs another start-up, 0.5 s here). Nothing changes
  * where the user set `OPENBLAS_CORETYPE`, where the BLAS is not OpenBLAS,
  * or where OpenBLAS recognised the CPU. Call it first in `main`, before
  * MPI is initialised. Results differ from the Prescott kernels' at
