@@ -145,8 +145,15 @@ solve_condensed_frictional_cluster(const FrictionalCluster &cluster,
   const unsigned int nB = rows_B.size(), nC = rows_C.size(), n = q.size(),
                      m = cluster.mu.size();
   // y = W_BB^-1 q_B, q_S = q_C - W_CB y
-  thread_local Vector<double> y, q_S, r_S;
-  y.reinit(nB, true);
+  // work vectors per size (the crane's clusters alternate between sizes,
+  // and a Vector reinit() to another size allocates)
+  thread_local std::vector<Vector<double>> ys, qs, rs;
+  for (auto *w : {&ys, &qs, &rs})
+    if (w->size() <= std::max(nB, nC))
+      w->resize(std::max(nB, nC) + 1);
+  Vector<double> &y = ys[nB], &q_S = qs[nC], &r_S = rs[nC];
+  if (y.size() != nB)
+    y.reinit(nB, true);
   for (unsigned int a = 0; a < nB; ++a)
   {
     double s = 0.;
@@ -154,7 +161,8 @@ solve_condensed_frictional_cluster(const FrictionalCluster &cluster,
       s += X(a, b) * q[rows_B[b]];
     y[a] = s;
   }
-  q_S.reinit(nC, true);
+  if (q_S.size() != nC)
+    q_S.reinit(nC, true);
   for (unsigned int c = 0; c < nC; ++c)
   {
     double s = q[rows_C[c]];

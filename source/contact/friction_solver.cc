@@ -466,8 +466,16 @@ bool solve_all_sticking(const FrictionalCluster &cluster,
     for (unsigned int i = first[block.contact]; i < first[block.contact + 1]; ++i)
       rows.push_back(i);
   const unsigned int ns = rows.size();
-  thread_local LAPACKFullMatrix<double> Ws;
-  thread_local Vector<double> rs;
+  // per size (the clusters alternate between sizes; reinit() allocates)
+  thread_local std::vector<LAPACKFullMatrix<double>> Ws_by_size;
+  thread_local std::vector<Vector<double>> rs_by_size;
+  if (Ws_by_size.size() <= ns)
+  {
+    Ws_by_size.resize(ns + 1);
+    rs_by_size.resize(ns + 1);
+  }
+  LAPACKFullMatrix<double> &Ws = Ws_by_size[ns];
+  Vector<double> &rs = rs_by_size[ns];
   if (Ws.m() != ns)
     Ws.reinit(ns, ns);
   if (rs.size() != ns)

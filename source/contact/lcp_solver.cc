@@ -213,19 +213,32 @@ void solve_equalities(const FullMatrix<double> &W,
                       const Vector<double> &q,
                       Vector<double> &lambda)
 {
-  // the inverse's storage per size, reused (the coupling's ramp responses
-  // call this for every cluster of every micro step)
+  // the inverse's storage per size, reused
   const unsigned int n = W.m();
   thread_local std::vector<FullMatrix<double>> inverses;
   if (inverses.size() <= n)
     inverses.resize(n + 1);
-  FullMatrix<double> &W_inverse = inverses[n];
-  if (W_inverse.m() != n || W_inverse.n() != W.n())
-    W_inverse.reinit(n, W.n());
-  for (unsigned int i = 0; i < n; ++i)
-    for (unsigned int j = 0; j < W.n(); ++j)
-      W_inverse(i, j) = W(i, j);
-  W_inverse.gauss_jordan();
+  bool inverted = false;
+  solve_equalities(W, inverses[n], inverted, q, lambda);
+}
+
+void solve_equalities(const FullMatrix<double> &W,
+                      FullMatrix<double> &W_inverse,
+                      bool &inverted,
+                      const Vector<double> &q,
+                      Vector<double> &lambda)
+{
+  const unsigned int n = W.m();
+  if (!inverted)
+  {
+    if (W_inverse.m() != n || W_inverse.n() != W.n())
+      W_inverse.reinit(n, W.n());
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < W.n(); ++j)
+        W_inverse(i, j) = W(i, j);
+    W_inverse.gauss_jordan();
+    inverted = true;
+  }
   if (lambda.size() != q.size())
     lambda.reinit(q.size());
   W_inverse.vmult(lambda, q);

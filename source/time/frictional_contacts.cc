@@ -100,6 +100,7 @@ void FrictionalContacts::solve(const std::vector<unsigned int> &cluster,
     cached.inverse_mass = &inverse_mass;
     delassus(rows, inverse_mass, cached.W);
     cached.links.valid = false;
+    cached.inverted = false;
   }
   const FullMatrix<double> &W = cached.W;
   if (q.size() != n)
@@ -115,7 +116,7 @@ void FrictionalContacts::solve(const std::vector<unsigned int> &cluster,
   if (prescribed)
   {
     // every row an equality: W r = -q (the sticking response of the active set)
-    solve_equalities(W, q, r);
+    solve_equalities(W, cached.W_inverse, cached.inverted, q, r);
     cluster_states.assign(cluster.size(), FrictionState::stick);
   }
   else

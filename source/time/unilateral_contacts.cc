@@ -193,6 +193,7 @@ void UnilateralContacts::apply_impulses(const Vector<double> &U,
         block.cluster = cluster;
         block.inverse_mass = &minv;
         delassus(cluster_rows, minv, block.W);
+        block.inverted = false;
       }
       W_cluster = &block.W;
     }
@@ -200,8 +201,14 @@ void UnilateralContacts::apply_impulses(const Vector<double> &U,
       delassus(cluster_rows, minv, *W_cluster);
     const FullMatrix<double> &W = *W_cluster;
     Vector<double> &l = lcp_lambda[m];
-    if (prescribed)
-      solve_equalities(W, q, l); // W lambda = -q on the prescribed active set
+    // W lambda = -q on the prescribed active set
+    if (prescribed && constraints_only)
+    {
+      ConstraintBlock &block = constraint_blocks[cluster[0]];
+      solve_equalities(W, block.W_inverse, block.inverted, q, l);
+    }
+    else if (prescribed)
+      solve_equalities(W, q, l);
     else
       solve_lcp(W, q, bilateral, l);
 

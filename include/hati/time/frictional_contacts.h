@@ -165,6 +165,9 @@ private:
     const Vector<double> *inverse_mass = nullptr;
     FullMatrix<double> W;
     CondensedLinks links;
+    /** W^-1 for a prescribed active set (the ramp responses, G3'), once valid. */
+    FullMatrix<double> W_inverse;
+    bool inverted = false;
   };
   std::vector<CachedCluster> cached_clusters;
 };

@@ -200,6 +200,9 @@ private:
     std::vector<unsigned int> cluster;
     const Vector<double> *inverse_mass = nullptr;
     FullMatrix<double> W;
+    /** W^-1 for a prescribed active set (the ramp responses, G3'), once valid. */
+    FullMatrix<double> W_inverse;
+    bool inverted = false;
   };
   std::vector<ConstraintBlock> constraint_blocks;
   std::vector<std::vector<bool>> lcp_bilateral;
