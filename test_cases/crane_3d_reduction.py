@@ -3,21 +3,24 @@
 3D crane (issue #27; C1, doc/theory.md 12.1-12.2): parameter_files/
 bridge_crane_3d.prm at the coarse mesh (0.55 m plate elements, 37,734
 implicit DoFs), tied wheels and a rigid hoist (at 0.55 m the braked crane's
-static state is refused), 0.2 s of Rinaldi X + Z from the static state,
-history rows every 1 ms.
+static state is refused), 0.1 s of Rinaldi X + Z from the static state,
+history rows every 1 ms (0.2 s until session 31: the unreduced reference's
+stepping was half of this test's time).
 
 Reference: the same run with the implicit part unreduced (Implicit
 reduction = none): the reduction changes only the implicit part's basis.
 At the 150 Hz cut-off (96 boundary DoFs and 81 fixed-interface modes up to
 149.9 Hz):
 - every monitor displacement whose peak exceeds 1 um within 2e-3 of its
-  peak (the issue asks 1 %; measured at most 5.0e-4, girder_1_midspan.ux);
+  peak (the issue asks 1 %; measured at most 4.1e-4, girder_1_midspan.ux;
+  5.0e-4 over 0.2 s);
 - every wheel contact's force within 1e-3 of the largest wheel force of the
-  run (measured 2.0e-5: the vertical wheel forces; the trolley's travel rows
-  carry some 21 N and are 6.5 % off their own peak, the chatter of the
-  flange contacts that bench/crane3d_reduction.sh tabulates);
+  run (measured 1.7e-5, trolley_wheel_1_travel; 2.0e-5 over 0.2 s, the
+  vertical wheel forces; the trolley's travel rows carry some 21 N and are
+  6.5 % off their own peak, the chatter of the flange contacts that
+  bench/crane3d_reduction.sh tabulates);
 - the reduced run's energy balance closed with the interface work in
-  reduced coordinates (1e-8 of the largest energy; measured 4.6e-13).
+  reduced coordinates (1e-8 of the largest energy; measured 1.6e-11).
 The convergence with the cut-off (50, 100, 150, 300 Hz) is
 bench/crane3d_reduction.sh's table."""
 import csv
@@ -29,9 +32,10 @@ from hati_test import Context, read_csv, read_summary
 
 ctx = Context()
 prm = ctx.prm("bridge_crane_3d.prm")
+END = 0.1  # s of the record
 COMMON = ["Model/Bridge crane/Girder element size=0.55",
           "Model/Bridge crane/Travel=tied", "Model/Bridge crane/Hoist=rigid",
-          "Time integration/End time=0.2", "Output/Output interval=0",
+          "Time integration/End time=%g" % END, "Output/Output interval=0",
           "Output/History interval=0.001",
           "Loading/Accelerogram X=" + os.path.join(ctx.source, "data", "accelerograms",
                                                    "Rinaldi228.AT2"),
@@ -51,7 +55,8 @@ ctx.check("reduced: energy balance relative to the largest energy",
           s["energy_balance_relative"], 0.0, abs_tol=1e-8)
 
 h, href = read_csv(reduced + "/history.csv"), read_csv(full + "/history.csv")
-ctx.check_true("the same history rows", len(h) == len(href) and len(h) == 201,
+ctx.check_true("the same history rows",
+               len(h) == len(href) and len(h) == round(END / 0.001) + 1,
                "%d, %d" % (len(h), len(href)))
 worst, worst_name, n_checked = 0., "", 0
 for name in href.dtype.names:
