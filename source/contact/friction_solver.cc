@@ -478,6 +478,9 @@ bool solve_all_sticking(const FrictionalCluster &cluster,
   Vector<double> &rs = rs_by_size[ns];
   if (Ws.m() != ns)
     Ws.reinit(ns, ns);
+  // back to the state of a matrix (its last use left the Cholesky factor;
+  // deal.II's Debug library asserts the state)
+  Ws = 0.;
   if (rs.size() != ns)
     rs.reinit(ns);
   for (unsigned int i = 0; i < ns; ++i)
