@@ -183,30 +183,28 @@ void UnilateralContacts::apply_impulses(const Vector<double> &U,
     for (unsigned int a = 0; a < m && constraints_only; ++a)
       constraints_only = cluster_rows[a]->constraint;
     FullMatrix<double> *W_cluster = &lcp_W[m];
+    ConstraintBlock *block = nullptr;
     if (constraints_only)
     {
       if (constraint_blocks.size() != nc)
         constraint_blocks.resize(nc);
-      ConstraintBlock &block = constraint_blocks[cluster[0]];
-      if (block.cluster != cluster || block.inverse_mass != &minv)
+      block = &constraint_blocks[cluster[0]];
+      if (block->cluster != cluster || block->inverse_mass != &minv)
       {
-        block.cluster = cluster;
-        block.inverse_mass = &minv;
-        delassus(cluster_rows, minv, block.W);
-        block.inverted = false;
+        block->cluster = cluster;
+        block->inverse_mass = &minv;
+        delassus(cluster_rows, minv, block->W);
+        block->inverted = false;
       }
-      W_cluster = &block.W;
+      W_cluster = &block->W;
     }
     else
       delassus(cluster_rows, minv, *W_cluster);
     const FullMatrix<double> &W = *W_cluster;
     Vector<double> &l = lcp_lambda[m];
     // W lambda = -q on the prescribed active set
-    if (prescribed && constraints_only)
-    {
-      ConstraintBlock &block = constraint_blocks[cluster[0]];
-      solve_equalities(W, block.W_inverse, block.inverted, q, l);
-    }
+    if (prescribed && block != nullptr)
+      solve_equalities(W, block->W_inverse, block->inverted, q, l);
     else if (prescribed)
       solve_equalities(W, q, l);
     else
