@@ -161,7 +161,6 @@ void UnilateralContacts::apply_impulses(const Vector<double> &U,
     {
       lcp_q.resize(m + 1);
       lcp_lambda.resize(m + 1);
-      lcp_W.resize(m + 1);
       lcp_bilateral.resize(m + 1);
     }
     Vector<double> &q = lcp_q[m];
@@ -179,34 +178,29 @@ void UnilateralContacts::apply_impulses(const Vector<double> &U,
       q[a] = cluster_rows[a]->apply(v) +
              cluster_rows[a]->restitution * cluster_rows[a]->apply(v_before);
     }
-    bool constraints_only = true;
-    for (unsigned int a = 0; a < m && constraints_only; ++a)
-      constraints_only = cluster_rows[a]->constraint;
-    FullMatrix<double> *W_cluster = &lcp_W[m];
-    ConstraintBlock *block = nullptr;
-    if (constraints_only)
+    // the cluster's Delassus block, formed once per cluster (its rows are
+    // constant): the last two clusters that began with this row are kept
+    if (delassus_blocks.size() != nc)
+      delassus_blocks.resize(nc);
+    DelassusBlocks &slot = delassus_blocks[cluster[0]];
+    DelassusBlock *block = nullptr;
+    for (DelassusBlock &entry : slot.entries)
+      if (entry.inverse_mass == &minv && entry.cluster == cluster)
+        block = &entry;
+    if (block == nullptr)
     {
-      if (constraint_blocks.size() != nc)
-        constraint_blocks.resize(nc);
-      block = &constraint_blocks[cluster[0]];
-      if (block->cluster != cluster || block->inverse_mass != &minv)
-      {
-        block->cluster = cluster;
-        block->inverse_mass = &minv;
-        delassus(cluster_rows, minv, block->W);
-        block->inverted = false;
-      }
-      W_cluster = &block->W;
+      block = &slot.entries[slot.next];
+      slot.next = (slot.next + 1) % slot.entries.size();
+      block->cluster = cluster;
+      block->inverse_mass = &minv;
+      delassus(cluster_rows, minv, block->W);
+      block->inverted = false;
     }
-    else
-      delassus(cluster_rows, minv, *W_cluster);
-    const FullMatrix<double> &W = *W_cluster;
+    const FullMatrix<double> &W = block->W;
     Vector<double> &l = lcp_lambda[m];
     // W lambda = -q on the prescribed active set
-    if (prescribed && block != nullptr)
+    if (prescribed)
       solve_equalities(W, block->W_inverse, block->inverted, q, l);
-    else if (prescribed)
-      solve_equalities(W, q, l);
     else
       solve_lcp(W, q, bilateral, l);
 
