@@ -209,6 +209,7 @@ void ReducedImplicitPart::build_system(const DiscreteSystem &full)
     coordinates(full.initial_displacement, reduced.initial_displacement);
   if (full.initial_velocity.size() == full.n_dofs())
     coordinates(full.initial_velocity, reduced.initial_velocity);
+  reduced.start_time = full.start_time;
 }
 
 const DiscreteSystem &implicit_system(const Decomposition &decomposition)

@@ -92,6 +92,7 @@ void extract_subsystem(const DiscreteSystem &full,
   }
   restrict(full.excited_lumped_mass, sub.excited_lumped_mass);
   sub.gravity = full.gravity;
+  sub.start_time = full.start_time;
   sub.omega_max_bound = full.omega_max_bound;
   for (const auto &load : full.time_dependent_loads)
   {

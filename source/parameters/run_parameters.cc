@@ -102,11 +102,22 @@ void AnalysisParameters::declare_parameters(ParameterHandler &prm, const Choice 
   prm.declare_entry(
       "Initial state",
       "given",
-      Patterns::Selection("given|static"),
+      Patterns::Selection("given|static|file"),
       "transient: start from the model's initial displacement and velocity "
       "(given) or at rest from the static equilibrium under the constant loads "
       "(gravity, nodal loads), without the base excitation (static); contacts "
-      "with a zero initial gap are closed in that equilibrium and must push.");
+      "with a zero initial gap are closed in that equilibrium and must push. "
+      "file: restart from the state an earlier run of the same model wrote "
+      "(Initial state file, Output/State interval): its displacements, "
+      "velocities and contact forces at its time t_0 (s), from which the run "
+      "goes on to End time with the records at t_0 onwards (any method and "
+      "time step; the memory of frequency-range damping starts afresh).");
+  prm.declare_entry("Initial state file",
+                    "",
+                    Patterns::Anything(),
+                    "Initial state = file: the state.bin an earlier run of the same "
+                    "model wrote (its Output/State interval), as a path absolute or "
+                    "relative to the current directory.");
   prm.leave_subsection();
 }
 
@@ -116,6 +127,11 @@ void AnalysisParameters::parse_parameters(ParameterHandler &prm)
   type = prm.get("Type");
   n_modes = prm.get_integer("Number of modes");
   initial_state = prm.get("Initial state");
+  initial_state_file = prm.get("Initial state file");
+  AssertThrow(
+      initial_state != "file" || !initial_state_file.empty(),
+      ExcMessage("Analysis/Initial state = file needs Analysis/Initial state file "
+                 "(the state.bin of an earlier run, Output/State interval)"));
   prm.leave_subsection();
 }
 
@@ -154,6 +170,15 @@ void OutputParameters::declare_parameters(ParameterHandler &prm)
       "in one step) it does not depend on the time step once the window spans many "
       "steps: compare runs with different steps by it. A window longer than the run is "
       "taken as the End time. 0: not computed.");
+  prm.declare_entry(
+      "State interval",
+      "0",
+      Patterns::Double(0.),
+      "Simulated time between two writes of the whole state (displacement and "
+      "velocity of every DoF, the contact forces) to state.bin (s), each "
+      "replacing the last one whole, at the end of the run and when it is "
+      "stopped (Ctrl-C): a later run restarts from it (Analysis/Initial "
+      "state = file). CD-Lagrange, Newmark and HATI runs. 0: no state file.");
   prm.declare_entry("Progress interval",
                     "2",
                     Patterns::Double(0.),
@@ -188,6 +213,7 @@ void OutputParameters::parse_parameters(ParameterHandler &prm)
   section_force_interval = prm.get_double("Section force interval");
   contact_force_window = prm.get_double("Contact force window");
   progress_interval = prm.get_double("Progress interval");
+  state_interval = prm.get_double("State interval");
   const std::string spectra_text = prm.get("Spectra"),
                     ratios_text = prm.get("Spectrum damping ratios");
   spectra = Utilities::split_string_list(spectra_text);

@@ -8,6 +8,7 @@
 #include <hati/loading/base_excitation.h>
 #include <hati/loading/design_spectrum.h>
 #include <hati/output/response_spectra.h>
+#include <hati/output/state_file.h>
 #include <hati/run/analysis_registry.h>
 #include <hati/run/problem.h>
 #include <hati/run/run_tools.h>
@@ -73,6 +74,10 @@ Problem::Problem(ParameterHandler &prm, const ConditionalOStream &out) : out(out
   prm.leave_subsection();
   prm.leave_subsection();
   output_parameters.parse_parameters(prm);
+  AssertThrow(output_parameters.state_interval == 0. ||
+                  time_parameters.method != "event-driven",
+              ExcMessage("Output/State interval: Method = event-driven writes no state "
+                         "file (CD-Lagrange, Newmark and HATI do); set it to 0"));
   common_parameters.parse_parameters(prm);
   // the explicit scheme enforces ties and rigid links as bilateral rows; the
   // other analyses eliminate them (doc/theory.md 11.2)
@@ -172,6 +177,8 @@ void Problem::prepare_transient()
                          "the CD-Lagrange, Newmark and HATI integrators only (not by "
                          "Method = " +
                          time_parameters.method + "): use Type = Rayleigh."));
+  if (analysis_parameters.initial_state == "file")
+    set_file_initial_state();
   if (time_parameters.method == "HATI")
     decompose(); // the subdomains' initial state is copied below
   if (analysis_parameters.initial_state == "static")
@@ -183,16 +190,20 @@ void Problem::prepare_transient()
         "static_state_wall_time",
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
-  if (decomposition) // a tied node may be free in a subdomain
+  // a tied node may be free in a subdomain (a state file has its value)
+  if (decomposition && analysis_parameters.initial_state != "file")
     model->complete_solution(system.initial_displacement);
   if (decomposition)
     for (auto &part : decomposition->parts)
+    {
+      part.system.start_time = system.start_time;
       for (unsigned int i = 0; i < part.global_dofs.size(); ++i)
       {
         part.system.initial_displacement[i] =
             system.initial_displacement[part.global_dofs[i]];
         part.system.initial_velocity[i] = system.initial_velocity[part.global_dofs[i]];
       }
+    }
   if (decomposition && system.initial_contact_reaction.size() == system.n_dofs())
     for (auto &part : decomposition->parts)
     {
@@ -201,7 +212,8 @@ void Problem::prepare_transient()
         part.system.initial_contact_reaction[i] =
             system.initial_contact_reaction[part.global_dofs[i]];
     }
-  if (decomposition && system.initial_contact_reaction.size() == system.n_dofs())
+  if (decomposition && system.initial_contact_reaction.size() == system.n_dofs() &&
+      analysis_parameters.initial_state == "static")
   {
     add_eliminated_contact_reactions();
     add_explicit_link_reactions();
@@ -222,6 +234,49 @@ void Problem::prepare_transient()
   add_damping_summary();
   if (decomposition && decomposition_parameters.implicit_reduction == "Craig-Bampton")
     reduce_implicit_part();
+}
+
+void Problem::set_file_initial_state()
+{
+  const std::string parameter = "Analysis/Initial state file";
+  AssertThrow(time_parameters.method != "event-driven",
+              ExcMessage("Analysis/Initial state = file: Method = event-driven starts "
+                         "from t = 0 only; restart with CD-Lagrange, Newmark or HATI"));
+  const RunState state = read_state_file(analysis_parameters.initial_state_file,
+                                         system.n_dofs(),
+                                         model->description(),
+                                         parameter);
+  AssertThrow(state.time < time_parameters.end_time,
+              ExcMessage(parameter + " = " +
+                         printable(analysis_parameters.initial_state_file) +
+                         ": the state is at t = " + std::to_string(state.time) +
+                         " s, not before Time integration/End time = " +
+                         std::to_string(time_parameters.end_time) + " s"));
+  system.initial_displacement = state.displacement;
+  system.initial_velocity = state.velocity;
+  system.start_time = state.time;
+  if (state.contact_force.linfty_norm() > 0.)
+    system.initial_contact_reaction = state.contact_force;
+  // a single-domain run: the DoFs its system holds fixed (supports, and the
+  // slave DoFs it eliminates, which another method's run may have kept
+  // free) at zero, as its integrator holds them; HATI's parts take the
+  // state's values of their DoFs as they are
+  for (unsigned int i = 0; i < system.n_dofs(); ++i)
+    if (system.fixed[i] && time_parameters.method != "HATI")
+    {
+      system.initial_displacement[i] = 0.;
+      system.initial_velocity[i] = 0.;
+      if (system.initial_contact_reaction.size() == system.n_dofs())
+        system.initial_contact_reaction[i] = 0.;
+    }
+  out << "  initial state from " << analysis_parameters.initial_state_file
+      << " at t = " << state.time << " s" << std::endl;
+  initial_state_summary.emplace_back("start_time", state.time);
+  if (damping.frequency_range())
+    warn("Analysis/Initial state = file: the memory variables of frequency-range "
+         "damping start at zero at t = " +
+         std::to_string(state.time) +
+         " s (the state file holds displacements and velocities only)");
 }
 
 void Problem::check_explicit_step() const

@@ -6,6 +6,7 @@
 #include <hati/output/run_directory.h>
 #include <hati/output/summary.h>
 #include <hati/run/problem.h>
+#include <hati/run/run_state.h>
 #include <hati/run/run_tools.h>
 #include <hati/run/time_loop.h>
 #include <hati/time/cd_lagrange.h>
@@ -243,6 +244,8 @@ private:
   static constexpr bool explicit_scheme = std::is_same_v<Integrator, CDLagrange>;
   /** The output rows due at @p step (history, energy, VTU). */
   void write(const unsigned long step);
+  /** state.bin of the current step (Output/State interval, RunState). */
+  void write_state();
   /** HATI: contact statistics and contacts.csv rows at the micro steps. */
   void connect_micro_steps();
   /** Update the envelopes with the rows HATI deferred (defer_displacement()). */
@@ -263,7 +266,7 @@ private:
   RunDirectory &directory;
   const double dt, end_time;
   OutputWriter writer;
-  const unsigned long n_steps, every_history, every_vtu;
+  const unsigned long n_steps, every_history, every_state, every_vtu;
   /** Steps between two rows of section_forces.csv, a multiple of every_history. */
   const unsigned long every_section_row;
   WallClock output_clock; // a TimerOutput section costs more than a row
@@ -311,8 +314,11 @@ TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
       directory(directory), dt(integrator.time_step()),
       end_time(problem.time_parameters.end_time),
       writer(directory, problem.system, *problem.model),
-      n_steps(std::llround(std::ceil(end_time / dt - 1e-9))),
+      n_steps(std::llround(std::ceil((end_time - system.start_time) / dt - 1e-9))),
       every_history(steps_between(problem.output_parameters.history_interval, dt)),
+      every_state(problem.output_parameters.state_interval > 0.
+                      ? steps_between(problem.output_parameters.state_interval, dt)
+                      : 0),
       every_vtu(problem.output_parameters.vtu_interval > 0.
                     ? steps_between(problem.output_parameters.vtu_interval, dt)
                     : 0),
@@ -414,6 +420,13 @@ template <class Integrator> void TimeLoop<Integrator>::write(const unsigned long
     writer.write_vtu(s);
 }
 
+template <class Integrator> void TimeLoop<Integrator>::write_state()
+{
+  const WallClock::Scope scope(output_clock);
+  directory.replace(
+      "state.bin", state_file_content(current_run_state(integrator, problem)), true);
+}
+
 template <class Integrator> void TimeLoop<Integrator>::update_deferred_envelopes()
 {
   if constexpr (std::is_same_v<Integrator, HATICoupling>)
@@ -485,7 +498,10 @@ template <class Integrator> void TimeLoop<Integrator>::run(TimerOutput &timer)
       progress.print(integrator.time(), step);
       writer.flush();
     }
-    if (stop_requested()) // SIGINT/SIGTERM: stop after a complete step
+    const bool stop = stop_requested(); // SIGINT/SIGTERM: stop after a complete step
+    if (every_state > 0 && (step % every_state == 0 || step == n_steps || stop))
+      write_state();
+    if (stop)
       break;
   }
   loop_output = output_clock.seconds() - output_before;

@@ -64,6 +64,7 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
 
   build_stiffness_operator();
   build_loads();
+  t = system.start_time;
   initial_state();
   // the laws' rows at U_0 (e.g. the contacts' A5 clusters)
   for (const auto &law : laws)
@@ -252,7 +253,7 @@ void CDLagrange::initial_state()
   // V_{-1/2} = V_{1/2} - dt M^-1 G_0; d_0 = dt M^-1 C V_0 (A7, theory 1.1)
   Vector<double> f(force), ku(n), v0(n), kv(n);
   for (unsigned int l = 0; l < load_shapes.size(); ++l)
-    f.add(system.time_dependent_loads[l].amplitude(0.), load_shapes[l]);
+    f.add(system.time_dependent_loads[l].amplitude(system.start_time), load_shapes[l]);
   for (ForceLaw *law : forcing_laws) // e.g. (R1) the rope forces at U_0
     law->start(U, f);
   // a static start: the closed contacts carry their static forces from t = 0
@@ -277,6 +278,37 @@ void CDLagrange::initial_state()
   }
 }
 
+void CDLagrange::integer_velocity(Vector<double> &v) const
+{
+  const unsigned int n = U.size();
+  v.reinit(n, true);
+  for (unsigned int i = 0; i < n; ++i)
+    v[i] = system.fixed[i] ? 0. : 0.5 * ((*V)[i] + (*V_prev)[i]);
+}
+
+void CDLagrange::contact_force(Vector<double> &r) const
+{
+  const unsigned int n = U.size();
+  // G_n as the last update had it: loads and laws at t_n, K U_n, d_n
+  Vector<double> f(force), ku(n);
+  for (unsigned int l = 0; l < load_shapes.size(); ++l)
+    f.add(system.time_dependent_loads[l].amplitude(t), load_shapes[l]);
+  for (const ForceLaw *law : forcing_laws)
+  {
+    const auto dofs = law->nonlinear_dofs();
+    std::vector<double> applied(dofs.size());
+    law->applied_force(applied.data());
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      f[dofs[i]] += applied[i];
+  }
+  if (system.has_stiffness())
+    system.stiffness.vmult(ku, U);
+  r.reinit(n);
+  for (unsigned int i = 0; i < n; ++i)
+    if (!system.fixed[i])
+      r[i] = mass[i] * ((*V)[i] - (*V_prev)[i] + d_prev[i]) / dt - (f[i] - ku[i]);
+}
+
 void CDLagrange::step()
 {
   predict();
@@ -296,7 +328,7 @@ void CDLagrange::predict()
   if (branches.active())
     branches.update(*V);
   ++n_steps;
-  t = n_steps * dt;
+  t = system.start_time + n_steps * dt;
 }
 
 void CDLagrange::free_velocity(const bool with_loads)
@@ -450,7 +482,8 @@ const double *CDLagrange::load_step_force()
   {
     const auto &load = system.time_dependent_loads[l];
     load_previous_amplitude[l] =
-        previous_known ? load_amplitude[l] : load.amplitude((n_steps - 1) * dt);
+        previous_known ? load_amplitude[l]
+                       : load.amplitude(system.start_time + (n_steps - 1) * dt);
     load_amplitude[l] = load.amplitude(t);
     load_velocity[l] = 0.;
     load_shape_data[l] = load_shapes[l].data();

@@ -72,6 +72,31 @@ const Vector<double> &HATICoupling::velocity(const bool history_dofs_only) const
                      history_dofs_only ? &history_velocity : nullptr);
 }
 
+const Vector<double> &HATICoupling::integer_velocity() const
+{
+  Vector<double> explicit_velocity;
+  explicit_integrator.integer_velocity(explicit_velocity);
+  return whole_state(
+      implicit.velocity(), explicit_velocity, expanded_V, global_V, nullptr);
+}
+
+Vector<double> HATICoupling::contact_force() const
+{
+  // the last micro step's force less the interface force it applied,
+  // C_E^T Lambda_{n+m} (G2 at j = m), which a restart takes up again (Lambda_0)
+  Vector<double> explicit_force;
+  explicit_integrator.contact_force(explicit_force);
+  const std::vector<SparseRow> &rows = interface->explicit_rows();
+  for (unsigned int k = 0; k < rows.size(); ++k)
+    for (unsigned int i = 0; i < rows[k].dofs.size(); ++i)
+      explicit_force[rows[k].dofs[i]] -= rows[k].coefficients[i] * lambda_n[k];
+  const auto &E = decomposition.parts[0].global_dofs;
+  Vector<double> force(global_U.size());
+  for (unsigned int i = 0; i < E.size(); ++i)
+    force[E[i]] = explicit_force[i];
+  return force;
+}
+
 void HATICoupling::set_history_dofs(
     const std::vector<types::global_dof_index> &displacement_dofs,
     const std::vector<types::global_dof_index> &velocity_dofs)

@@ -282,6 +282,7 @@ Newmark::Newmark(const DiscreteSystem &system,
   if (branches.active())
     for (auto *v : {&KS, &KS_new, &W})
       v->reinit(n);
+  t = system.start_time;
   set_initial_state(system.initial_displacement, system.initial_velocity);
 }
 
@@ -483,7 +484,7 @@ void Newmark::free_step()
   }
 
   // (N2) M_eff A_{n+1} = F_{n+1} - C V* - K U*, K and C in one pass
-  const double t_new = (n_steps + 1) * dt;
+  const double t_new = system.start_time + (n_steps + 1) * dt;
   system.external_force(t_new, F_new);
   if (dense_rows)
   {
@@ -594,7 +595,7 @@ void Newmark::finish_step()
   A.swap(A_new);
   F.swap(F_new);
   ++n_steps;
-  t = n_steps * dt;
+  t = system.start_time + n_steps * dt;
 }
 
 void Newmark::set_memory(const std::vector<Vector<double>> &q)

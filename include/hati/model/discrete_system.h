@@ -287,6 +287,13 @@ public:
   Vector<double> initial_displacement;
   Vector<double> initial_velocity;
   /**
+   * Time of the initial state (s): 0, or the time of the state a run
+   * restarts from (Analysis/Initial state = file). The integrators count
+   * their time from it (`t = start_time + n dt`) and evaluate the loads at
+   * it, so that a restarted record goes on where it stopped.
+   */
+  double start_time = 0.;
+  /**
    * The forces (N, on the DoFs) that the closed contacts carry in a static
    * initial state, `sum_k L_k^T lambda_k` with the tangent rows of sticking
    * friction: CD-Lagrange adds them to `G_0` (A7, doc/theory.md 1.1) so that

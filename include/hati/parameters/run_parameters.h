@@ -49,8 +49,13 @@ struct AnalysisParameters
   /** "transient", "static" or "modal". */
   std::string type = "transient";
   unsigned int n_modes = 6;
-  /** "given" (the model's initial state) or "static" (static equilibrium). */
+  /**
+   * "given" (the model's initial state), "static" (static equilibrium) or
+   * "file" (the state of an earlier run, initial_state_file).
+   */
   std::string initial_state = "given";
+  /** Initial state = file: the state.bin to restart from (RunState). */
+  std::string initial_state_file;
 };
 
 /** `Output` subsection. */
@@ -68,6 +73,8 @@ struct OutputParameters
   /** s; window of the mean contact force (peak_mean_force); 0: none. */
   double contact_force_window = 1e-3;
   double progress_interval = 2.; ///< s of wall time between progress lines
+  /** s of simulated time between two writes of state.bin; 0: none. */
+  double state_interval = 0.;
   /** Monitor points whose response spectra go to spectra.csv; empty: none. */
   std::vector<std::string> spectra;
   /** Damping ratios of the response spectra (-), each in [0, 1). */

@@ -171,6 +171,12 @@ private:
   /** The static equilibrium under the constant loads as the initial state. */
   void set_static_initial_state();
   /**
+   * Analysis/Initial state = file: the displacement, velocity and time of
+   * the state file (read_state_file()) as the initial state, its time the
+   * system's start_time; refused for event-driven runs and past End time.
+   */
+  void set_file_initial_state();
+  /**
    * The contact forces of the static initial state on the DoFs
    * (DiscreteSystem::initial_contact_reaction): `K U_0 - F - F_r(U_0)` on
    * the DoFs of the contacts with a nonzero static force @p forces (their

@@ -147,6 +147,22 @@ public:
   const Vector<double> &displacement() const { return U; }
   /** V_{n+1/2}: the velocity on the step after t_n (right limit at impacts). */
   const Vector<double> &velocity() const { return *V; }
+  /**
+   * The integer-time velocity at t_n into @p v (m/s): `(V_{n-1/2} +
+   * V_{n+1/2}) / 2`, half of the step's impulses included (the velocity of
+   * HATI's continuity, CouplingView::integer_velocity(); a restart's V_0,
+   * RunState), zero on fixed DoFs.
+   */
+  void integer_velocity(Vector<double> &v) const;
+  /**
+   * The forces of the last step's impulses on the DoFs into @p r (N):
+   * `M (V_{n+1/2} - V_{n-1/2}) / dt - G_n`, `G_n = F_ext(t_n) + F_laws -
+   * K U_n - D_n` (A2-A7), i.e. `L^T r_n / dt` of the contacts' and the
+   * bilateral rows' impulses (A4-A6) and of whatever else the step added
+   * (HATI's interface force), round-off elsewhere. A restart adds them to
+   * its `G_0` (DiscreteSystem::initial_contact_reaction, doc/theory.md 1.1).
+   */
+  void contact_force(Vector<double> &r) const;
 
   /** Contact gaps g_k(U_n) (m), the same order as system.contacts. */
   const std::vector<double> &gaps() const { return contacts->gaps(); }

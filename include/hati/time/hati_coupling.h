@@ -139,6 +139,21 @@ public:
   const Vector<double> &displacement(const bool history_dofs_only = false) const;
   /** Velocity of the whole model (explicit part at the half step, as CD-Lagrange). */
   const Vector<double> &velocity(const bool history_dofs_only = false) const;
+  /**
+   * Velocity of the whole model at the macro-step end t_n (m/s): the
+   * implicit part's `V_n` and the explicit part's integer-time velocity
+   * (CDLagrange::integer_velocity(), the velocity of the continuity, G3'),
+   * the explicit one on the interface DoFs (a restart's V_0, RunState).
+   */
+  const Vector<double> &integer_velocity() const;
+  /**
+   * The forces of the explicit part's last impulses (contacts, bilateral
+   * rows) on the whole model's DoFs (N, CDLagrange::contact_force()),
+   * without the interface force `C_E^T Lambda_{n+m}` of the last micro
+   * step (zero on the implicit part): a restart's contact reaction
+   * (RunState).
+   */
+  Vector<double> contact_force() const;
 
   /**
    * The DoFs (global numbering) whose displacements and velocities the

@@ -1,0 +1,64 @@
+#ifndef hati_output_state_file_h
+#define hati_output_state_file_h
+
+#include <deal.II/lac/vector.h>
+
+#include <string>
+
+namespace hati
+{
+using namespace dealii;
+
+/**
+ * The state of a transient run at one time, as `state.bin` holds it
+ * (Output/State interval) and a run restarts from it (Analysis/Initial
+ * state = file; doc/theory.md 1.1, "Restart"): the time, the displacement
+ * and the velocity of every DoF of the whole model at that time, and what
+ * identifies the model (its number of DoFs and its description).
+ *
+ * The velocity is the integer-time one: Newmark's `V_n`, CD-Lagrange's
+ * `(V_{n-1/2} + V_{n+1/2}) / 2` (which holds half of the step's contact
+ * impulses: the velocity of HATI's continuity, G3'), and HATI's whole
+ * model at a macro-step end from both. With the forces of the last
+ * step's impulses, a CD-Lagrange run restarted with its own step goes on
+ * as it would have (to round-off). What else a run carries (the memory
+ * variables of frequency-range damping, HATI's interface force) is not
+ * part of it: a restart takes them up afresh.
+ */
+struct RunState
+{
+  double time = 0.; ///< s
+  /** Model::description() of the run that wrote the state. */
+  std::string model;
+  Vector<double> displacement; ///< m (rad for rotations), per DoF
+  Vector<double> velocity;     ///< m/s (rad/s), per DoF
+  /**
+   * The forces of the contacts' and the bilateral rows' impulses of the
+   * last step (N, CDLagrange::contact_force(); zero without contacts): the
+   * restart adds them to its first half step as a static start adds the
+   * static contact forces (DiscreteSystem::initial_contact_reaction), so
+   * that a closed contact does not move into its support.
+   */
+  Vector<double> contact_force;
+};
+
+/**
+ * The bytes of `state.bin` for @p state: a text header (`hati state 1`,
+ * `time`, `n_dofs`, `model`, `data` lines) and the displacement, the
+ * velocity and the contact force as native doubles.
+ */
+std::string state_file_content(const RunState &state);
+
+/**
+ * Read the state file @p path for a model of @p n_dofs DoFs described as
+ * @p model. A missing or unreadable file, another format, another model
+ * or number of DoFs, a truncated file or a value that is not finite is a
+ * one-line message naming @p parameter and the file.
+ */
+RunState read_state_file(const std::string &path,
+                         const unsigned int n_dofs,
+                         const std::string &model,
+                         const std::string &parameter);
+} // namespace hati
+
+#endif

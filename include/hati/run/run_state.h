@@ -1,0 +1,24 @@
+#ifndef hati_run_run_state_h
+#define hati_run_run_state_h
+
+#include <hati/output/state_file.h>
+
+namespace hati
+{
+class Problem;
+
+/**
+ * The state of @p integrator (CDLagrange, Newmark or HATICoupling, at a step
+ * end) as `state.bin` holds it (RunState, doc/theory.md 1.1 "Restart"): its
+ * time, the whole model's displacement, integer-time velocity and the
+ * forces of the last step's contact impulses (CDLagrange::contact_force(),
+ * HATICoupling::contact_force(); none for Newmark). The DoFs that HATI's
+ * and Newmark's whole system eliminates (the slaves of ties and rigid
+ * links) and that no part of HATI holds are filled from their masters
+ * (Model::complete_solution()), as a CD-Lagrange run keeps them.
+ */
+template <class Integrator>
+RunState current_run_state(const Integrator &integrator, const Problem &problem);
+} // namespace hati
+
+#endif

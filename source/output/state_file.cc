@@ -1,0 +1,108 @@
+#include <deal.II/base/exceptions.h>
+
+#include <hati/base/names.h>
+#include <hati/output/state_file.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+namespace hati
+{
+namespace
+{
+constexpr const char *format_line = "hati state 1";
+
+/** The next header line of @p in, which must start with @p key and a space. */
+std::string
+header_value(std::istringstream &in, const std::string &key, const std::string &where)
+{
+  std::string line;
+  AssertThrow(std::getline(in, line) && line.rfind(key + " ", 0) == 0,
+              ExcMessage(where + ": the header has no '" + key +
+                         "' line where expected (not a state.bin written by hati, or "
+                         "damaged)"));
+  return line.substr(key.size() + 1);
+}
+} // namespace
+
+std::string state_file_content(const RunState &state)
+{
+  std::ostringstream s;
+  s.precision(17);
+  s << format_line << "\ntime " << state.time << "\nn_dofs " << state.displacement.size()
+    << "\nmodel " << state.model << "\ndata\n";
+  std::string content = s.str();
+  const std::size_t n = state.displacement.size(), header = content.size();
+  Assert(state.velocity.size() == n && state.contact_force.size() == n,
+         ExcMessage("state_file_content: vectors of different sizes"));
+  content.resize(header + 3 * n * sizeof(double));
+  std::size_t at = header;
+  for (const Vector<double> *v :
+       {&state.displacement, &state.velocity, &state.contact_force})
+  {
+    std::memcpy(&content[at], v->data(), n * sizeof(double));
+    at += n * sizeof(double);
+  }
+  return content;
+}
+
+RunState read_state_file(const std::string &path,
+                         const unsigned int n_dofs,
+                         const std::string &model,
+                         const std::string &parameter)
+{
+  const std::string where = parameter + " = " + printable(path);
+  std::ifstream file(path, std::ios::binary);
+  AssertThrow(
+      file, ExcMessage(where + ": cannot open the state file: " + std::strerror(errno)));
+  const std::string content((std::istreambuf_iterator<char>(file)),
+                            std::istreambuf_iterator<char>());
+  std::istringstream in(content);
+  std::string line;
+  AssertThrow(std::getline(in, line) && line == format_line,
+              ExcMessage(where + ": not a state file of hati (its first line is not '" +
+                         format_line + "'; Output/State interval writes state.bin)"));
+  RunState state;
+  const std::string time = header_value(in, "time", where);
+  const std::string dofs = header_value(in, "n_dofs", where);
+  state.model = header_value(in, "model", where);
+  AssertThrow(std::getline(in, line) && line == "data",
+              ExcMessage(where + ": the header does not end with a 'data' line"));
+  char *end = nullptr;
+  state.time = std::strtod(time.c_str(), &end);
+  AssertThrow(end != time.c_str() && *end == '\0' && std::isfinite(state.time) &&
+                  state.time >= 0.,
+              ExcMessage(where + ": the time '" + printable(time) +
+                         "' is not a finite time >= 0 (s)"));
+  AssertThrow(dofs == std::to_string(n_dofs),
+              ExcMessage(where + ": the state has " + printable(dofs) +
+                         " DoFs, the model of this run " + std::to_string(n_dofs) +
+                         ": it was written for another model or mesh"));
+  AssertThrow(state.model == model,
+              ExcMessage(where + ": the state was written for the model '" +
+                         printable(state.model) + "', this run's is '" + model + "'"));
+  const std::size_t data = static_cast<std::size_t>(in.tellg()),
+                    bytes = 3 * std::size_t(n_dofs) * sizeof(double);
+  AssertThrow(content.size() == data + bytes,
+              ExcMessage(where + ": " + std::to_string(content.size() - data) +
+                         " bytes of data where " + std::to_string(bytes) +
+                         " were expected (a truncated or damaged file)"));
+  std::size_t at = data;
+  for (Vector<double> *v : {&state.displacement, &state.velocity, &state.contact_force})
+  {
+    v->reinit(n_dofs);
+    std::memcpy(v->data(), &content[at], n_dofs * sizeof(double));
+    at += n_dofs * sizeof(double);
+  }
+  for (const Vector<double> *v :
+       {&state.displacement, &state.velocity, &state.contact_force})
+    for (const double x : *v)
+      AssertThrow(std::isfinite(x),
+                  ExcMessage(where + ": the state holds a value that is not finite"));
+  return state;
+}
+} // namespace hati

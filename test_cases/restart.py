@@ -1,0 +1,120 @@
+#!/usr/bin/python3
+"""Restart from a state file (Output/State interval, Analysis/Initial state
+= file; doc/theory.md 1.1 "Restart"). Reference: the same run unbroken.
+
+The crane of bridge_crane_full_explicit.prm / bridge_crane_hati.prm under
+Rinaldi, undamped (frequency-range damping's memory is not part of the
+state), run to 0.5 s writing state.bin, then restarted from it to 1 s,
+against the run from 0 to 1 s:
+- CD-Lagrange, tied crane (contacts, rigid links): the restart goes on as
+  the unbroken run to round-off (its V_{1/2} is the unbroken one's:
+  measured 1.1e-11 of the largest velocity, 4.9e-14 of the displacements);
+- CD-Lagrange, braked crane with its rope (friction, R1): to the friction
+  solver's tolerance (measured 1.2e-10 of the velocities);
+- HATI, tied crane: the restarted coupling takes Lambda_0 from the
+  acceleration continuity as at t = 0 instead of the G3' multiplier
+  (measured 1.1e-6 of the displacements, 2.2e-4 of the velocities);
+- HATI's state restarted with CD-Lagrange: the energies at the restart
+  equal HATI's (the slave DoFs of the rigid links, which HATI's whole
+  system eliminates, filled from their masters), the balance closed;
+- the times of the restarted rows continue the record (t from 0.5 s), and
+  a state of another model, past End time or truncated is refused with
+  the parameter and the file named."""
+import csv
+import os
+
+import numpy as np
+
+from hati_test import Context, read_summary
+
+ctx = Context()
+UNDAMPED = ["Model/Bridge crane/Damping ratio=0", "Output/Output interval=0",
+            "Output/History interval=2e-4", "Output/Section force interval=0"]
+TIED = ["Model/Bridge crane/Travel=tied", "Model/Bridge crane/Hoist=rigid"]
+
+
+def history(out):
+    with open(os.path.join(out, "history.csv"), newline="") as f:
+        rows = list(csv.reader(f))
+    return rows[0], np.array([[float(x) for x in r] for r in rows[1:] if len(r) == len(rows[0])])
+
+
+def energies(out):
+    with open(os.path.join(out, "energy.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    return {k: float(v) for k, v in rows[0].items()}
+
+
+def restart(tag, prm, sets):
+    """The run to 0.5 s with its state, the restart to 1 s, the run to 1 s."""
+    first, _ = ctx.run(prm, tag + "_first", sets + ["Time integration/End time=0.5",
+                                                    "Output/State interval=0.25"])
+    state = os.path.join(first, "state.bin")
+    rest, _ = ctx.run(prm, tag + "_restart", sets + [
+        "Time integration/End time=1", "Analysis/Initial state=file",
+        "Analysis/Initial state file=" + state])
+    whole, _ = ctx.run(prm, tag + "_whole", sets + ["Time integration/End time=1"])
+    return state, rest, whole
+
+
+def compare(tag, rest, whole, displacement_tol, velocity_tol):
+    names, B = history(rest)
+    names_w, A = history(whole)
+    ctx.check_true(tag + ": the same history columns", names == names_w)
+    ctx.check(tag + ": first row of the restart at t (s)", B[0, 0], 0.5, abs_tol=1e-12)
+    rows = [int(np.argmin(abs(A[:, 0] - t))) for t in B[:, 0]]
+    ctx.check(tag + ": largest time offset of the compared rows (s)",
+              max(abs(A[j, 0] - B[i, 0]) for i, j in enumerate(rows)), 0.0, abs_tol=1e-12)
+    A = A[rows]
+    for kind, tol in (("u", displacement_tol), ("v", velocity_tol)):
+        cols = [j for j, n in enumerate(names) if n.rsplit(".", 1)[-1].startswith(kind)]
+        peak = np.max(abs(A[:, cols]))
+        diff = np.max(abs(A[:, cols] - B[:, cols]))
+        ctx.check("%s: max |%s_restart - %s_whole| / largest" % (tag, kind, kind), diff / peak,
+                  0.0, abs_tol=tol)
+    s = read_summary(rest)
+    ctx.check(tag + ": restart energy balance relative", s["energy_balance_relative"], 0.0,
+              abs_tol=1e-9)
+    ctx.check(tag + ": summary start_time (s)", s["start_time"], 0.5, abs_tol=1e-12)
+
+
+explicit = ctx.prm("bridge_crane_full_explicit.prm")
+hati = ctx.prm("bridge_crane_hati.prm")
+_, rest, whole = restart("explicit_tied", explicit, UNDAMPED + TIED)
+compare("explicit_tied", rest, whole, 1e-10, 1e-9)
+_, rest, whole = restart("explicit_braked", explicit, UNDAMPED)
+compare("explicit_braked", rest, whole, 1e-8, 1e-7)
+hati_state, rest, whole = restart("hati_tied", hati, UNDAMPED + TIED)
+compare("hati_tied", rest, whole, 2e-5, 4e-3)
+
+# HATI's state restarted fully explicit: the same energies at the restart
+cross, _ = ctx.run(hati, "hati_to_explicit", UNDAMPED + TIED + [
+    "Time integration/Method=CD-Lagrange", "Time integration/Time step=2e-5",
+    "Time integration/End time=0.6", "Analysis/Initial state=file",
+    "Analysis/Initial state file=" + hati_state])
+# (HATI's own restart from the state: the interface DoFs take the explicit
+# side's displacements, which differ from the implicit side's by round-off
+# of the G3' continuity: 5e-7 of the unbroken run's internal energy)
+ctx.check("HATI state -> CD-Lagrange: internal energy at 0.5 s (J)",
+          energies(cross)["internal"], energies(rest)["internal"], rel=1e-9)
+ctx.check("HATI state -> CD-Lagrange: energy balance relative",
+          read_summary(cross)["energy_balance_relative"], 0.0, abs_tol=1e-9)
+
+# refusals, each naming the parameter and the file
+truncated = os.path.join(ctx.work, "truncated.bin")
+with open(hati_state, "rb") as f:
+    data = f.read()
+with open(truncated, "wb") as f:
+    f.write(data[:-8])
+for what, prm, sets, expected in (
+        ("another model", ctx.prm("portal_frame_dynamic.prm"), [], "DoFs"),
+        ("past End time", hati, ["Time integration/End time=0.4"], "not before"),
+        ("truncated", hati, [], "truncated")):
+    state = truncated if what == "truncated" else hati_state
+    _, p = ctx.run(prm, "refused", sets + UNDAMPED + TIED + ["Analysis/Initial state=file",
+                                          "Analysis/Initial state file=" + state],
+                   expect_failure=True)
+    ctx.check_true("refused, %s: one line naming the file" % what,
+                   p.returncode != 0 and expected in p.stderr and state in p.stderr
+                   and "Analysis/Initial state file" in p.stderr, p.stderr.strip())
+ctx.finish()
