@@ -29,12 +29,21 @@ header_value(std::istringstream &in, const std::string &key, const std::string &
 }
 } // namespace
 
+std::string state_model_line(const std::string &description)
+{
+  std::string line = description;
+  for (char &c : line)
+    if (c == '\n' || c == '\r')
+      c = ' ';
+  return line;
+}
+
 std::string state_file_content(const RunState &state)
 {
   std::ostringstream s;
   s.precision(17);
   s << format_line << "\ntime " << state.time << "\nn_dofs " << state.displacement.size()
-    << "\nmodel " << state.model << "\ndata\n";
+    << "\nmodel " << state_model_line(state.model) << "\ndata\n";
   std::string content = s.str();
   const std::size_t n = state.displacement.size(), header = content.size();
   Assert(state.velocity.size() == n && state.contact_force.size() == n,
@@ -82,9 +91,10 @@ RunState read_state_file(const std::string &path,
               ExcMessage(where + ": the state has " + printable(dofs) +
                          " DoFs, the model of this run " + std::to_string(n_dofs) +
                          ": it was written for another model or mesh"));
-  AssertThrow(state.model == model,
+  AssertThrow(state.model == state_model_line(model),
               ExcMessage(where + ": the state was written for the model '" +
-                         printable(state.model) + "', this run's is '" + model + "'"));
+                         printable(state.model) + "', this run's is '" +
+                         state_model_line(model) + "'"));
   const std::size_t data = static_cast<std::size_t>(in.tellg()),
                     bytes = 3 * std::size_t(n_dofs) * sizeof(double);
   AssertThrow(content.size() == data + bytes,

@@ -130,9 +130,9 @@ void check_state(const Watchdog &watchdog,
   }
 }
 
-Progress::Progress(const double interval, const double end_time)
-    : interval(interval), end_time(end_time), start(std::chrono::steady_clock::now()),
-      last(start)
+Progress::Progress(const double interval, const double end_time, const double start_time)
+    : interval(interval), end_time(end_time), start_time(start_time),
+      start(std::chrono::steady_clock::now()), last(start)
 {
 }
 
@@ -148,7 +148,8 @@ bool Progress::due()
 void Progress::print(const double t, const unsigned long step) const
 {
   const double wall = wall_time();
-  const double fraction = t / end_time;
+  const double fraction =
+      end_time > start_time ? (t - start_time) / (end_time - start_time) : 1.;
   const auto precision = std::cout.precision();
   std::cout << "  t = " << std::setw(12) << std::setprecision(6) << t << " s ("
             << std::setw(5) << std::fixed << std::setprecision(1) << 100. * fraction

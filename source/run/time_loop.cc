@@ -335,7 +335,7 @@ TimeLoop<Integrator>::TimeLoop(Integrator &integrator,
                    end_time,
                    directory,
                    [&problem](const std::string &message) { problem.warn(message); }}),
-      progress(problem.output_parameters.progress_interval, end_time),
+      progress(problem.output_parameters.progress_interval, end_time, system.start_time),
       watchdog(*problem.model, problem.system),
       every_check(
           explicit_scheme ? Watchdog::check_interval

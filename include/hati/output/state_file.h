@@ -42,6 +42,9 @@ struct RunState
   Vector<double> contact_force;
 };
 
+/** @p description on one line (line breaks as spaces): the header's `model` line. */
+std::string state_model_line(const std::string &description);
+
 /**
  * The bytes of `state.bin` for @p state: a text header (`hati state 1`,
  * `time`, `n_dofs`, `model`, `data` lines) and the displacement, the

@@ -133,7 +133,11 @@ OutputState contact_state(const Integrator &integrator, const double impulse_dur
 class Progress
 {
 public:
-  Progress(const double interval, const double end_time);
+  /**
+   * Lines every @p interval s of wall time for a run from @p start_time to
+   * @p end_time (s of simulated time; a restart starts after 0).
+   */
+  Progress(const double interval, const double end_time, const double start_time = 0.);
 
   /** Whether a progress line is due (and, if so, the next one counts from now). */
   bool due();
@@ -145,7 +149,7 @@ public:
   double wall_time() const;
 
 private:
-  const double interval, end_time;
+  const double interval, end_time, start_time;
   const std::chrono::steady_clock::time_point start;
   std::chrono::steady_clock::time_point last;
 };
