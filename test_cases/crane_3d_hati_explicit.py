@@ -42,7 +42,10 @@ from hati_test import Context, read_summary
 
 ctx = Context()
 prm = ctx.prm("bridge_crane_3d.prm")
+RECORDS = os.path.join(ctx.source, "data", "accelerograms")
 COMMON = ["Model/Bridge crane/Girder element size=1.1",
+          "Loading/Accelerogram X=" + os.path.join(RECORDS, "Rinaldi228.AT2"),
+          "Loading/Accelerogram Z=" + os.path.join(RECORDS, "RinaldiUP.AT2"),
           "Model/Bridge crane/Eccentricities=true",
           "Model/Bridge crane/Travel=tied", "Model/Bridge crane/Hoist=rigid",
           "Model/Bridge crane/Damping ratio=0", "Output/Output interval=0",

@@ -28,7 +28,10 @@ import numpy as np
 from hati_test import Context, read_summary
 
 ctx = Context()
-UNDAMPED = ["Model/Bridge crane/Damping ratio=0", "Output/Output interval=0",
+RECORDS = os.path.join(ctx.source, "data", "accelerograms")
+UNDAMPED = ["Loading/Accelerogram X=" + os.path.join(RECORDS, "Rinaldi228.AT2"),
+            "Loading/Accelerogram Z=" + os.path.join(RECORDS, "RinaldiUP.AT2"),
+            "Model/Bridge crane/Damping ratio=0", "Output/Output interval=0",
             "Output/History interval=2e-4", "Output/Section force interval=0"]
 TIED = ["Model/Bridge crane/Travel=tied", "Model/Bridge crane/Hoist=rigid"]
 
