@@ -43,12 +43,17 @@ std::string state_file_content(const RunState &state)
   std::ostringstream s;
   s.precision(17);
   s << format_line << "\ntime " << state.time << "\nn_dofs " << state.displacement.size()
-    << "\nmodel " << state_model_line(state.model) << "\ndata\n";
+    << "\nmodel " << state_model_line(state.model) << '\n';
+  if (state.interface_multiplier.size() > 0)
+    s << "interface " << state.interface_multiplier.size() << ' '
+      << state.interface_signature << '\n';
+  s << "data\n";
   std::string content = s.str();
   const std::size_t n = state.displacement.size(), header = content.size();
   Assert(state.velocity.size() == n && state.contact_force.size() == n,
          ExcMessage("state_file_content: vectors of different sizes"));
-  content.resize(header + 3 * n * sizeof(double));
+  const std::size_t k = state.interface_multiplier.size();
+  content.resize(header + (3 * n + k) * sizeof(double));
   std::size_t at = header;
   for (const Vector<double> *v :
        {&state.displacement, &state.velocity, &state.contact_force})
@@ -56,6 +61,8 @@ std::string state_file_content(const RunState &state)
     std::memcpy(&content[at], v->data(), n * sizeof(double));
     at += n * sizeof(double);
   }
+  if (k > 0)
+    std::memcpy(&content[at], state.interface_multiplier.data(), k * sizeof(double));
   return content;
 }
 
@@ -79,7 +86,22 @@ RunState read_state_file(const std::string &path,
   const std::string time = header_value(in, "time", where);
   const std::string dofs = header_value(in, "n_dofs", where);
   state.model = header_value(in, "model", where);
-  AssertThrow(std::getline(in, line) && line == "data",
+  std::getline(in, line);
+  unsigned long n_interface = 0;
+  if (line.rfind("interface ", 0) == 0)
+  {
+    const std::string count = line.substr(10);
+    char *count_end = nullptr;
+    n_interface = std::strtoul(count.c_str(), &count_end, 10);
+    if (*count_end == ' ')
+      state.interface_signature = std::string(count_end + 1);
+    AssertThrow(count_end != count.c_str() && n_interface < n_dofs &&
+                    state.interface_signature.size() == 16,
+                ExcMessage(where + ": the interface line '" + printable(line) +
+                           "' does not give a number of interface rows"));
+    std::getline(in, line);
+  }
+  AssertThrow(in && line == "data",
               ExcMessage(where + ": the header does not end with a 'data' line"));
   char *end = nullptr;
   state.time = std::strtod(time.c_str(), &end);
@@ -96,7 +118,7 @@ RunState read_state_file(const std::string &path,
                          printable(state.model) + "', this run's is '" +
                          state_model_line(model) + "'"));
   const std::size_t data = static_cast<std::size_t>(in.tellg()),
-                    bytes = 3 * std::size_t(n_dofs) * sizeof(double);
+                    bytes = (3 * std::size_t(n_dofs) + n_interface) * sizeof(double);
   AssertThrow(content.size() == data + bytes,
               ExcMessage(where + ": " + std::to_string(content.size() - data) +
                          " bytes of data where " + std::to_string(bytes) +
@@ -108,8 +130,14 @@ RunState read_state_file(const std::string &path,
     std::memcpy(v->data(), &content[at], n_dofs * sizeof(double));
     at += n_dofs * sizeof(double);
   }
-  for (const Vector<double> *v :
-       {&state.displacement, &state.velocity, &state.contact_force})
+  state.interface_multiplier.reinit(n_interface);
+  if (n_interface > 0)
+    std::memcpy(
+        state.interface_multiplier.data(), &content[at], n_interface * sizeof(double));
+  for (const Vector<double> *v : {&state.displacement,
+                                  &state.velocity,
+                                  &state.contact_force,
+                                  &state.interface_multiplier})
     for (const double x : *v)
       AssertThrow(std::isfinite(x),
                   ExcMessage(where + ": the state holds a value that is not finite"));

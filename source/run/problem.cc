@@ -11,6 +11,7 @@
 #include <hati/output/state_file.h>
 #include <hati/run/analysis_registry.h>
 #include <hati/run/problem.h>
+#include <hati/run/run_state.h>
 #include <hati/run/run_tools.h>
 #include <hati/run/suite_plan.h>
 #include <hati/time/cd_lagrange.h>
@@ -234,6 +235,18 @@ void Problem::prepare_transient()
   add_damping_summary();
   if (decomposition && decomposition_parameters.implicit_reduction == "Craig-Bampton")
     reduce_implicit_part();
+  // a HATI state of the same coupling (interface and implicit part): it
+  // goes on from its multiplier (G3'), otherwise Lambda_0 is solved
+  // (doc/theory.md 9.5)
+  if (decomposition && restart_multiplier.size() > 0)
+  {
+    if (restart_interface == coupling_signature(*decomposition))
+      decomposition->initial_multiplier = restart_multiplier;
+    else
+      out << "  the state's interface multiplier belongs to another coupling: "
+             "Lambda_0 from the acceleration continuity"
+          << std::endl;
+  }
 }
 
 void Problem::set_file_initial_state()
@@ -255,6 +268,8 @@ void Problem::set_file_initial_state()
   system.initial_displacement = state.displacement;
   system.initial_velocity = state.velocity;
   system.start_time = state.time;
+  restart_multiplier = state.interface_multiplier;
+  restart_interface = state.interface_signature;
   if (state.contact_force.linfty_norm() > 0.)
     system.initial_contact_reaction = state.contact_force;
   // a single-domain run: the DoFs its system holds fixed (supports, and the

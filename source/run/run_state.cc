@@ -1,9 +1,13 @@
+#include <hati/analysis/reduced_part.h>
 #include <hati/run/problem.h>
 #include <hati/run/run_state.h>
 #include <hati/time/cd_lagrange.h>
 #include <hati/time/hati_coupling.h>
 #include <hati/time/newmark.h>
 
+#include <cstdint>
+#include <iomanip>
+#include <sstream>
 #include <type_traits>
 #include <vector>
 
@@ -30,6 +34,8 @@ RunState current_run_state(const Integrator &integrator, const Problem &problem)
   {
     state.velocity = integrator.integer_velocity();
     state.contact_force = integrator.contact_force();
+    state.interface_multiplier = integrator.interface_multiplier();
+    state.interface_signature = coupling_signature(*problem.decomposition);
   }
   if constexpr (!std::is_same_v<Integrator, CDLagrange>)
   {
@@ -48,6 +54,30 @@ RunState current_run_state(const Integrator &integrator, const Problem &problem)
     }
   }
   return state;
+}
+
+std::string coupling_signature(const Decomposition &decomposition)
+{
+  std::uint64_t hash = 14695981039346656037ull;
+  const auto add = [&hash](const void *data, const std::size_t bytes)
+  {
+    const auto *b = static_cast<const unsigned char *>(data);
+    for (std::size_t i = 0; i < bytes; ++i)
+      hash = (hash ^ b[i]) * 1099511628211ull;
+  };
+  for (const SparseRow &row : decomposition.rows[0])
+    for (unsigned int i = 0; i < row.dofs.size(); ++i)
+    {
+      const std::uint64_t dof = decomposition.parts[0].global_dofs[row.dofs[i]];
+      add(&dof, sizeof(dof));
+      add(&row.coefficients[i], sizeof(double));
+    }
+  // the implicit part as it is stepped: its DoFs or reduced coordinates
+  const std::uint64_t n_implicit = implicit_system(decomposition).n_dofs();
+  add(&n_implicit, sizeof(n_implicit));
+  std::ostringstream s;
+  s << std::hex << std::setw(16) << std::setfill('0') << hash;
+  return s.str();
 }
 
 template RunState current_run_state(const CDLagrange &, const Problem &);

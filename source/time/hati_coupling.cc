@@ -121,7 +121,11 @@ HATICoupling::HATICoupling(const Decomposition &decomposition,
     v->reinit(n_gamma);
   global_U.reinit(n_global_dofs);
   global_V.reinit(n_global_dofs);
-  interface->initial_multiplier(explicit_integrator, implicit, lambda_n);
+  const bool restarted = decomposition.initial_multiplier.size() == n_gamma;
+  interface->initial_multiplier(explicit_integrator,
+                                implicit,
+                                lambda_n,
+                                restarted ? &decomposition.initial_multiplier : nullptr);
   setup = seconds_since(start);
 }
 

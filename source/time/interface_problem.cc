@@ -82,7 +82,8 @@ void InterfaceProblem::invert(const FullMatrix<double> &H_E,
 
 void InterfaceProblem::initial_multiplier(CDLagrange &explicit_integrator,
                                           Newmark &implicit,
-                                          Vector<double> &lambda) const
+                                          Vector<double> &lambda,
+                                          const Vector<double> *given) const
 {
   // acceleration continuity at t = 0:
   // (C_E M_E^-1 C_E^T + C_I M_I^-1 C_I^T) Lambda_0 = -(C_E a_E + C_I a_I)
@@ -94,6 +95,8 @@ void InterfaceProblem::initial_multiplier(CDLagrange &explicit_integrator,
   for (unsigned int k = 0; k < n_gamma; ++k)
     rhs[k] = -((rows_E[k].apply(*state_E[1]) - rows_E[k].apply(*state_E[2])) / dt +
                rows_I[k].apply(*state_I[2]));
+  if (given != nullptr)
+    rhs = *given;
   if (rhs.linfty_norm() == 0.)
     return;
   const unsigned int n_I = implicit_system(decomposition).n_dofs();
@@ -116,8 +119,11 @@ void InterfaceProblem::initial_multiplier(CDLagrange &explicit_integrator,
     for (unsigned int k = 0; k < n_gamma; ++k)
       B(k, l) = rows_I[k].apply(columns[l]) + W_E(k, l);
   }
-  B.compute_lu_factorization();
-  B.solve(rhs);
+  if (given == nullptr)
+  {
+    B.compute_lu_factorization();
+    B.solve(rhs);
+  }
   lambda = rhs;
   for (unsigned int k = 0; k < n_gamma; ++k)
   {

@@ -53,6 +53,13 @@ struct Decomposition
    * steps parts[1] itself (implicit_system(), implicit_rows()).
    */
   std::shared_ptr<const ReducedImplicitPart> reduced;
+  /**
+   * The interface multiplier to start from (N, one per row of rows[0]):
+   * that of the state a run restarts from (Analysis/Initial state = file),
+   * with which the coupling goes on as the run that wrote it; empty: solved
+   * from the acceleration continuity (InterfaceProblem::initial_multiplier()).
+   */
+  Vector<double> initial_multiplier;
 };
 
 /**

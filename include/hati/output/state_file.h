@@ -22,8 +22,8 @@ using namespace dealii;
  * model at a macro-step end from both. With the forces of the last
  * step's impulses, a CD-Lagrange run restarted with its own step goes on
  * as it would have (to round-off). What else a run carries (the memory
- * variables of frequency-range damping, HATI's interface force) is not
- * part of it: a restart takes them up afresh.
+ * variables of frequency-range damping) is not part of it: a restart takes
+ * it up afresh.
  */
 struct RunState
 {
@@ -40,6 +40,14 @@ struct RunState
    * that a closed contact does not move into its support.
    */
   Vector<double> contact_force;
+  /**
+   * HATI's interface multiplier Lambda_n (N, one per interface row; empty
+   * for the other methods): a HATI restart with the same interface starts
+   * its coupling from it (Decomposition::initial_multiplier).
+   */
+  Vector<double> interface_multiplier;
+  /** interface_signature() of the interface it belongs to. */
+  std::string interface_signature;
 };
 
 /** @p description on one line (line breaks as spaces): the header's `model` line. */
@@ -47,8 +55,9 @@ std::string state_model_line(const std::string &description);
 
 /**
  * The bytes of `state.bin` for @p state: a text header (`hati state 1`,
- * `time`, `n_dofs`, `model`, `data` lines) and the displacement, the
- * velocity and the contact force as native doubles.
+ * `time`, `n_dofs`, `model`, with HATI's multiplier an `interface` line
+ * with its size, and `data`) and the displacement, the velocity, the
+ * contact force and the multiplier as native doubles.
  */
 std::string state_file_content(const RunState &state);
 

@@ -201,6 +201,9 @@ private:
    */
   void add_explicit_link_reactions();
 
+  /** A state file's HATI interface multiplier and its interface (RunState). */
+  Vector<double> restart_multiplier;
+  std::string restart_interface;
   /** The static contact force per contact row of the initial state (N). */
   std::vector<double> static_forces;
   /** The static friction force along each tangent row of a contact (N, A9). */

@@ -3,9 +3,12 @@
 
 #include <hati/output/state_file.h>
 
+#include <string>
+
 namespace hati
 {
 class Problem;
+struct Decomposition;
 
 /**
  * The state of @p integrator (CDLagrange, Newmark or HATICoupling, at a step
@@ -19,6 +22,16 @@ class Problem;
  */
 template <class Integrator>
 RunState current_run_state(const Integrator &integrator, const Problem &problem);
+
+/**
+ * What identifies the interface of @p decomposition (its explicit rows in
+ * the whole model's numbering: DoFs and coefficients, and the number of
+ * DoFs or reduced coordinates of the implicit part as it is stepped) as 16
+ * hexadecimal digits (FNV-1a): a restart takes a state's interface
+ * multiplier only for the coupling it was written for (RunState).
+ */
+std::string coupling_signature(const Decomposition &decomposition);
+
 } // namespace hati
 
 #endif

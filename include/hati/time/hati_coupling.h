@@ -154,6 +154,8 @@ public:
    * (RunState).
    */
   Vector<double> contact_force() const;
+  /** The interface multiplier at the macro-step end, Lambda_n (N; RunState). */
+  const Vector<double> &interface_multiplier() const { return lambda_n; }
 
   /**
    * The DoFs (global numbering) whose displacements and velocities the

@@ -71,11 +71,14 @@ public:
    * `(C_E M_E^-1 C_E^T + C_I M_I^-1 C_I^T) Lambda_0 = -(C_E a_E + C_I a_I)`
    * (doc/theory.md 9.5), written to @p lambda and applied to the initial
    * states of @p explicit_integrator and @p implicit; @p lambda is left
-   * unchanged if the accelerations are already continuous.
+   * unchanged if the accelerations are already continuous. With @p given
+   * (a restart's multiplier, Decomposition::initial_multiplier) that one
+   * is applied instead of solved for.
    */
   void initial_multiplier(CDLagrange &explicit_integrator,
                           Newmark &implicit,
-                          Vector<double> &lambda) const;
+                          Vector<double> &lambda,
+                          const Vector<double> *given = nullptr) const;
 
   /** After the free implicit step (G1): keeps `C_I V^I_free` (m/s). */
   void set_free_implicit_velocity(const Newmark &implicit);
