@@ -135,7 +135,9 @@ HATI_UNIT_TEST(lcp_solver)
     v[1] = -0.2;
     v[2] = -1.1;
     L.vmult(q, v);
-    hati::solve_equalities(W, q, lambda);
+    FullMatrix<double> W_inverse;
+    bool inverted = false;
+    hati::solve_equalities(W, W_inverse, inverted, q, lambda);
     Vector<double> after(v), impulse(3);
     L.Tvmult(impulse, lambda);
     for (unsigned int d = 0; d < 3; ++d)

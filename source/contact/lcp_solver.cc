@@ -210,19 +210,6 @@ void minimum_norm_solution(const FullMatrix<double> &W,
 }
 
 void solve_equalities(const FullMatrix<double> &W,
-                      const Vector<double> &q,
-                      Vector<double> &lambda)
-{
-  // the inverse's storage per size, reused
-  const unsigned int n = W.m();
-  thread_local std::vector<FullMatrix<double>> inverses;
-  if (inverses.size() <= n)
-    inverses.resize(n + 1);
-  bool inverted = false;
-  solve_equalities(W, inverses[n], inverted, q, lambda);
-}
-
-void solve_equalities(const FullMatrix<double> &W,
                       FullMatrix<double> &W_inverse,
                       bool &inverted,
                       const Vector<double> &q,

@@ -117,7 +117,9 @@ RunState read_state_file(const std::string &path,
               ExcMessage(where + ": the state was written for the model '" +
                          printable(state.model) + "', this run's is '" +
                          state_model_line(model) + "'"));
-  const std::size_t data = static_cast<std::size_t>(in.tellg()),
+  // (a header without data leaves the stream at its end: tellg() is -1)
+  const std::size_t data = in.tellg() < 0 ? content.size()
+                                          : static_cast<std::size_t>(in.tellg()),
                     bytes = (3 * std::size_t(n_dofs) + n_interface) * sizeof(double);
   AssertThrow(content.size() == data + bytes,
               ExcMessage(where + ": " + std::to_string(content.size() - data) +

@@ -64,17 +64,9 @@ void minimum_norm_solution(const FullMatrix<double> &W,
 /**
  * `W lambda = -q` as equalities (a prescribed active set, the coupling's
  * ramp responses, G3'): by the Gauss-Jordan inverse of @p W, or, where that
- * is not finite (dependent rows), the minimum-norm solution.
- */
-void solve_equalities(const FullMatrix<double> &W,
-                      const Vector<double> &q,
-                      Vector<double> &lambda);
-
-/**
- * solve_equalities() with the inverse of @p W kept in @p W_inverse: computed
- * when @p inverted is false (then set true), reused otherwise (the caller
- * resets @p inverted when W changes). The same operations, the same
- * results.
+ * is not finite (dependent rows), the minimum-norm solution. The inverse is
+ * kept in @p W_inverse: computed when @p inverted is false (then set true),
+ * reused otherwise (the caller resets @p inverted when W changes).
  */
 void solve_equalities(const FullMatrix<double> &W,
                       FullMatrix<double> &W_inverse,
