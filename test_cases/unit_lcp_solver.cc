@@ -3,7 +3,8 @@
 // large ones. Every solution is checked against the complementarity
 // conditions themselves (lambda >= 0, w = W lambda + q >= 0, lambda.w = 0),
 // an independent criterion, and the enumeration against PGS on the same
-// problems; the prescribed active set's equalities with dependent rows.
+// problems; the prescribed active set's equalities with dependent rows; a
+// cluster's equalities eliminated against PGS.
 // Returns non-zero on failure.
 #include <deal.II/base/exceptions.h>
 
@@ -12,8 +13,10 @@
 #include <hati/contact/lcp_solver.h>
 
 #include <cmath>
+#include <iomanip>
 #include <iostream>
 #include <random>
+#include <sstream>
 
 namespace hati_unit_lcp_solver
 {
@@ -34,6 +37,13 @@ violation(const FullMatrix<double> &W, const Vector<double> &q, const Vector<dou
   for (unsigned int i = 0; i < q.size(); ++i)
     v = std::max({v, -l[i], -w[i], std::abs(l[i] * w[i])});
   return v / std::max(1e-300, q.linfty_norm());
+}
+
+std::string sci(const double x)
+{
+  std::ostringstream s;
+  s << std::scientific << std::setprecision(2) << x;
+  return s.str();
 }
 
 FullMatrix<double> random_spd(const unsigned int n, std::mt19937 &gen)
@@ -148,6 +158,72 @@ HATI_UNIT_TEST(lcp_solver)
     expect(std::abs(lambda[2] - lambda[3]) < 1e-12 * std::abs(lambda[2]) &&
                std::abs(lambda[2] + lambda[3] - 0.2 * 250.) < 1e-10,
            "dependent prescribed rows: the minimum-norm split of the y impulse");
+  }
+  // a cluster of equalities with contacts on them (ties of a rail to a
+  // flange, a wheel on the rail): the equalities eliminated
+  // (BilateralElimination) against the conditions themselves (bilateral
+  // rows: w = 0, either sign; unilateral: complementarity) and against
+  // projected Gauss-Seidel on the whole cluster (tolerance 1e-12); twice
+  // with the same W (the elimination kept) and a new q
+  for (const unsigned int n_unilateral : {0u, 1u, 3u, 14u})
+  {
+    const unsigned int n = 20 + n_unilateral;
+    const FullMatrix<double> W = random_spd(n, gen);
+    // the contacts' rows spread among the equalities
+    std::vector<bool> bilateral(n, true);
+    for (unsigned int k = 0; k < n_unilateral; ++k)
+      bilateral[k * n / n_unilateral] = false;
+    hati::BilateralElimination elimination;
+    for (unsigned int trial = 0; trial < 2; ++trial)
+    {
+      Vector<double> q(n), l, l_pgs;
+      for (unsigned int i = 0; i < n; ++i)
+        q[i] = u(gen);
+      hati::solve_lcp(W, q, bilateral, l, elimination);
+      hati::solve_lcp(W, q, bilateral, l_pgs);
+      Vector<double> w(q);
+      W.vmult_add(w, l);
+      double v = 0.;
+      for (unsigned int i = 0; i < n; ++i)
+        v = bilateral[i] ? std::max(v, std::abs(w[i]))
+                         : std::max({v, -l[i], -w[i], std::abs(l[i] * w[i])});
+      v /= q.linfty_norm();
+      Vector<double> d(l);
+      d -= l_pgs;
+      const std::string name = "equalities eliminated, " + std::to_string(n_unilateral) +
+                               " contacts, trial " + std::to_string(trial) + ": ";
+      expect(elimination.formed && elimination.invertible, name + "elimination formed");
+      expect(v < 1e-12, name + "conditions " + sci(v));
+      expect(d.linfty_norm() < 1e-8 * l_pgs.linfty_norm(),
+             name + "against PGS " + sci(d.linfty_norm() / l_pgs.linfty_norm()));
+    }
+  }
+  // dependent equalities (the same tie row twice): not eliminated, the plain
+  // solve (PGS) gives a solution
+  {
+    const unsigned int n = 16;
+    FullMatrix<double> W = random_spd(n, gen);
+    for (unsigned int j = 0; j < n; ++j)
+      W(1, j) = W(0, j);
+    for (unsigned int i = 0; i < n; ++i)
+      W(i, 1) = W(i, 0);
+    std::vector<bool> bilateral(n, true);
+    bilateral[n - 1] = false;
+    Vector<double> q(n), l;
+    for (unsigned int i = 0; i < n; ++i)
+      q[i] = u(gen);
+    q[1] = q[0];
+    hati::BilateralElimination elimination;
+    hati::solve_lcp(W, q, bilateral, l, elimination);
+    Vector<double> w(q);
+    W.vmult_add(w, l);
+    double v = std::max({-l[n - 1], -w[n - 1], std::abs(l[n - 1] * w[n - 1])});
+    for (unsigned int i = 0; i + 1 < n; ++i)
+      v = std::max(v, std::abs(w[i]));
+    expect(elimination.formed && !elimination.invertible,
+           "dependent equalities: not eliminated");
+    expect(v < 1e-9 * q.linfty_norm(),
+           "dependent equalities: conditions " + sci(v / q.linfty_norm()));
   }
   std::cout << (failures ? "FAILED" : "all checks passed") << std::endl;
   return failures ? 1 : 0;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 namespace hati
@@ -151,6 +152,89 @@ bool projected_gauss_seidel(const FullMatrix<double> &W,
   }
   return false;
 }
+
+[[noreturn]] void throw_no_solution(const unsigned int n)
+{
+  std::ostringstream s;
+  s << "contact LCP: no solution found for a cluster of " << n
+    << " coupled contacts (W not positive semi-definite, or PGS did not converge)";
+  AssertThrow(false, ExcMessage(s.str()));
+  std::abort();
+}
+
+/**
+ * The elimination of a cluster's bilateral rows (BilateralElimination);
+ * false where W_BB is singular to round-off (redundant equalities) or a
+ * unilateral row moves only with the equalities (S(a, a) ~ 0): there the
+ * plain solve.
+ */
+bool form_elimination(const FullMatrix<double> &W,
+                      const std::vector<bool> &bilateral,
+                      BilateralElimination &e)
+{
+  const unsigned int n = W.m();
+  e.b.clear();
+  e.u.clear();
+  for (unsigned int i = 0; i < n; ++i)
+    (i < bilateral.size() && bilateral[i] ? e.b : e.u).push_back(i);
+  const unsigned int nb = e.b.size(), nu = e.u.size();
+  FullMatrix<double> Wbb(nb, nb);
+  for (unsigned int k = 0; k < nb; ++k)
+    for (unsigned int j = 0; j < nb; ++j)
+      Wbb(k, j) = W(e.b[k], e.b[j]);
+  // W_BB = L_B M^-1 L_B^T: symmetric, positive definite unless the
+  // equalities are dependent (Cholesky throws there, in every build)
+  LAPACKFullMatrix<double> inverse(nb, nb);
+  inverse = Wbb;
+  inverse.set_property(LAPACKSupport::symmetric);
+  try
+  {
+    inverse.invert();
+  }
+  catch (...)
+  {
+    return false;
+  }
+  e.Wbb_inverse.reinit(nb, nb);
+  for (unsigned int k = 0; k < nb; ++k)
+    for (unsigned int j = 0; j < nb; ++j)
+      e.Wbb_inverse(k, j) = inverse(k, j);
+  // W_BB^-1 W_BB = I to 1e-9, else the equalities are (nearly) dependent
+  for (unsigned int k = 0; k < nb; ++k)
+    for (unsigned int j = 0; j < nb; ++j)
+    {
+      double s = (k == j) ? -1. : 0.;
+      for (unsigned int l = 0; l < nb; ++l)
+        s += e.Wbb_inverse(k, l) * Wbb(l, j);
+      if (!(std::abs(s) <= 1e-9))
+        return false;
+    }
+  e.X.reinit(nb, nu);
+  for (unsigned int k = 0; k < nb; ++k)
+    for (unsigned int c = 0; c < nu; ++c)
+    {
+      double s = 0.;
+      for (unsigned int j = 0; j < nb; ++j)
+        s += e.Wbb_inverse(k, j) * W(e.b[j], e.u[c]);
+      e.X(k, c) = s;
+    }
+  e.S.reinit(nu, nu);
+  for (unsigned int a = 0; a < nu; ++a)
+    for (unsigned int c = 0; c < nu; ++c)
+    {
+      double s = W(e.u[a], e.u[c]);
+      for (unsigned int k = 0; k < nb; ++k)
+        s -= W(e.u[a], e.b[k]) * e.X(k, c);
+      e.S(a, c) = s;
+    }
+  for (unsigned int a = 0; a < nu; ++a)
+    if (!(e.S(a, a) > 1e-10 * W(e.u[a], e.u[a])))
+      return false;
+  e.y.reinit(nb);
+  e.q_s.reinit(nu);
+  e.lambda_u.reinit(nu);
+  return true;
+}
 } // namespace
 
 Vector<double> solve_lcp(const FullMatrix<double> &W,
@@ -186,11 +270,68 @@ void solve_lcp(const FullMatrix<double> &W,
   const bool ok = (n <= 12) ? enumerate(W, q, bilateral, lambda)
                             : projected_gauss_seidel(W, q, bilateral, lambda);
   if (!ok)
+    throw_no_solution(n);
+}
+
+void solve_lcp(const FullMatrix<double> &W,
+               const Vector<double> &q,
+               const std::vector<bool> &bilateral,
+               Vector<double> &lambda,
+               BilateralElimination &e)
+{
+  const unsigned int n = q.size();
+  if (n <= 12 || std::find(bilateral.begin(), bilateral.end(), true) == bilateral.end())
   {
-    std::ostringstream s;
-    s << "contact LCP: no solution found for a cluster of " << n
-      << " coupled contacts (W not positive semi-definite, or PGS did not converge)";
-    AssertThrow(false, ExcMessage(s.str()));
+    solve_lcp(W, q, bilateral, lambda);
+    return;
+  }
+  if (!e.formed)
+  {
+    e.invertible = form_elimination(W, bilateral, e);
+    e.formed = true;
+  }
+  if (!e.invertible)
+  {
+    solve_lcp(W, q, bilateral, lambda);
+    return;
+  }
+  if (lambda.size() != n)
+    lambda.reinit(n);
+  const unsigned int nb = e.b.size(), nu = e.u.size();
+  // y = W_BB^-1 q_B, q_S = q_U - W_UB y
+  for (unsigned int k = 0; k < nb; ++k)
+  {
+    double s = 0.;
+    for (unsigned int j = 0; j < nb; ++j)
+      s += e.Wbb_inverse(k, j) * q[e.b[j]];
+    e.y[k] = s;
+  }
+  for (unsigned int a = 0; a < nu; ++a)
+  {
+    double s = q[e.u[a]];
+    for (unsigned int k = 0; k < nb; ++k)
+      s -= W(e.u[a], e.b[k]) * e.y[k];
+    e.q_s[a] = s;
+  }
+  // the unilateral rows' LCP (their S(a, a) > 0: form_elimination())
+  if (nu == 1)
+    e.lambda_u[0] = std::max(0., -e.q_s[0] / e.S(0, 0));
+  else if (nu > 1)
+  {
+    static const std::vector<bool> none;
+    const bool ok = (nu <= 12) ? enumerate(e.S, e.q_s, none, e.lambda_u)
+                               : projected_gauss_seidel(e.S, e.q_s, none, e.lambda_u);
+    if (!ok)
+      throw_no_solution(n);
+  }
+  for (unsigned int a = 0; a < nu; ++a)
+    lambda[e.u[a]] = e.lambda_u[a];
+  for (unsigned int k = 0; k < nb; ++k)
+  {
+    double s = e.y[k];
+    for (unsigned int c = 0; c < nu; ++c)
+      s += e.X(k, c) * e.lambda_u[c];
+    lambda[e.b[k]] = -s;
   }
 }
 

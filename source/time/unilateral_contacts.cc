@@ -195,6 +195,7 @@ void UnilateralContacts::apply_impulses(const Vector<double> &U,
       block->inverse_mass = &minv;
       delassus(cluster_rows, minv, block->W);
       block->inverted = false;
+      block->elimination.formed = false;
     }
     const FullMatrix<double> &W = block->W;
     Vector<double> &l = lcp_lambda[m];
@@ -202,7 +203,7 @@ void UnilateralContacts::apply_impulses(const Vector<double> &U,
     if (prescribed)
       solve_equalities(W, block->W_inverse, block->inverted, q, l);
     else
-      solve_lcp(W, q, bilateral, l);
+      solve_lcp(W, q, bilateral, l, block->elimination);
 
     // V_{n+3/2} = V_free + M^-1 L^T lambda  (A5); lambda is an impulse (A6)
     for (unsigned int a = 0; a < m; ++a)

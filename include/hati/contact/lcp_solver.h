@@ -46,6 +46,43 @@ void solve_lcp(const FullMatrix<double> &W,
                Vector<double> &lambda);
 
 /**
+ * A cluster's equalities eliminated once (A5 with bilateral rows: ties,
+ * rigid links): with B the bilateral rows and U the unilateral ones,
+ *
+ *   lambda_B = -W_BB^-1 (q_B + W_BU lambda_U),
+ *   w_U = S lambda_U + q_S,  S = W_UU - W_UB W_BB^-1 W_BU,
+ *                            q_S = q_U - W_UB W_BB^-1 q_B,
+ *
+ * and the LCP of the few unilateral rows alone. Formed on the first solve
+ * with a W and kept while W is (the caller resets @p formed when W
+ * changes). A cluster of the rails' ties with a trolley wheel on them
+ * (dozens of equalities, one contact) took projected Gauss-Seidel hundreds
+ * of sweeps a step.
+ */
+struct BilateralElimination
+{
+  bool formed = false;
+  /** W_BB invertible to round-off: false keeps the plain solve. */
+  bool invertible = false;
+  std::vector<unsigned int> b, u;
+  /** W_BB^-1, W_BB^-1 W_BU and the Schur complement S. */
+  FullMatrix<double> Wbb_inverse, X, S;
+  Vector<double> y, q_s, lambda_u;
+};
+
+/**
+ * solve_lcp() for a cluster with equalities through @p elimination where
+ * the cluster is larger than the enumeration's 12 rows (there the plain
+ * solve, bitwise): the equalities exactly instead of by projected
+ * Gauss-Seidel, the unilateral rows' LCP by enumeration up to 12 of them.
+ */
+void solve_lcp(const FullMatrix<double> &W,
+               const Vector<double> &q,
+               const std::vector<bool> &bilateral,
+               Vector<double> &lambda,
+               BilateralElimination &elimination);
+
+/**
  * The impulses of a prescribed active set, every row an equality:
  * `W lambda = -q` (W inverted by Gauss-Jordan), into @p lambda (resized to
  * the size of @p q). Used where a step must repeat a known active set (the

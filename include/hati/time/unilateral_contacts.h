@@ -4,6 +4,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <hati/contact/lcp_solver.h>
 #include <hati/model/discrete_system.h>
 #include <hati/time/force_law.h>
 #include <hati/time/frictional_contacts.h>
@@ -204,6 +205,8 @@ private:
     /** W^-1 for a prescribed active set (the ramp responses, G3'), once valid. */
     FullMatrix<double> W_inverse;
     bool inverted = false;
+    /** Its equalities eliminated for the LCP (ties with a contact on them, A5). */
+    BilateralElimination elimination;
   };
   /** The last two clusters that began with a row, keyed by that row. */
   struct DelassusBlocks
