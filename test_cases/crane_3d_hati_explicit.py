@@ -19,8 +19,10 @@ steps of 4 ms, about 6 h, so the window is reached by restarts
    model (after 5 ms only HATI and CD-Lagrange differed by 2-6 % at the
    trolley wheels);
 3. from the state at 1.732 s, HATI unreduced (dt = 4e-5 s, DT = 2e-4 s)
-   and CD-Lagrange at 3.2e-7 s (12,500 steps) over 4 ms, in which two
-   trolley wheels lose contact.
+   and CD-Lagrange at 3.2e-7 s (12,500 steps) over 4 ms, in which a
+   trolley wheel loses contact (which ones do depends on the state at
+   1.732 s to round-off: two did while the static state and the reduction
+   were solved with KLU instead of MUMPS).
 
 Checks (measured in the comments):
 - the trolley wheels' displacement vectors from the window's start, u(t) -
@@ -100,11 +102,11 @@ monitors = sorted({n.rsplit(".", 1)[0] for n in names_h[1:] if n.endswith(".ux")
 for m in monitors:
     cols = [names_h.index(m + "." + c) for c in ("ux", "uy", "uz")]
     diff = np.max(np.linalg.norm(dA[:, cols] - dB[:, cols], axis=1))
-    if m.startswith("cw"):  # measured 0.35 to 2.5 %
+    if m.startswith("cw"):  # measured 1.1 to 1.9 %
         peak = np.max(np.linalg.norm(B[:, cols], axis=1))
         ctx.check(m + ": max |u_HATI - u_explicit| / explicit peak |u|", diff / peak, 0.0,
                   abs_tol=0.04)
-    elif m.startswith("tw") or "midspan" in m:  # measured 0.5 to 0.8 %, 1.0 to 1.4 %
+    elif m.startswith("tw") or "midspan" in m:  # measured 0.45 to 0.75 %, 0.49 to 1.6 %
         peak = np.max(np.linalg.norm(dB[:, cols], axis=1))
         ctx.check(m + ": max |du_HATI - du_explicit| / explicit peak |du|", diff / peak, 0.0,
                   abs_tol=0.02)
@@ -115,7 +117,7 @@ trolley_e = sorted(c for c in le if c.startswith("trolley_wheel") and "lateral" 
 ctx.check_true("the same trolley wheels lose contact", trolley_h == trolley_e,
                "%s %s" % (lh, le))
 ctx.check_true("trolley wheels lose contact in the window", len(trolley_e) >= 1, str(le))
-for c in trolley_e:  # measured: 0.005 and 0.26 ms
+for c in trolley_e:  # measured: trolley wheel 1, 0.004 ms
     ctx.check(c + ": first loss of contact, HATI - explicit (s)", lh.get(c, 1.0) - le[c], 0.0,
               abs_tol=1e-3)
 for out, tol in ((out_h, 1e-8), (out_e, 1e-6)):

@@ -629,6 +629,13 @@ void test_linear_solver_choice()
     expect(resolve_linear_solver(value, 20000) == "MUMPS" &&
                direct_solver_package(value, 20000) == "Amesos_Mumps",
            value + " at 20000 DoFs: MUMPS");
+    // a 3D continuum's rows (quadratic hexahedra: about 200 entries) from
+    // 2000 DoFs, a frame's (about 20) not
+    expect(resolve_linear_solver(value, 2000, 200.) == "MUMPS" &&
+               direct_solver_package(value, 2000, 200.) == "Amesos_Mumps" &&
+               resolve_linear_solver(value, 1999, 200.) == "KLU" &&
+               resolve_linear_solver(value, 19999, 20.) == "KLU",
+           value + ": 3D continua from 2000 DoFs, frames from 20000");
   }
   expect(resolve_linear_solver("KLU", 1000000) == "KLU" &&
              resolve_linear_solver("MUMPS", 10) == "MUMPS" &&

@@ -242,7 +242,9 @@ CraigBamptonReduction::CraigBamptonReduction(const DiscreteSystem &system,
   auto since = [](const std::chrono::steady_clock::time_point t)
   { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
   add_constraint_modes(system,
-                       direct_solver_package(settings.linear_solver, system.n_dofs()));
+                       direct_solver_package(settings.linear_solver,
+                                             system.n_dofs(),
+                                             system.stiffness_row_length()));
   phase_seconds[0] = since(start);
   add_fixed_interface_modes(system, settings);
   phase_seconds[1] = since(start) - phase_seconds[0];

@@ -435,7 +435,8 @@ struct ModalProblem::Data
        const Vector<double> *rope_state,
        const std::string &linear_solver,
        const std::vector<SparseRow> *held)
-      : n(system.n_dofs()), package(direct_solver_package(linear_solver, n)),
+      : n(system.n_dofs()),
+        package(direct_solver_package(linear_solver, n, system.stiffness_row_length())),
         matrices(system, rope_state),
         elimination(close_contacts ? RowElimination(system) : RowElimination())
   {

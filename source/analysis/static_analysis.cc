@@ -591,8 +591,9 @@ void solve_static(const DiscreteSystem &system,
                   std::vector<std::array<double, 2>> *tangent_forces)
 {
   const unsigned int n = system.n_dofs();
-  const std::string solver = resolve_linear_solver(linear_solver, n),
-                    package = direct_solver_package(linear_solver, n);
+  const double row_length = system.stiffness_row_length();
+  const std::string solver = resolve_linear_solver(linear_solver, n, row_length),
+                    package = direct_solver_package(linear_solver, n, row_length);
   const std::vector<bool> &fixed = system.fixed;
   U.reinit(n);
   if (contact_forces != nullptr)

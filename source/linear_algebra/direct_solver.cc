@@ -28,10 +28,17 @@ struct DirectSolver::Data
 };
 
 std::string resolve_linear_solver(const std::string &linear_solver,
-                                  const unsigned int n_dofs)
+                                  const unsigned int n_dofs,
+                                  const double row_length)
 {
   if (linear_solver == "auto" || linear_solver == "direct")
-    return n_dofs < mumps_from_n_dofs ? "KLU" : "MUMPS";
+  {
+    const bool continuum = row_length >= mumps_from_row_length;
+    return n_dofs >= mumps_from_n_dofs ||
+                   (continuum && n_dofs >= mumps_from_n_dofs_continua)
+               ? "MUMPS"
+               : "KLU";
+  }
   AssertThrow(linear_solver == "KLU" || linear_solver == "MUMPS" ||
                   linear_solver == "iterative",
               ExcMessage("Time integration/Newmark/Linear solver = " + linear_solver +
@@ -41,10 +48,13 @@ std::string resolve_linear_solver(const std::string &linear_solver,
 }
 
 std::string direct_solver_package(const std::string &linear_solver,
-                                  const unsigned int n_dofs)
+                                  const unsigned int n_dofs,
+                                  const double row_length)
 {
   const std::string solver = resolve_linear_solver(
-      linear_solver == "iterative" ? std::string("auto") : linear_solver, n_dofs);
+      linear_solver == "iterative" ? std::string("auto") : linear_solver,
+      n_dofs,
+      row_length);
   return solver == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu";
 }
 

@@ -141,7 +141,8 @@ void run_static_analysis(Problem &problem, RunDirectory &directory)
 
   std::cout << "  static analysis (K U = F_ext(0), "
             << resolve_linear_solver(problem.newmark_parameters.linear_solver,
-                                     system.n_dofs())
+                                     system.n_dofs(),
+                                     system.stiffness_row_length())
             << " solver):\n";
   for (const auto &m : system.monitors)
   {

@@ -120,21 +120,23 @@ void NewmarkParameters::declare_parameters(ParameterHandler &prm)
                     Patterns::Double(0.),
                     "Newmark gamma (-), >= 0.5. Gamma > 0.5 adds numerical "
                     "damping and makes the scheme first order.");
-  prm.declare_entry("Linear solver",
-                    "auto",
-                    Patterns::Selection("auto|KLU|MUMPS|direct|iterative"),
-                    "KLU: the effective matrix M + gamma DT C + beta DT^2 K is "
-                    "factorised once (Amesos_Klu) and each step is one "
-                    "forward/backward substitution. MUMPS: the same with "
-                    "Amesos_Mumps (multifrontal; large models). auto: KLU below "
-                    "20000 DoFs, MUMPS at and above (the DoFs of the system solved: "
-                    "with HATI the implicit subdomain's). direct: the same as auto "
-                    "(kept for older parameter files). iterative: conjugate gradients "
-                    "preconditioned by ML algebraic multigrid. Also the solver of the "
-                    "static analysis, of Initial state = static and of the modal "
-                    "analysis (with iterative, the matrices that are always "
-                    "factorised, e.g. the shifted stiffness of the modal analysis, "
-                    "use auto's choice).");
+  prm.declare_entry(
+      "Linear solver",
+      "auto",
+      Patterns::Selection("auto|KLU|MUMPS|direct|iterative"),
+      "KLU: the effective matrix M + gamma DT C + beta DT^2 K is "
+      "factorised once (Amesos_Klu) and each step is one "
+      "forward/backward substitution. MUMPS: the same with "
+      "Amesos_Mumps (multifrontal; large models). auto: KLU below "
+      "20000 DoFs, MUMPS at and above (the DoFs of the system solved: "
+      "with HATI the implicit subdomain's), and MUMPS from 2000 DoFs "
+      "for 3D continua (60 or more stiffness entries per row). direct: the same as auto "
+      "(kept for older parameter files). iterative: conjugate gradients "
+      "preconditioned by ML algebraic multigrid. Also the solver of the "
+      "static analysis, of Initial state = static and of the modal "
+      "analysis (with iterative, the matrices that are always "
+      "factorised, e.g. the shifted stiffness of the modal analysis, "
+      "use auto's choice).");
   prm.declare_entry("Solver tolerance",
                     "1e-10",
                     Patterns::Double(0.),
@@ -193,8 +195,10 @@ Newmark::Newmark(const DiscreteSystem &system,
                  const MaxwellBranches &maxwell)
     : system(system), dt(DT), beta(parameters.beta), gamma(parameters.gamma),
       a0(damping.a0), a1(damping.a1),
-      solver_name(resolve_linear_solver(parameters.linear_solver, system.n_dofs())),
-      package(direct_solver_package(parameters.linear_solver, system.n_dofs())),
+      solver_name(resolve_linear_solver(
+          parameters.linear_solver, system.n_dofs(), system.stiffness_row_length())),
+      package(direct_solver_package(
+          parameters.linear_solver, system.n_dofs(), system.stiffness_row_length())),
       direct(solver_name != "iterative"), tolerance(parameters.solver_tolerance),
       use_consistent_mass(system.has_consistent_mass() && parameters.mass != "lumped"),
       solver(std::make_unique<EffectiveSolver>(package)),

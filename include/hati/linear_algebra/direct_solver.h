@@ -18,19 +18,35 @@ using namespace dealii;
 constexpr unsigned int mumps_from_n_dofs = 20000;
 
 /**
+ * A system whose stiffness rows hold at least mumps_from_row_length entries
+ * on average (3D continua: about 80 for linear hexahedra, 200 and more for
+ * quadratic ones; frames 10-40) is factorised with MUMPS by `auto` from
+ * mumps_from_n_dofs_continua DoFs: KLU's factors of a 3D mesh fill in (a
+ * box girder of 8,166 DoFs: static 1.60 s with KLU, 0.66 s with MUMPS; the
+ * 3D crane's 18,918: 17.0 s against 2.4 s).
+ */
+constexpr double mumps_from_row_length = 60.;
+constexpr unsigned int mumps_from_n_dofs_continua = 2000;
+
+/**
  * The solver that a value of `Time integration/Newmark/Linear solver`
  * selects for a system of @p n_dofs DoFs: "KLU" (Amesos_Klu), "MUMPS"
  * (Amesos_Mumps) or "iterative" (CG + ML AMG). `auto` and `direct` (its
  * name before issue #25) give KLU below mumps_from_n_dofs DoFs and MUMPS
- * at and above; `KLU`, `MUMPS` and `iterative` give themselves.
+ * at and above, and MUMPS from mumps_from_n_dofs_continua DoFs where the
+ * stiffness rows are as long as a 3D continuum's (@p row_length at least
+ * mumps_from_row_length); `KLU`, `MUMPS` and `iterative` give themselves.
  *
  * @param linear_solver the entry's value: auto, KLU, MUMPS, direct or iterative.
  * @param n_dofs number of DoFs of the system solved (-).
+ * @param row_length mean entries per stiffness row
+ *        (DiscreteSystem::stiffness_row_length(), -; 0: not known).
  *
  * Throws a one-line ExcMessage naming the entry for any other value.
  */
 std::string resolve_linear_solver(const std::string &linear_solver,
-                                  const unsigned int n_dofs);
+                                  const unsigned int n_dofs,
+                                  const double row_length = 0.);
 
 /**
  * The Amesos package, "Amesos_Klu" or "Amesos_Mumps", of the matrices of a
@@ -42,9 +58,11 @@ std::string resolve_linear_solver(const std::string &linear_solver,
  *
  * @param linear_solver the entry's value: auto, KLU, MUMPS, direct or iterative.
  * @param n_dofs number of DoFs of the system solved (-).
+ * @param row_length mean entries per stiffness row (-; 0: not known).
  */
 std::string direct_solver_package(const std::string &linear_solver,
-                                  const unsigned int n_dofs);
+                                  const unsigned int n_dofs,
+                                  const double row_length = 0.);
 
 /**
  * A sparse matrix factorised once with a Trilinos Amesos package

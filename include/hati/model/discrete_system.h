@@ -161,6 +161,18 @@ public:
   /** Whether a stiffness matrix was assembled (false for a rigid mass). */
   bool has_stiffness() const { return stiffness_pattern.n_rows() > 0; }
 
+  /**
+   * Mean number of entries per row of the stiffness pattern (-), 0 without
+   * one: about 10-40 for frames, 80 and more for 3D continua, whose direct
+   * factors fill in (the choice of `Linear solver = auto`).
+   */
+  double stiffness_row_length() const
+  {
+    return has_stiffness() ? double(stiffness_pattern.n_nonzero_elements()) /
+                                 stiffness_pattern.n_rows()
+                           : 0.;
+  }
+
   /** Whether a consistent mass matrix was assembled (implicit integrator). */
   bool has_consistent_mass() const { return !consistent_mass.empty(); }
 

@@ -61,7 +61,8 @@ struct NewmarkParameters
   /**
    * "KLU" / "MUMPS": the effective matrix of N2 is factorised once with
    * Amesos_Klu / Amesos_Mumps; "auto" (and "direct", its former name): KLU
-   * below 20,000 DoFs, MUMPS at and above (resolve_linear_solver());
+   * below 20,000 DoFs, MUMPS at and above, and from 2,000 DoFs for 3D
+   * continua (resolve_linear_solver());
    * "iterative": CG preconditioned by ML algebraic multigrid.
    */
   std::string linear_solver = "auto";
