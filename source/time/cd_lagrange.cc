@@ -303,10 +303,23 @@ void CDLagrange::contact_force(Vector<double> &r) const
   }
   if (system.has_stiffness())
     system.stiffness.vmult(ku, U);
+  // d_n as the restart's initial_state() forms it from V_n (Rayleigh); the
+  // frequency-range branches' force as the last step had it (their memory
+  // restarts at zero)
+  Vector<double> d(d_prev);
+  if (a0 != 0. || a1 != 0.)
+  {
+    Vector<double> v_n(n), kv(n);
+    integer_velocity(v_n);
+    if (a1 != 0. && system.has_stiffness())
+      system.stiffness.vmult(kv, v_n);
+    for (unsigned int i = 0; i < n; ++i)
+      d[i] = system.fixed[i] ? 0. : dt * a0 * v_n[i] + a1 * dt_minv[i] * kv[i];
+  }
   r.reinit(n);
   for (unsigned int i = 0; i < n; ++i)
     if (!system.fixed[i])
-      r[i] = mass[i] * ((*V)[i] - (*V_prev)[i] + d_prev[i]) / dt - (f[i] - ku[i]);
+      r[i] = mass[i] * ((*V)[i] - (*V_prev)[i] + d[i]) / dt - (f[i] - ku[i]);
 }
 
 void CDLagrange::step()

@@ -161,6 +161,10 @@ public:
    * bilateral rows' impulses (A4-A6) and of whatever else the step added
    * (HATI's interface force), round-off elsewhere. A restart adds them to
    * its `G_0` (DiscreteSystem::initial_contact_reaction, doc/theory.md 1.1).
+   * With Rayleigh damping `D_n` is the one the restart's first half step
+   * takes, `C V_n` at the integer-time velocity (initial_state()), so that
+   * the restart's V_{1/2} is V_{n+1/2} (the unbroken run's `D_n` differs by
+   * `C (V_{n-1/2} - V_n)`: 6e-5 of the displacements after 0.5 s).
    */
   void contact_force(Vector<double> &r) const;
 
