@@ -164,7 +164,7 @@ public:
    * With Rayleigh damping `D_n` is the one the restart's first half step
    * takes, `C V_n` at the integer-time velocity (initial_state()), so that
    * the restart's V_{1/2} is V_{n+1/2} (the unbroken run's `D_n` differs by
-   * `C (V_{n-1/2} - V_n)`: 6e-5 of the displacements after 0.5 s).
+   * `C (V_{n-1/2} - V_n)`: 5.2e-10 of the velocities, restart.py).
    */
   void contact_force(Vector<double> &r) const;
 
