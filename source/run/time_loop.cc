@@ -536,6 +536,7 @@ void TimeLoop<Integrator>::add_coupling_summary(SummaryEntries &summary) const
           integrator.largest_discontinuous_residual()},
          {"hati_frozen_closure_macro_steps", integrator.frozen_closure_macro_steps()},
          {"hati_largest_frozen_closure_gap", integrator.largest_frozen_closure_gap()},
+         {"hati_jacobian_macro_steps", integrator.jacobian_macro_steps()},
          {"interface_iterations", integrator.interface_iterations()},
          {"ramp_patterns", integrator.ramp_patterns()}});
     std::cout << "  HATI wall time: explicit " << integrator.explicit_seconds()

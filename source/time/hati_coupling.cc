@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 
 #include <hati/analysis/reduced_part.h>
 #include <hati/time/hati_coupling.h>
@@ -345,6 +346,8 @@ void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
   Vector<double> best_lambda;
   bool best_frozen = false;
   std::vector<std::vector<bool>> best_activation;
+  // the frozen pass's Jacobian, pseudo-inverted (chord Newton, theory 9.6)
+  LAPACKFullMatrix<double> J_inverse;
   for (;; ++iterations)
   {
     explicit_integrator.restore(snapshot);
@@ -418,6 +421,33 @@ void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
                  "Time step ratio";
       AssertThrow(false, ExcMessage(message.str()));
     }
+    if (!frozen_activation.empty() &&
+        iterations == RampSuperposition::safeguarded_corrections +
+                          RampSuperposition::frozen_corrections_before_jacobian)
+    {
+      // the frozen closures' corrections with H^-1 stalled: with its active
+      // sets frozen the pass is (piecewise) affine in Lambda, so its own
+      // Jacobian (one pass per interface row) gives Newton's step
+      frozen_jacobian(lambda_m, residual, J_inverse);
+      last_norm = std::numeric_limits<double>::max();
+      halvings = 0;
+    }
+    if (J_inverse.m() > 0)
+    {
+      if (norm > last_norm && halvings < RampSuperposition::max_halvings)
+      {
+        // back half of the last Newton step
+        step *= 0.5;
+        lambda_m += step;
+        ++halvings;
+        continue;
+      }
+      halvings = 0;
+      J_inverse.vmult(step, residual);
+      lambda_m -= step;
+      last_norm = norm;
+      continue;
+    }
     if (iterations >= RampSuperposition::safeguarded_corrections && norm > last_norm &&
         halvings < RampSuperposition::max_halvings)
     {
@@ -452,6 +482,35 @@ void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
   if (after_micro_step)
     for (unsigned int j = 0; j < n_recorded; ++j)
       after_micro_step(contact_record[j]);
+}
+
+void HATICoupling::frozen_jacobian(const Vector<double> &lambda,
+                                   const Vector<double> &r0,
+                                   LAPACKFullMatrix<double> &J_inverse)
+{
+  const unsigned int n = lambda.size();
+  // the frozen pass is affine only piecewise (impulse signs, friction
+  // states): a small perturbation gives the local Jacobian, its
+  // differences still far above round-off
+  const double h = 1e-6 * std::max(lambda.linfty_norm(), 1.);
+  J_inverse.reinit(n, n);
+  Vector<double> perturbed(lambda), r(n);
+  double scale = 0.;
+  for (unsigned int k = 0; k < n; ++k)
+  {
+    perturbed[k] += h;
+    explicit_integrator.restore(snapshot);
+    n_recorded = 0;
+    micro_steps(perturbed, false);
+    interface->residual(increments.v_end, perturbed, r, scale);
+    for (unsigned int i = 0; i < n; ++i)
+      J_inverse(i, k) = (r[i] - r0[i]) / h;
+    perturbed[k] = lambda[k];
+  }
+  n_redo_passes += n;
+  ++n_jacobians;
+  // pseudo-inverse: a direction the pass cannot change is left alone
+  J_inverse.compute_inverse_svd(1e-12);
 }
 
 void HATICoupling::frozen_closures()

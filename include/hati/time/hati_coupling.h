@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <hati/model/decomposition.h>
@@ -263,6 +264,12 @@ public:
    */
   unsigned long frozen_closure_macro_steps() const { return n_frozen; }
   double largest_frozen_closure_gap() const { return largest_frozen_gap; }
+  /**
+   * Redone macro steps whose frozen-closure corrections stalled and went on
+   * with Newton's corrections on their pass's own Jacobian
+   * (frozen_jacobian(), doc/theory.md 9.6 item 8).
+   */
+  unsigned long jacobian_macro_steps() const { return n_jacobians; }
   /** Active sets of the contacts within reach whose ramp response was computed. */
   unsigned long ramp_patterns() const { return superposition->ramp_patterns(); }
 
@@ -333,6 +340,18 @@ private:
    * measure its closures' gaps, unfreeze.
    */
   void frozen_closures();
+  /**
+   * The Jacobian `dr / dLambda_{n+m}` of the macro-end continuity residual
+   * @p r0 at @p lambda of the pass with the closures frozen, by one pass per
+   * interface row (with the closures frozen the pass is affine in Lambda
+   * except where an impulse's sign or a friction state switches),
+   * pseudo-inverted into @p J_inverse (its singular values
+   * below 1e-12 of the largest dropped). redo_micro_steps() then corrects
+   * with Newton's `Lambda -= J^+ r` (doc/theory.md 9.6 item 8).
+   */
+  void frozen_jacobian(const Vector<double> &lambda,
+                       const Vector<double> &r0,
+                       LAPACKFullMatrix<double> &J_inverse);
   /** Fill @p sample from the explicit integrator. */
   void take_sample(ContactSample &sample) const;
   /**
@@ -389,6 +408,8 @@ private:
   unsigned long n_discontinuous = 0;
   double largest_discontinuity = 0.;
   unsigned long n_frozen = 0;
+  /** Redone macro steps corrected with their frozen pass's Jacobian. */
+  unsigned long n_jacobians = 0;
   double largest_frozen_gap = 0.;
   /**
    * The active set of every micro step taken from the best pass while

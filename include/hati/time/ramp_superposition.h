@@ -121,6 +121,16 @@ public:
    * activations frozen at that iterate's (doc/theory.md 9.6 item 6).
    */
   static constexpr unsigned int safeguarded_corrections = 25;
+  /**
+   * Redone macro steps: corrections with the closures frozen (from
+   * safeguarded_corrections on) before the frozen pass's own Jacobian is
+   * formed and Newton's corrections take over (HATICoupling::frozen_jacobian(),
+   * doc/theory.md 9.6 item 8): H^-1 of the ramp (no contact changing) can be
+   * far from it where a contact at the interface holds a velocity (a crane
+   * wheel on its rail next to heavy girders: the corrections cycled, the
+   * run stopped).
+   */
+  static constexpr unsigned int frozen_corrections_before_jacobian = 5;
   /** Redone macro steps: halvings of one correction (see above). */
   static constexpr unsigned int max_halvings = 8;
   /**
