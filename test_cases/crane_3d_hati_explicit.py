@@ -102,11 +102,11 @@ monitors = sorted({n.rsplit(".", 1)[0] for n in names_h[1:] if n.endswith(".ux")
 for m in monitors:
     cols = [names_h.index(m + "." + c) for c in ("ux", "uy", "uz")]
     diff = np.max(np.linalg.norm(dA[:, cols] - dB[:, cols], axis=1))
-    if m.startswith("cw"):  # measured 1.1 to 1.9 %
+    if m.startswith("cw"):  # measured 1.0 to 1.9 %
         peak = np.max(np.linalg.norm(B[:, cols], axis=1))
         ctx.check(m + ": max |u_HATI - u_explicit| / explicit peak |u|", diff / peak, 0.0,
                   abs_tol=0.04)
-    elif m.startswith("tw") or "midspan" in m:  # measured 0.45 to 0.75 %, 0.49 to 1.6 %
+    elif m.startswith("tw") or "midspan" in m:  # measured 0.45 to 0.78 %, 0.48 to 1.6 %
         peak = np.max(np.linalg.norm(dB[:, cols], axis=1))
         ctx.check(m + ": max |du_HATI - du_explicit| / explicit peak |du|", diff / peak, 0.0,
                   abs_tol=0.02)

@@ -47,13 +47,16 @@ std::string state_file_content(const RunState &state)
   if (state.interface_multiplier.size() > 0)
     s << "interface " << state.interface_multiplier.size() << ' '
       << state.interface_signature << '\n';
+  if (state.implicit_interface.size() > 0)
+    s << "implicit_interface " << state.implicit_interface.size() << '\n';
   s << "data\n";
   std::string content = s.str();
   const std::size_t n = state.displacement.size(), header = content.size();
   Assert(state.velocity.size() == n && state.contact_force.size() == n,
          ExcMessage("state_file_content: vectors of different sizes"));
-  const std::size_t k = state.interface_multiplier.size();
-  content.resize(header + (3 * n + k) * sizeof(double));
+  const std::size_t k = state.interface_multiplier.size(),
+                    l = state.implicit_interface.size();
+  content.resize(header + (3 * n + k + l) * sizeof(double));
   std::size_t at = header;
   for (const Vector<double> *v :
        {&state.displacement, &state.velocity, &state.contact_force})
@@ -63,6 +66,9 @@ std::string state_file_content(const RunState &state)
   }
   if (k > 0)
     std::memcpy(&content[at], state.interface_multiplier.data(), k * sizeof(double));
+  at += k * sizeof(double);
+  if (l > 0)
+    std::memcpy(&content[at], state.implicit_interface.data(), l * sizeof(double));
   return content;
 }
 
@@ -101,6 +107,18 @@ RunState read_state_file(const std::string &path,
                            "' does not give a number of interface rows"));
     std::getline(in, line);
   }
+  unsigned long n_implicit = 0;
+  if (line.rfind("implicit_interface ", 0) == 0)
+  {
+    const std::string count = line.substr(19);
+    char *count_end = nullptr;
+    n_implicit = std::strtoul(count.c_str(), &count_end, 10);
+    AssertThrow(count_end != count.c_str() && *count_end == '\0' &&
+                    n_implicit <= 2ul * n_dofs && n_interface > 0,
+                ExcMessage(where + ": the implicit_interface line '" + printable(line) +
+                           "' does not give a number of values"));
+    std::getline(in, line);
+  }
   AssertThrow(in && line == "data",
               ExcMessage(where + ": the header does not end with a 'data' line"));
   char *end = nullptr;
@@ -120,7 +138,8 @@ RunState read_state_file(const std::string &path,
   // (a header without data leaves the stream at its end: tellg() is -1)
   const std::size_t data = in.tellg() < 0 ? content.size()
                                           : static_cast<std::size_t>(in.tellg()),
-                    bytes = (3 * std::size_t(n_dofs) + n_interface) * sizeof(double);
+                    bytes = (3 * std::size_t(n_dofs) + n_interface + n_implicit) *
+                            sizeof(double);
   AssertThrow(content.size() == data + bytes,
               ExcMessage(where + ": " + std::to_string(content.size() - data) +
                          " bytes of data where " + std::to_string(bytes) +
@@ -136,10 +155,16 @@ RunState read_state_file(const std::string &path,
   if (n_interface > 0)
     std::memcpy(
         state.interface_multiplier.data(), &content[at], n_interface * sizeof(double));
+  at += n_interface * sizeof(double);
+  state.implicit_interface.reinit(n_implicit);
+  if (n_implicit > 0)
+    std::memcpy(
+        state.implicit_interface.data(), &content[at], n_implicit * sizeof(double));
   for (const Vector<double> *v : {&state.displacement,
                                   &state.velocity,
                                   &state.contact_force,
-                                  &state.interface_multiplier})
+                                  &state.interface_multiplier,
+                                  &state.implicit_interface})
     for (const double x : *v)
       AssertThrow(std::isfinite(x),
                   ExcMessage(where + ": the state holds a value that is not finite"));

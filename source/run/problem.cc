@@ -241,7 +241,20 @@ void Problem::prepare_transient()
   if (decomposition && restart_multiplier.size() > 0)
   {
     if (restart_interface == coupling_signature(*decomposition))
+    {
       decomposition->initial_multiplier = restart_multiplier;
+      // the implicit side's own interface values (the whole model's are the
+      // explicit side's)
+      const std::vector<unsigned int> shared = shared_implicit_dofs(*decomposition);
+      if (restart_implicit_interface.size() == 2 * shared.size())
+        for (unsigned int s = 0; s < shared.size(); ++s)
+        {
+          auto &implicit = decomposition->parts[1].system;
+          implicit.initial_displacement[shared[s]] = restart_implicit_interface[s];
+          implicit.initial_velocity[shared[s]] =
+              restart_implicit_interface[shared.size() + s];
+        }
+    }
     else
       out << "  the state's interface multiplier belongs to another coupling: "
              "Lambda_0 from the acceleration continuity"
@@ -270,6 +283,7 @@ void Problem::set_file_initial_state()
   system.start_time = state.time;
   restart_multiplier = state.interface_multiplier;
   restart_interface = state.interface_signature;
+  restart_implicit_interface = state.implicit_interface;
   if (state.contact_force.linfty_norm() > 0.)
     system.initial_contact_reaction = state.contact_force;
   // a single-domain run: the DoFs its system holds fixed (supports, and the

@@ -36,6 +36,15 @@ RunState current_run_state(const Integrator &integrator, const Problem &problem)
     state.contact_force = integrator.contact_force();
     state.interface_multiplier = integrator.interface_multiplier();
     state.interface_signature = coupling_signature(*problem.decomposition);
+    // the implicit side's own values of the interface DoFs
+    const std::vector<unsigned int> shared = shared_implicit_dofs(*problem.decomposition);
+    const Newmark &implicit = integrator.implicit_part();
+    state.implicit_interface.reinit(2 * shared.size());
+    for (unsigned int s = 0; s < shared.size(); ++s)
+    {
+      state.implicit_interface[s] = implicit.displacement()[shared[s]];
+      state.implicit_interface[shared.size() + s] = implicit.velocity()[shared[s]];
+    }
   }
   if constexpr (!std::is_same_v<Integrator, CDLagrange>)
   {
@@ -78,6 +87,26 @@ std::string coupling_signature(const Decomposition &decomposition)
   std::ostringstream s;
   s << std::hex << std::setw(16) << std::setfill('0') << hash;
   return s.str();
+}
+
+std::vector<unsigned int> shared_implicit_dofs(const Decomposition &decomposition)
+{
+  std::vector<unsigned int> shared;
+  const auto &explicit_dofs = decomposition.parts[0].global_dofs;
+  const auto &implicit_dofs = decomposition.parts[1].global_dofs;
+  if (implicit_system(decomposition).n_dofs() != implicit_dofs.size())
+    return shared;
+  std::vector<bool> held_explicitly;
+  for (const auto i : explicit_dofs)
+  {
+    if (i >= held_explicitly.size())
+      held_explicitly.resize(i + 1, false);
+    held_explicitly[i] = true;
+  }
+  for (unsigned int j = 0; j < implicit_dofs.size(); ++j)
+    if (implicit_dofs[j] < held_explicitly.size() && held_explicitly[implicit_dofs[j]])
+      shared.push_back(j);
+  return shared;
 }
 
 template RunState current_run_state(const CDLagrange &, const Problem &);

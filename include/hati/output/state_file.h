@@ -48,6 +48,16 @@ struct RunState
   Vector<double> interface_multiplier;
   /** interface_signature() of the interface it belongs to. */
   std::string interface_signature;
+  /**
+   * HATI with an unreduced implicit part: the implicit part's own
+   * displacements, then velocities, of the DoFs both parts hold (the
+   * interface DoFs of G3', in the implicit part's order; m, m/s): the
+   * whole model's vectors hold the explicit side's values there, and G3'
+   * makes the two sides' velocities continuous, not their displacements.
+   * A HATI restart of the same coupling gives them back to its implicit
+   * part. Empty otherwise.
+   */
+  Vector<double> implicit_interface;
 };
 
 /** @p description on one line (line breaks as spaces): the header's `model` line. */
@@ -56,8 +66,10 @@ std::string state_model_line(const std::string &description);
 /**
  * The bytes of `state.bin` for @p state: a text header (`hati state 1`,
  * `time`, `n_dofs`, `model`, with HATI's multiplier an `interface` line
- * with its size, and `data`) and the displacement, the velocity, the
- * contact force and the multiplier as native doubles.
+ * with its size and signature, with HATI's implicit interface values an
+ * `implicit_interface` line with their number, and `data`) and the
+ * displacement, the velocity, the contact force, the multiplier and the
+ * implicit interface values as native doubles.
  */
 std::string state_file_content(const RunState &state);
 

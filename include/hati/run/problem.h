@@ -204,6 +204,8 @@ private:
   /** A state file's HATI interface multiplier and its interface (RunState). */
   Vector<double> restart_multiplier;
   std::string restart_interface;
+  /** A state file's implicit interface values (RunState::implicit_interface). */
+  Vector<double> restart_implicit_interface;
   /** The static contact force per contact row of the initial state (N). */
   std::vector<double> static_forces;
   /** The static friction force along each tangent row of a contact (N, A9). */

@@ -4,6 +4,7 @@
 #include <hati/output/state_file.h>
 
 #include <string>
+#include <vector>
 
 namespace hati
 {
@@ -31,6 +32,14 @@ RunState current_run_state(const Integrator &integrator, const Problem &problem)
  * multiplier only for the coupling it was written for (RunState).
  */
 std::string coupling_signature(const Decomposition &decomposition);
+
+/**
+ * The implicit part's DoFs (its own numbering) that the explicit part holds
+ * too (the interface DoFs of G3'), in increasing order; empty where the
+ * implicit part is stepped reduced (its coordinates are not DoFs):
+ * RunState::implicit_interface holds their values.
+ */
+std::vector<unsigned int> shared_implicit_dofs(const Decomposition &decomposition);
 
 } // namespace hati
 
