@@ -411,15 +411,7 @@ void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
     if (iterations >= RampSuperposition::max_corrections)
     {
       frozen_activation.clear();
-      std::ostringstream message;
-      message << "HATI: the interface velocity continuity with contacts within "
-                 "reach of the interface did not converge in "
-              << RampSuperposition::max_corrections
-              << " corrections at t = " << explicit_integrator.time() << " s (residual "
-              << norm << " m/s, velocity scale " << scale
-              << " m/s): move the interface further from the contacts or reduce the "
-                 "Time step ratio";
-      AssertThrow(false, ExcMessage(message.str()));
+      AssertThrow(false, ExcMessage(not_converged_message(norm, scale)));
     }
     if (!frozen_activation.empty() &&
         iterations == RampSuperposition::safeguarded_corrections +
@@ -482,6 +474,20 @@ void HATICoupling::redo_micro_steps(const DenseColumns &H_inverse)
   if (after_micro_step)
     for (unsigned int j = 0; j < n_recorded; ++j)
       after_micro_step(contact_record[j]);
+}
+
+std::string HATICoupling::not_converged_message(const double norm,
+                                                const double scale) const
+{
+  std::ostringstream message;
+  message << "HATI: the interface velocity continuity with contacts within "
+             "reach of the interface did not converge in "
+          << RampSuperposition::max_corrections
+          << " corrections at t = " << explicit_integrator.time() << " s (residual "
+          << norm << " m/s, velocity scale " << scale
+          << " m/s): move the interface further from the contacts or reduce the "
+             "Time step ratio";
+  return message.str();
 }
 
 void HATICoupling::frozen_jacobian(const Vector<double> &lambda,

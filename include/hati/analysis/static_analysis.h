@@ -24,8 +24,9 @@ using namespace dealii;
  *        "KLU" or "MUMPS" (one factorisation, Amesos_Klu or Amesos_Mumps,
  *        followed by up to two steps of iterative refinement), "auto" or
  *        "direct" (KLU below 20,000 DoFs, MUMPS at and above, and from
- *        2,000 DoFs for 3D continua, resolve_linear_solver()) or "iterative" (CG + ML
- * AMG, relative residual 1e-12); throws naming the entry for any other value.
+ *        2,000 DoFs for 3D continua, resolve_linear_solver()) or
+ *        "iterative" (CG + ML AMG, relative residual 1e-12); throws naming
+ *        the entry for any other value.
  * @param constant_loads_only solve under the constant loads only (gravity,
  *        nodal loads), without the time-dependent ones (base excitation):
  *        the equilibrium a transient run starts from.

@@ -340,6 +340,8 @@ private:
    * measure its closures' gaps, unfreeze.
    */
   void frozen_closures();
+  /** The one-line error of a redone macro step that did not converge. */
+  std::string not_converged_message(const double norm, const double scale) const;
   /**
    * The Jacobian `dr / dLambda_{n+m}` of the macro-end continuity residual
    * @p r0 at @p lambda of the pass with the closures frozen, by one pass per
