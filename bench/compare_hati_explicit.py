@@ -5,8 +5,8 @@ displacement vectors from the first compared row, u(t) - u(t_0), at HATI's
 macro steps, their largest difference in % of the explicit run's peak; each
 contact's first loss of contact in both runs, of any length and lasting at
 least HATI's micro step (the explicit run resolves losses of a few us that
-HATI's micro step cannot see); the wall times and energy balances of the
-two runs and the speed-up.
+HATI's micro step cannot see) and its time out of contact; the wall times
+and energy balances of the two runs and the speed-up.
 Usage: compare_hati_explicit.py HATI_OUTPUT_DIR EXPLICIT_OUTPUT_DIR"""
 import csv
 import json
@@ -18,6 +18,13 @@ import numpy as np
 def history(d):
     rows = list(csv.reader(open(d + "/history.csv")))
     return rows[0], np.array([[float(x) for x in r] for r in rows[1:] if len(r) == len(rows[0])])
+
+
+def time_out(d):
+    out = {}
+    for r in csv.DictReader(open(d + "/contact_episodes.csv")):
+        out[r["contact"]] = out.get(r["contact"], 0.0) + float(r["duration"])
+    return out
 
 
 def first_losses(d, shortest=0.0):
@@ -57,6 +64,10 @@ for shortest, title in ((0.0, "first loss of contact"),
         h, e = fa.get(c), fb.get(c)
         print("%-26s %12s %12s %10s" % (c, "%.6f" % h if h else "-", "%.6f" % e if e else "-",
                                         "%.3f" % (1e3 * (h - e)) if h and e else "-"))
+ta, tb = time_out(sys.argv[1]), time_out(sys.argv[2])
+print("%-26s %12s %12s" % ("time out of contact (ms)", "HATI", "explicit"))
+for c in sorted(set(ta) | set(tb)):
+    print("%-26s %12.3f %12.3f" % (c, 1e3 * ta.get(c, 0.0), 1e3 * tb.get(c, 0.0)))
 for name, x in zip(("HATI", "explicit"), s):
     print("%-9s n_dofs %d, steps %d, set-up %.1f s, stepping %.1f s, wall %.1f s, "
           "energy balance %.2e" % (name, x["n_dofs"], x["n_steps"], x["setup_wall_time"],
