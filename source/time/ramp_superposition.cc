@@ -72,6 +72,25 @@ void RampSuperposition::find_reach()
   for (const auto &columns : open_ramp.state)
     for (const auto i : columns.rows())
       reach[i] = true;
+  // a bilateral row (a rigid link, a tie) moves all its DoFs within the
+  // micro step that reaches one of them: its other DoFs are within reach
+  // too, and so on along chains of such rows
+  for (bool grown = true; grown;)
+  {
+    grown = false;
+    for (const auto &c : system.contacts)
+    {
+      if (!c.bilateral)
+        continue;
+      bool touched = false;
+      for (const auto d : c.dofs)
+        touched = touched || reach[d];
+      if (touched)
+        for (const auto d : c.dofs)
+          if (!reach[d])
+            reach[d] = grown = true;
+    }
+  }
   for (unsigned int c = 0; c < system.contacts.size(); ++c)
   {
     // the normal row, and with friction its tangent rows (A9)
