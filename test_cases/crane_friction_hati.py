@@ -63,6 +63,15 @@ def worst_translation(out, out_ref):
     return worst, worst_key
 
 
+def superposed_and_redone(tag, sets):
+    """The main example with @p sets, superposed and with every macro step
+    redone (Superposition = false): their output directories and summaries."""
+    prm = ctx.prm("bridge_crane_hati.prm")
+    out_s, _ = ctx.run(prm, tag, sets)
+    out_r, _ = ctx.run(prm, tag + "_redone", sets + ["Time integration/HATI/Superposition=false"])
+    return out_s, out_r, read_summary(out_s), read_summary(out_r)
+
+
 def run_pair(hoist):
     """(summary, episodes) of the fully explicit and the HATI run."""
     result = []
@@ -139,10 +148,7 @@ tied = ["Model/Bridge crane/Travel=tied", "Model/Bridge crane/Hoist=rope",
         "Time integration/End time=1", "Output/Output interval=0",
         "Loading/Accelerogram X=" + os.path.join(records, "Rinaldi228.AT2"),
         "Loading/Accelerogram Z=" + os.path.join(records, "RinaldiUP.AT2")]
-out_ts, _ = ctx.run(ctx.prm("bridge_crane_hati.prm"), "hati_tied_rope", tied)
-out_tr, _ = ctx.run(ctx.prm("bridge_crane_hati.prm"), "hati_tied_rope_redone",
-                    tied + ["Time integration/HATI/Superposition=false"])
-s_s, s_r = read_summary(out_ts), read_summary(out_tr)
+out_ts, out_tr, s_s, s_r = superposed_and_redone("hati_tied_rope", tied)
 ctx.check_true("tied rope: superposed, fewer than 5 % of the macro steps redone",
                s_s["hati_redone_macro_steps"] < 0.05 * s_s["n_steps"],
                "(%d of %d)" % (s_s["hati_redone_macro_steps"], s_s["n_steps"]))
@@ -169,10 +175,7 @@ m2 = ["Time integration/HATI/Time step ratio=2", "Time integration/End time=1",
       "Output/Output interval=0",
       "Loading/Accelerogram X=" + os.path.join(records, "Rinaldi228.AT2"),
       "Loading/Accelerogram Z=" + os.path.join(records, "RinaldiUP.AT2")]
-out_ms, _ = ctx.run(ctx.prm("bridge_crane_hati.prm"), "hati_m2", m2)
-out_mr, _ = ctx.run(ctx.prm("bridge_crane_hati.prm"), "hati_m2_redone",
-                    m2 + ["Time integration/HATI/Superposition=false"])
-s_s, s_r = read_summary(out_ms), read_summary(out_mr)
+out_ms, out_mr, s_s, s_r = superposed_and_redone("hati_m2", m2)
 worst, worst_key = worst_translation(out_ms, out_mr)
 ctx.check("m = 2: superposed vs redone, worst monitor translation / peak (%s)" % worst_key,
           worst, 0., abs_tol=1e-7)
