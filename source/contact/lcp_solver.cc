@@ -178,10 +178,18 @@ bool form_elimination(const FullMatrix<double> &W,
   for (unsigned int i = 0; i < n; ++i)
     (i < bilateral.size() && bilateral[i] ? e.b : e.u).push_back(i);
   const unsigned int nb = e.b.size(), nu = e.u.size();
-  FullMatrix<double> Wbb(nb, nb);
+  FullMatrix<double> Wbb(nb, nb), Wuu(nu, nu);
+  e.Wbu.reinit(nb, nu);
   for (unsigned int k = 0; k < nb; ++k)
+  {
     for (unsigned int j = 0; j < nb; ++j)
       Wbb(k, j) = W(e.b[k], e.b[j]);
+    for (unsigned int c = 0; c < nu; ++c)
+      e.Wbu(k, c) = W(e.b[k], e.u[c]);
+  }
+  for (unsigned int a = 0; a < nu; ++a)
+    for (unsigned int c = 0; c < nu; ++c)
+      Wuu(a, c) = W(e.u[a], e.u[c]);
   // W_BB = L_B M^-1 L_B^T: symmetric, positive definite unless the
   // equalities are dependent (Cholesky throws there, in every build)
   LAPACKFullMatrix<double> inverse(nb, nb);
@@ -200,36 +208,26 @@ bool form_elimination(const FullMatrix<double> &W,
     for (unsigned int j = 0; j < nb; ++j)
       e.Wbb_inverse(k, j) = inverse(k, j);
   // W_BB^-1 W_BB = I to 1e-9, else the equalities are (nearly) dependent
+  FullMatrix<double> identity(nb, nb);
+  e.Wbb_inverse.mmult(identity, Wbb);
   for (unsigned int k = 0; k < nb; ++k)
-    for (unsigned int j = 0; j < nb; ++j)
-    {
-      double s = (k == j) ? -1. : 0.;
-      for (unsigned int l = 0; l < nb; ++l)
-        s += e.Wbb_inverse(k, l) * Wbb(l, j);
-      if (!(std::abs(s) <= 1e-9))
-        return false;
-    }
+    identity(k, k) -= 1.;
+  if (!(identity.linfty_norm() <= 1e-9 * nb))
+    return false;
+  // X = W_BB^-1 W_BU, S = W_UU - W_BU^T X
   e.X.reinit(nb, nu);
-  for (unsigned int k = 0; k < nb; ++k)
-    for (unsigned int c = 0; c < nu; ++c)
-    {
-      double s = 0.;
-      for (unsigned int j = 0; j < nb; ++j)
-        s += e.Wbb_inverse(k, j) * W(e.b[j], e.u[c]);
-      e.X(k, c) = s;
-    }
   e.S.reinit(nu, nu);
+  if (nu > 0)
+  {
+    e.Wbb_inverse.mmult(e.X, e.Wbu);
+    e.Wbu.Tmmult(e.S, e.X);
+    e.S *= -1.;
+    e.S.add(1., Wuu);
+  }
   for (unsigned int a = 0; a < nu; ++a)
-    for (unsigned int c = 0; c < nu; ++c)
-    {
-      double s = W(e.u[a], e.u[c]);
-      for (unsigned int k = 0; k < nb; ++k)
-        s -= W(e.u[a], e.b[k]) * e.X(k, c);
-      e.S(a, c) = s;
-    }
-  for (unsigned int a = 0; a < nu; ++a)
-    if (!(e.S(a, a) > 1e-10 * W(e.u[a], e.u[a])))
+    if (!(e.S(a, a) > 1e-10 * Wuu(a, a)))
       return false;
+  e.q_b.reinit(nb);
   e.y.reinit(nb);
   e.q_s.reinit(nu);
   e.lambda_u.reinit(nu);
@@ -298,21 +296,14 @@ void solve_lcp(const FullMatrix<double> &W,
   if (lambda.size() != n)
     lambda.reinit(n);
   const unsigned int nb = e.b.size(), nu = e.u.size();
-  // y = W_BB^-1 q_B, q_S = q_U - W_UB y
+  // y = W_BB^-1 q_B, q_S = q_U - W_BU^T y
   for (unsigned int k = 0; k < nb; ++k)
-  {
-    double s = 0.;
-    for (unsigned int j = 0; j < nb; ++j)
-      s += e.Wbb_inverse(k, j) * q[e.b[j]];
-    e.y[k] = s;
-  }
+    e.q_b[k] = q[e.b[k]];
+  e.Wbb_inverse.vmult(e.y, e.q_b);
+  if (nu > 0)
+    e.Wbu.Tvmult(e.q_s, e.y);
   for (unsigned int a = 0; a < nu; ++a)
-  {
-    double s = q[e.u[a]];
-    for (unsigned int k = 0; k < nb; ++k)
-      s -= W(e.u[a], e.b[k]) * e.y[k];
-    e.q_s[a] = s;
-  }
+    e.q_s[a] = q[e.u[a]] - e.q_s[a];
   // the unilateral rows' LCP (their S(a, a) > 0: form_elimination())
   if (nu == 1)
     e.lambda_u[0] = std::max(0., -e.q_s[0] / e.S(0, 0));
@@ -326,13 +317,11 @@ void solve_lcp(const FullMatrix<double> &W,
   }
   for (unsigned int a = 0; a < nu; ++a)
     lambda[e.u[a]] = e.lambda_u[a];
+  // lambda_B = -(y + X lambda_U)
+  if (nu > 0)
+    e.X.vmult_add(e.y, e.lambda_u);
   for (unsigned int k = 0; k < nb; ++k)
-  {
-    double s = e.y[k];
-    for (unsigned int c = 0; c < nu; ++c)
-      s += e.X(k, c) * e.lambda_u[c];
-    lambda[e.b[k]] = -s;
-  }
+    lambda[e.b[k]] = -e.y[k];
 }
 
 void minimum_norm_solution(const FullMatrix<double> &W,

@@ -27,6 +27,28 @@ header_value(std::istringstream &in, const std::string &key, const std::string &
                          "damaged)"));
   return line.substr(key.size() + 1);
 }
+
+/**
+ * An optional header line `<key> <count>[ <rest>]`: false (nothing read)
+ * if @p line does not start with @p key and a space; otherwise @p count,
+ * @p rest (after one space; empty if the count ends the line) and whether
+ * a count was read at all (@p valid).
+ */
+bool optional_count_line(const std::string &line,
+                         const std::string &key,
+                         unsigned long &count,
+                         std::string &rest,
+                         bool &valid)
+{
+  if (line.rfind(key + " ", 0) != 0)
+    return false;
+  const std::string text = line.substr(key.size() + 1);
+  char *end = nullptr;
+  count = std::strtoul(text.c_str(), &end, 10);
+  valid = end != text.c_str() && (*end == '\0' || *end == ' ');
+  rest = *end == ' ' ? std::string(end + 1) : std::string();
+  return true;
+}
 } // namespace
 
 std::string state_model_line(const std::string &description)
@@ -93,28 +115,20 @@ RunState read_state_file(const std::string &path,
   const std::string dofs = header_value(in, "n_dofs", where);
   state.model = header_value(in, "model", where);
   std::getline(in, line);
-  unsigned long n_interface = 0;
-  if (line.rfind("interface ", 0) == 0)
+  unsigned long n_interface = 0, n_implicit = 0;
+  std::string rest;
+  bool valid = false;
+  if (optional_count_line(line, "interface", n_interface, rest, valid))
   {
-    const std::string count = line.substr(10);
-    char *count_end = nullptr;
-    n_interface = std::strtoul(count.c_str(), &count_end, 10);
-    if (*count_end == ' ')
-      state.interface_signature = std::string(count_end + 1);
-    AssertThrow(count_end != count.c_str() && n_interface < n_dofs &&
-                    state.interface_signature.size() == 16,
+    state.interface_signature = rest;
+    AssertThrow(valid && n_interface < n_dofs && rest.size() == 16,
                 ExcMessage(where + ": the interface line '" + printable(line) +
                            "' does not give a number of interface rows"));
     std::getline(in, line);
   }
-  unsigned long n_implicit = 0;
-  if (line.rfind("implicit_interface ", 0) == 0)
+  if (optional_count_line(line, "implicit_interface", n_implicit, rest, valid))
   {
-    const std::string count = line.substr(19);
-    char *count_end = nullptr;
-    n_implicit = std::strtoul(count.c_str(), &count_end, 10);
-    AssertThrow(count_end != count.c_str() && *count_end == '\0' &&
-                    n_implicit <= 2ul * n_dofs && n_interface > 0,
+    AssertThrow(valid && rest.empty() && n_implicit <= 2ul * n_dofs && n_interface > 0,
                 ExcMessage(where + ": the implicit_interface line '" + printable(line) +
                            "' does not give a number of values"));
     std::getline(in, line);

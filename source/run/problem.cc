@@ -246,10 +246,10 @@ void Problem::prepare_transient()
       // the implicit side's own interface values (the whole model's are the
       // explicit side's)
       const std::vector<unsigned int> shared = shared_implicit_dofs(*decomposition);
+      DiscreteSystem &implicit = decomposition->parts[1].system;
       if (restart_implicit_interface.size() == 2 * shared.size())
         for (unsigned int s = 0; s < shared.size(); ++s)
         {
-          auto &implicit = decomposition->parts[1].system;
           implicit.initial_displacement[shared[s]] = restart_implicit_interface[s];
           implicit.initial_velocity[shared[s]] =
               restart_implicit_interface[shared.size() + s];

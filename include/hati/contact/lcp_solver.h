@@ -65,9 +65,10 @@ struct BilateralElimination
   /** W_BB invertible to round-off: false keeps the plain solve. */
   bool invertible = false;
   std::vector<unsigned int> b, u;
-  /** W_BB^-1, W_BB^-1 W_BU and the Schur complement S. */
-  FullMatrix<double> Wbb_inverse, X, S;
-  Vector<double> y, q_s, lambda_u;
+  /** W_BU, W_BB^-1, X = W_BB^-1 W_BU and the Schur complement S. */
+  FullMatrix<double> Wbu, Wbb_inverse, X, S;
+  /** Work vectors of a solve: q_B, y = W_BB^-1 q_B, q_S, lambda_U. */
+  Vector<double> q_b, y, q_s, lambda_u;
 };
 
 /**
