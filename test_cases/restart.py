@@ -100,7 +100,11 @@ RAYLEIGH = [s for s in UNDAMPED if not s.startswith("Model/Bridge crane/Damping 
     "Model/Bridge crane/Damping type=Rayleigh", "Time integration/Time step=1.6e-6"]
 _, rest, whole = restart("explicit_rayleigh", explicit, RAYLEIGH + TIED, middle=0.1)
 compare("explicit_rayleigh", rest, whole, 1e-13, 2e-11, middle=0.1)
-hati_state, rest, whole = restart("hati_tied", hati, UNDAMPED + TIED)
+# (HATI at dt = 4e-5 s, m = 5: a macro step that the tests' history
+# interval, 2e-4 s, holds a whole number of times; the file's steps are
+# 8e-5 s, m = 1)
+HATI_STEPS = ["Time integration/Time step=4e-5", "Time integration/HATI/Time step ratio=5"]
+hati_state, rest, whole = restart("hati_tied", hati, UNDAMPED + TIED + HATI_STEPS)
 compare("hati_tied", rest, whole, 1e-11, 1e-9)
 
 # HATI's state restarted fully explicit: the same energies at the restart
@@ -128,7 +132,8 @@ for what, prm, sets, expected in (
         ("past End time", hati, ["Time integration/End time=0.4"], "not before"),
         ("truncated", hati, [], "truncated")):
     state = truncated if what == "truncated" else hati_state
-    _, p = ctx.run(prm, "refused", sets + UNDAMPED + TIED + ["Analysis/Initial state=file",
+    steps = HATI_STEPS if prm == hati else []
+    _, p = ctx.run(prm, "refused", sets + UNDAMPED + TIED + steps + ["Analysis/Initial state=file",
                                           "Analysis/Initial state file=" + state],
                    expect_failure=True)
     ctx.check_true("refused, %s: one line naming the file" % what,
