@@ -6,6 +6,8 @@
 // the local frame and its error paths, and the section helpers against
 // tabulated values. Prints every check with value, reference and tolerance;
 // returns non-zero on failure.
+#include "test_tools.h"
+
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/quadrature_lib.h>
 

@@ -17,6 +17,8 @@
 // 1 + 1.1e-10 with numpy, 1 + 0.996e-10 with Debian's reference BLAS and
 // 1 + 1.9e-10 (m = 21) with OpenBLAS; the unstable G3 variant gives 1.0006
 // to 1.064 on a frame (unit_hati_stability.cc).
+#include "test_tools.h"
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/lapack_full_matrix.h>

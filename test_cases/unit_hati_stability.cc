@@ -17,6 +17,8 @@
 // continuity, as the prototype gc_bar_damped_macro.py gives), the damped
 // modes below; at 1.05 of it the radius is far above 1 (and 1 without
 // damping at the same step).
+#include "test_tools.h"
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/lapack_full_matrix.h>

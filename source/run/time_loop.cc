@@ -577,6 +577,8 @@ void TimeLoop<Integrator>::add_law_output_summary(SummaryEntries &summary)
   if constexpr (!std::is_same_v<Integrator, Newmark>)
     times.rows = integrator.contact_seconds();
   times.outputs = statistics_clock.seconds();
+  if constexpr (std::is_same_v<Integrator, HATICoupling>)
+    times.outputs += integrator.statistics_sample_seconds();
   law_outputs.finish(summary, std::cout, times);
 }
 

@@ -30,6 +30,15 @@ double seconds_since(const Clock::time_point start)
 {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
+
+/** The seconds since @p mark, which moves to now: one clock read per phase. */
+double lap(Clock::time_point &mark)
+{
+  const Clock::time_point now = Clock::now();
+  const double seconds = std::chrono::duration<double>(now - mark).count();
+  mark = now;
+  return seconds;
+}
 } // namespace
 
 void HATIParameters::declare_parameters(ParameterHandler &prm)
@@ -210,7 +219,10 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
     }
     else if (after_micro_step)
     {
-      take_sample(sample);
+      {
+        const SampledWallClock::Scope scope(sample_clock);
+        take_sample(sample);
+      }
       after_micro_step(sample);
     }
   }
@@ -219,38 +231,35 @@ void HATICoupling::micro_steps(const Vector<double> &lambda_end, const bool pass
 
 void HATICoupling::step()
 {
-  // (G1) the free implicit step
+  // (G1) the free implicit step (consecutive phases share their clock reads)
   auto start = Clock::now();
   implicit.free_step();
-  seconds[1] += seconds_since(start);
+  seconds[1] += lap(start);
 
   // (G2) the micro steps with the known part of the multiplier; with
   // contacts within reach of the ramp response, keep the state to redo them
-  start = Clock::now();
   record_contacts = superposition->nonlinear_in_reach();
   n_recorded = 0;
   if (record_contacts)
     explicit_integrator.save(snapshot);
   micro_steps(lambda_n, true);
-  seconds[0] += seconds_since(start);
+  seconds[0] += lap(start);
 
   // (G3') Lambda_{n+m} from the velocity continuity at t_{n+m}: the pass
   // ran with the guess Lambda_{n+m} = Lambda_n, the correction solves
   // H dLambda = -(C_E V_pass + C_I V_free + H_I Lambda_n), with the ramp
   // response of the active set of the contacts within reach when it stayed
   // the same over the pass
-  start = Clock::now();
   bool same_active_set = true;
   const RampSuperposition::Response &ramp =
       superposition->response_for_pass(same_active_set);
   interface->set_free_implicit_velocity(implicit);
   interface->correction(ramp.H_inverse, increments.v_end, lambda_n, delta_lambda);
-  lambda_m = lambda_n;
-  lambda_m += delta_lambda;
-  seconds[2] += seconds_since(start);
+  for (unsigned int k = 0; k < lambda_m.size(); ++k)
+    lambda_m[k] = lambda_n[k] + delta_lambda[k];
+  seconds[2] += lap(start);
 
   // the correction added by superposition, or the micro steps redone
-  start = Clock::now();
   // friction within reach of the ramp (A9) is linear in the multiplier while
   // its contacts stick: response_for_pass() and superpose() check it
   const bool superposed = same_active_set && superpose_steps &&
@@ -265,33 +274,30 @@ void HATICoupling::step()
     if (after_micro_step)
       for (unsigned int j = 0; j < n_recorded; ++j)
         after_micro_step(contact_record[j]);
-    seconds[3] += seconds_since(start);
+    seconds[3] += lap(start);
   }
   else
   {
-    seconds[3] += seconds_since(start);
-    start = Clock::now();
+    seconds[3] += lap(start);
     redo_micro_steps(ramp.H_inverse);
-    seconds[4] += seconds_since(start);
+    seconds[4] += lap(start);
   }
   record_contacts = false;
 
   // (G5) interface work of the explicit side: the trapezoid of each micro
   // step, sum_j 1/2 dU_j . C_E^T (Lambda_{j-1} + Lambda_j)
-  start = Clock::now();
   for (unsigned int k = 0; k < interface->size(); ++k)
     interface_work += increments.increment_sum[k] * lambda_n[k] +
                       increments.increment_weighted[k] * (lambda_m[k] - lambda_n[k]);
-  seconds[2] += seconds_since(start);
+  seconds[2] += lap(start);
 
   // (G4) the implicit link with Lambda_{n+m}, its interface work
   // 1/2 dU_I . C_I^T (Lambda_n + Lambda_{n+m}) and the continuity check
-  start = Clock::now();
   interface->link(
       implicit, lambda_n, lambda_m, increments.v_end, interface_work, max_jump);
   implicit.finish_step();
   lambda_n = lambda_m;
-  seconds[1] += seconds_since(start);
+  seconds[1] += lap(start);
 }
 
 void HATICoupling::broyden_step(const DenseColumns &H_inverse,

@@ -62,6 +62,8 @@ InterfaceProblem::InterfaceProblem(const Decomposition &decomposition,
       for (unsigned int i = 0; i < n_I; ++i)
         link_columns(i, l) = x[i];
   }
+  if (keep_columns)
+    link_columns.skip_zero_rows();
 }
 
 void InterfaceProblem::invert(const FullMatrix<double> &H_E,

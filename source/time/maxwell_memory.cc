@@ -84,10 +84,28 @@ void MaxwellMemory::update(const Vector<double> &v)
 
 void MaxwellMemory::history(Vector<double> &h) const
 {
-  h.reinit(S.size(), true);
-  h = 0.;
-  for (unsigned int l = 0; l < alpha.size(); ++l)
-    h.add(alpha[l] * decay[l], q[l]);
+  // h = sum_l alpha_l e_l q_l, summed in the order of the branches, in one
+  // serial pass (as h = 0, h.add(alpha_l e_l, q_l) for each l, without the
+  // task scheduler of each deal.II vector operation)
+  const unsigned int n = S.size(), L = alpha.size();
+  if (h.size() != n)
+    h.reinit(n, true);
+  AssertThrow(L <= 8, ExcMessage("MaxwellMemory: at most 8 branches"));
+  const double *ql[8];
+  double c[8];
+  for (unsigned int l = 0; l < L; ++l)
+  {
+    ql[l] = q[l].data();
+    c[l] = alpha[l] * decay[l];
+  }
+  double *__restrict hh = h.data();
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    double x = 0.;
+    for (unsigned int l = 0; l < L; ++l)
+      x += c[l] * ql[l][i];
+    hh[i] = x;
+  }
 }
 
 void MaxwellMemory::add_energies(Energies &e, const SparseMatrix<double> &K) const

@@ -507,11 +507,18 @@ void Newmark::free_step()
                              *__restrict c = row_damping.data();
     const unsigned int *__restrict column = row_column.data();
     double *__restrict r = rhs.data();
+    // without viscous damping C = 0 (its rows hold zeros): K alone, the same
+    // sums (k u + 0 = k u exactly) at half the loads
+    const bool damped = viscous_damping();
     for (unsigned int i = 0; i < n; ++i)
     {
       double s = 0.;
-      for (std::size_t e = row_start[i]; e < row_start[i + 1]; ++e)
-        s += k[e] * us[column[e]] + c[e] * vs[column[e]];
+      if (damped)
+        for (std::size_t e = row_start[i]; e < row_start[i + 1]; ++e)
+          s += k[e] * us[column[e]] + c[e] * vs[column[e]];
+      else
+        for (std::size_t e = row_start[i]; e < row_start[i + 1]; ++e)
+          s += k[e] * us[column[e]];
       r[i] = system.fixed[i] ? 0. : f[i] - s;
     }
   }
@@ -548,9 +555,19 @@ void Newmark::add_link(const Vector<double> &force)
 
 void Newmark::add_link_acceleration(const Vector<double> &a_link)
 {
-  A_new += a_link;
-  U_star.add(beta * dt * dt, a_link);
-  V_star.add(gamma * dt, a_link);
+  // A_new += a, U* += beta DT^2 a, V* += gamma DT a in one serial pass (the
+  // deal.II vector operations each go through the task scheduler)
+  const unsigned int n = a_link.size();
+  const double cu = beta * dt * dt, cv = gamma * dt;
+  const double *__restrict a = a_link.data();
+  double *__restrict an = A_new.data(), *__restrict us = U_star.data(),
+                     *__restrict vs = V_star.data();
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    an[i] += a[i];
+    us[i] += cu * a[i];
+    vs[i] += cv * a[i];
+  }
 }
 
 void Newmark::finish_step()
@@ -582,9 +599,10 @@ void Newmark::finish_step()
   {
     // (N4) q_l,n+1 = e_l q_l,n + tau_l (1 - e_l) (U_{n+1} - U_n) / DT, and the
     // branch work 1/2 dU . K (S_n + S_{n+1})
-    W = U_star;
-    W -= U;
-    W /= dt;
+    // (W = U*, W -= U, W /= DT in one pass: the same products by 1/DT)
+    const double inv_dt = 1. / dt;
+    for (unsigned int i = 0; i < n; ++i)
+      W[i] = (U_star[i] - U[i]) * inv_dt;
     branches.update(W);
     stiffness_vmult(KS_new, branches.sum());
     double branch = 0.;

@@ -293,6 +293,13 @@ public:
   double contact_seconds() const { return explicit_integrator.contact_seconds(); }
   /** Set-up: factorisation, ramp response, interface matrix (s). */
   double setup_seconds() const { return setup; }
+  /**
+   * Within explicit_seconds(): the samples of the contacts taken for
+   * after_micro_step() alone (no contact within reach of the ramp), the
+   * statistics' share of the micro step (s; timed on one in
+   * SampledWallClock::sample_every and scaled).
+   */
+  double statistics_sample_seconds() const { return sample_clock.seconds(); }
 
   const Newmark &implicit_part() const { return implicit; }
   unsigned int n_interface_dofs() const { return interface->size(); }
@@ -421,6 +428,7 @@ private:
   std::vector<std::vector<bool>> frozen_activation;
   /** Explicit first passes, implicit, interface, superposition, redo (s). */
   double seconds[5] = {0., 0., 0., 0., 0.};
+  SampledWallClock sample_clock;
   double setup = 0.;
   mutable Vector<double> global_U, global_V, expanded_U, expanded_V;
   /** Implicit DoFs of set_history_dofs() and their rows of T. */
