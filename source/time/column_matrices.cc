@@ -46,7 +46,9 @@ void DenseColumns::vmult(Vector<double> &y, const Vector<double> &x) const
   double *__restrict a = y.data();
   std::fill(a, a + n_rows, 0.);
   const double *const columns = value.data();
-  const bool lists = !pass_start.empty();
+  // the row ranges of each pass (every row without skip_zero_rows())
+  const bool ranges = !pass_start.empty();
+  const std::pair<unsigned int, unsigned int> all_rows(0, n_rows);
   unsigned int l = 0, pass = 0;
   for (; l + 4 <= n_columns; l += 4, ++pass)
   {
@@ -54,51 +56,61 @@ void DenseColumns::vmult(Vector<double> &y, const Vector<double> &x) const
     const double *__restrict c0 = columns + std::size_t(l) * n_rows,
                              *__restrict c1 = c0 + n_rows, *__restrict c2 = c1 + n_rows,
                              *__restrict c3 = c2 + n_rows;
-    if (lists)
-      for (std::size_t e = pass_start[pass]; e < pass_start[pass + 1]; ++e)
-      {
-        const unsigned int i = pass_row[e];
+    const std::size_t n_ranges = ranges ? pass_start[pass + 1] - pass_start[pass] : 1;
+    for (std::size_t r = 0; r < n_ranges; ++r)
+    {
+      const auto &[begin, end] = ranges ? pass_range[pass_start[pass] + r] : all_rows;
+      for (unsigned int i = begin; i < end; ++i)
         a[i] += c0[i] * x0 + c1[i] * x1 + c2[i] * x2 + c3[i] * x3;
-      }
-    else
-      for (unsigned int i = 0; i < n_rows; ++i)
-        a[i] += c0[i] * x0 + c1[i] * x1 + c2[i] * x2 + c3[i] * x3;
+    }
   }
   for (; l < n_columns; ++l, ++pass)
   {
     const double xl = x[l];
     const double *__restrict column = columns + std::size_t(l) * n_rows;
-    if (lists)
-      for (std::size_t e = pass_start[pass]; e < pass_start[pass + 1]; ++e)
-        a[pass_row[e]] += column[pass_row[e]] * xl;
-    else
-      for (unsigned int i = 0; i < n_rows; ++i)
+    const std::size_t n_ranges = ranges ? pass_start[pass + 1] - pass_start[pass] : 1;
+    for (std::size_t r = 0; r < n_ranges; ++r)
+    {
+      const auto &[begin, end] = ranges ? pass_range[pass_start[pass] + r] : all_rows;
+      for (unsigned int i = begin; i < end; ++i)
         a[i] += column[i] * xl;
+    }
   }
 }
 
 void DenseColumns::skip_zero_rows()
 {
+  // zero gaps shorter than this stay inside a range (they add exact zeros)
+  const unsigned int shortest_gap = 8;
   pass_start.assign(1, 0);
-  pass_row.clear();
+  pass_range.clear();
+  std::size_t visited = 0;
   for (unsigned int l = 0; l < n_columns;)
   {
     const unsigned int width = l + 4 <= n_columns ? 4 : 1;
+    const std::size_t first = pass_range.size();
     for (unsigned int i = 0; i < n_rows; ++i)
-      for (unsigned int c = l; c < l + width; ++c)
-        if (value[std::size_t(c) * n_rows + i] != 0.)
-        {
-          pass_row.push_back(i);
-          break;
-        }
-    pass_start.push_back(pass_row.size());
+    {
+      bool nonzero = false;
+      for (unsigned int c = l; c < l + width && !nonzero; ++c)
+        nonzero = value[std::size_t(c) * n_rows + i] != 0.;
+      if (!nonzero)
+        continue;
+      if (pass_range.size() > first && i < pass_range.back().second + shortest_gap)
+        pass_range.back().second = i + 1;
+      else
+        pass_range.emplace_back(i, i + 1);
+    }
+    for (std::size_t r = first; r < pass_range.size(); ++r)
+      visited += pass_range[r].second - pass_range[r].first;
+    pass_start.push_back(pass_range.size());
     l += width;
   }
-  // the indexed passes pay off where they skip a quarter of the rows
-  if (4 * pass_row.size() > 3 * std::size_t(n_rows) * (pass_start.size() - 1))
+  // the ranges pay off where they skip a quarter of the rows
+  if (4 * visited > 3 * std::size_t(n_rows) * (pass_start.size() - 1))
   {
     pass_start.clear();
-    pass_row.clear();
+    pass_range.clear();
   }
 }
 

@@ -5,6 +5,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace hati
@@ -58,14 +59,14 @@ public:
     n_columns = n;
     value.assign(std::size_t(m) * n, 0.);
     pass_start.clear();
-    pass_row.clear();
+    pass_range.clear();
   }
   /** Whether the matrix has no entries (never set up, or 0 rows or columns). */
   bool has_no_entries() const { return value.empty(); }
   double &operator()(const unsigned int i, const unsigned int j)
   {
     pass_start.clear();
-    pass_row.clear();
+    pass_range.clear();
     return value[std::size_t(j) * n_rows + i];
   }
   double operator()(const unsigned int i, const unsigned int j) const
@@ -76,8 +77,9 @@ public:
   void vmult(Vector<double> &y, const Vector<double> &x) const;
   /**
    * Once the entries are set: for each pass of vmult() (four columns, or
-   * one of the last n mod 4), the rows where one of its columns has a
-   * nonzero, so that the passes skip the others (the link columns of an
+   * one of the last n mod 4), the ranges of rows where one of its columns
+   * has a nonzero (zero gaps under 8 rows inside), so that the passes skip
+   * the others (the link columns of an
    * implicit part in several pieces are zero off the piece of their
    * interface DoF). The results are bitwise those of the full passes: a
    * skipped row would add an exact zero. Setting an entry afterwards
@@ -88,10 +90,10 @@ public:
 private:
   unsigned int n_rows = 0, n_columns = 0;
   std::vector<double> value;
-  // per pass of vmult(): the rows it visits, [pass_start[p], pass_start[p + 1])
-  // in pass_row; empty: every row
+  // per pass of vmult(): the row ranges [begin, end) it visits,
+  // [pass_start[p], pass_start[p + 1]) in pass_range; empty: every row
   std::vector<std::size_t> pass_start;
-  std::vector<unsigned int> pass_row;
+  std::vector<std::pair<unsigned int, unsigned int>> pass_range;
 };
 } // namespace hati
 
