@@ -62,6 +62,7 @@ InterfaceProblem::InterfaceProblem(const Decomposition &decomposition,
       for (unsigned int i = 0; i < n_I; ++i)
         link_columns(i, l) = x[i];
   }
+  H_I.skip_zero_rows();
   if (keep_columns)
     link_columns.skip_zero_rows();
 }
@@ -80,6 +81,7 @@ void InterfaceProblem::invert(const FullMatrix<double> &H_E,
   for (unsigned int k = 0; k < n_gamma; ++k)
     for (unsigned int l = 0; l < n_gamma; ++l)
       H_inverse(k, l) = H(k, l);
+  H_inverse.skip_zero_rows();
 }
 
 void InterfaceProblem::initial_multiplier(CDLagrange &explicit_integrator,

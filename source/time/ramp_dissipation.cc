@@ -58,6 +58,7 @@ void RampSuperposition::store_dissipation(
           r.dissipation_quadratic(l, k) +=
               reach_mass[i] * v * (damping_reach[j - 1](i, k) + damping_reach[j](i, k));
       }
+  r.dissipation_quadratic.skip_zero_rows();
 }
 
 double RampSuperposition::ramp_dissipation(const Response &ramp,
