@@ -32,9 +32,35 @@ void DiscreteSystem::reinit(const unsigned int n)
 
 void DiscreteSystem::external_force(const double t, Vector<double> &f) const
 {
-  f = constant_force;
-  for (const auto &load : time_dependent_loads)
-    f.add(load.amplitude(t), load.shape);
+  // f = F_0 + sum_k a_k(t) f_k, summed in the order of the loads, in one
+  // serial pass (the same sums as f = F_0, then f.add(a_k, f_k) for each k,
+  // without the task scheduler of each deal.II vector operation)
+  if (f.size() != constant_force.size())
+    f.reinit(constant_force.size(), true);
+  const unsigned int n = f.size(), n_loads = time_dependent_loads.size();
+  double *__restrict out = f.data();
+  const double *__restrict f0 = constant_force.data();
+  if (n_loads == 0)
+  {
+    std::copy(f0, f0 + n, out);
+    return;
+  }
+  thread_local std::vector<double> amplitude;
+  thread_local std::vector<const double *> shape;
+  amplitude.resize(n_loads);
+  shape.resize(n_loads);
+  for (unsigned int k = 0; k < n_loads; ++k)
+  {
+    amplitude[k] = time_dependent_loads[k].amplitude(t);
+    shape[k] = time_dependent_loads[k].shape.data();
+  }
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    double x = f0[i];
+    for (unsigned int k = 0; k < n_loads; ++k)
+      x += amplitude[k] * shape[k][i];
+    out[i] = x;
+  }
 }
 
 double DiscreteSystem::highest_frequency_bound() const
