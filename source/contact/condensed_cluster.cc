@@ -10,40 +10,17 @@ namespace hati
 namespace
 {
 /**
- * @p X = @p W_BB^-1 by Gauss-Jordan, or the pseudo-inverse (deal.II's SVD,
- * singular values below 1e-12 of the largest taken as zero) where W_BB is
- * singular (dependent links): Gauss-Jordan's result is kept only if
- * `X W_BB = I` to 1e-10.
+ * The pseudo-inverse of a singular @p W_BB (dependent links; deal.II's SVD,
+ * singular values below 1e-12 of the largest taken as zero) into @p X.
  */
-void invert_links(const FullMatrix<double> &W_BB, FullMatrix<double> &X)
+void pseudo_inverse(const FullMatrix<double> &W_BB, FullMatrix<double> &X)
 {
-  X = W_BB;
-  bool finite = true;
-  try
-  {
-    X.gauss_jordan();
-  }
-  catch (...)
-  {
-    finite = false;
-  }
-  // an inverse only if X W_BB = I to 1e-10: a singular W_BB can give a
-  // finite but meaningless Gauss-Jordan result (entries of 1e19 seen)
   const unsigned int n = W_BB.m();
-  for (unsigned int i = 0; i < n && finite; ++i)
-    for (unsigned int j = 0; j < n && finite; ++j)
-    {
-      double p = 0.;
-      for (unsigned int k = 0; k < n; ++k)
-        p += X(i, k) * W_BB(k, j);
-      finite = std::isfinite(p) && std::abs(p - (i == j ? 1. : 0.)) <= 1e-10;
-    }
-  if (finite)
-    return;
   LAPACKFullMatrix<double> pseudo(n, n);
   pseudo = W_BB;
   pseudo.compute_inverse_svd(1e-12);
   // (its entries are now the SVD's, not the inverse's: column by column)
+  X.reinit(n, n);
   Vector<double> e(n), column(n);
   for (unsigned int j = 0; j < n; ++j)
   {
@@ -82,33 +59,18 @@ void derive_links(const FrictionalCluster &cluster, CondensedLinks &links)
   links.valid = true;
   if (links.rows_B.empty() || links.kept.empty())
     return;
-  const std::vector<unsigned int> &rows_B = links.rows_B, &rows_C = links.rows_C;
-  const unsigned int nB = rows_B.size(), nC = rows_C.size();
-  FullMatrix<double> W_BB(nB, nB);
-  for (unsigned int a = 0; a < nB; ++a)
-    for (unsigned int b = 0; b < nB; ++b)
-      W_BB(a, b) = W(rows_B[a], rows_B[b]);
-  links.X.reinit(nB, nB);
-  invert_links(W_BB, links.X);
-  // T = W_BB^-1 W_BC, S = W_CC - W_CB T
-  links.T.reinit(nB, nC);
-  for (unsigned int a = 0; a < nB; ++a)
-    for (unsigned int c = 0; c < nC; ++c)
-    {
-      double t = 0.;
+  // T = W_BB^-1 W_BC, S = W_CC - W_CB T; where the links are dependent
+  // (W_BB singular), its pseudo-inverse
+  if (!eliminate_rows(W, links.rows_B, links.rows_C, links.schur))
+  {
+    const unsigned int nB = links.rows_B.size();
+    FullMatrix<double> W_BB(nB, nB);
+    for (unsigned int a = 0; a < nB; ++a)
       for (unsigned int b = 0; b < nB; ++b)
-        t += links.X(a, b) * W(rows_B[b], rows_C[c]);
-      links.T(a, c) = t;
-    }
-  links.S.reinit(nC, nC);
-  for (unsigned int c = 0; c < nC; ++c)
-    for (unsigned int d = 0; d < nC; ++d)
-    {
-      double w = W(rows_C[c], rows_C[d]);
-      for (unsigned int a = 0; a < nB; ++a)
-        w -= W(rows_C[c], rows_B[a]) * links.T(a, d);
-      links.S(c, d) = w;
-    }
+        W_BB(a, b) = W(links.rows_B[a], links.rows_B[b]);
+    pseudo_inverse(W_BB, links.schur.Wbb_inverse);
+    complete_elimination(W, links.rows_C, links.schur);
+  }
   links.first_S.assign(1, 0);
   links.mu_S.clear();
   links.bilateral_S.clear();
@@ -140,7 +102,8 @@ solve_condensed_frictional_cluster(const FrictionalCluster &cluster,
   if (rows_B.empty() || links->kept.empty())
     return solve_frictional_cluster(cluster, r, state, control);
 
-  const FullMatrix<double> &W = cluster.W, &X = links->X, &T = links->T;
+  const FullMatrix<double> &W = cluster.W, &X = links->schur.Wbb_inverse,
+                           &T = links->schur.X;
   const Vector<double> &q = cluster.q;
   const unsigned int nB = rows_B.size(), nC = rows_C.size(), n = q.size(),
                      m = cluster.mu.size();
@@ -172,7 +135,7 @@ solve_condensed_frictional_cluster(const FrictionalCluster &cluster,
   }
   thread_local std::vector<FrictionState> state_S;
   const FrictionSolverResult result = solve_frictional_cluster(
-      {links->S, q_S, links->first_S, links->mu_S, links->bilateral_S},
+      {links->schur.S, q_S, links->first_S, links->mu_S, links->bilateral_S},
       r_S,
       state_S,
       control);

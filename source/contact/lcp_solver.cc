@@ -177,19 +177,35 @@ bool form_elimination(const FullMatrix<double> &W,
   e.u.clear();
   for (unsigned int i = 0; i < n; ++i)
     (i < bilateral.size() && bilateral[i] ? e.b : e.u).push_back(i);
+  if (!eliminate_rows(W, e.b, e.u, e.schur))
+    return false;
   const unsigned int nb = e.b.size(), nu = e.u.size();
-  FullMatrix<double> Wbb(nb, nb), Wuu(nu, nu);
-  e.Wbu.reinit(nb, nu);
+  for (unsigned int a = 0; a < nu; ++a)
+    if (!(e.schur.S(a, a) > 1e-10 * W(e.u[a], e.u[a])))
+      return false;
+  e.q_b.reinit(nb);
+  e.y.reinit(nb);
+  e.q_s.reinit(nu);
+  e.lambda_u.reinit(nu);
+  return true;
+}
+} // namespace
+
+bool eliminate_rows(const FullMatrix<double> &W,
+                    const std::vector<unsigned int> &b,
+                    const std::vector<unsigned int> &c,
+                    SchurElimination &e)
+{
+  const unsigned int nb = b.size(), nc = c.size();
+  FullMatrix<double> Wbb(nb, nb);
+  e.Wbc.reinit(nb, nc);
   for (unsigned int k = 0; k < nb; ++k)
   {
     for (unsigned int j = 0; j < nb; ++j)
-      Wbb(k, j) = W(e.b[k], e.b[j]);
-    for (unsigned int c = 0; c < nu; ++c)
-      e.Wbu(k, c) = W(e.b[k], e.u[c]);
+      Wbb(k, j) = W(b[k], b[j]);
+    for (unsigned int l = 0; l < nc; ++l)
+      e.Wbc(k, l) = W(b[k], c[l]);
   }
-  for (unsigned int a = 0; a < nu; ++a)
-    for (unsigned int c = 0; c < nu; ++c)
-      Wuu(a, c) = W(e.u[a], e.u[c]);
   // W_BB = L_B M^-1 L_B^T: symmetric, positive definite unless the
   // equalities are dependent (Cholesky throws there, in every build)
   LAPACKFullMatrix<double> inverse(nb, nb);
@@ -214,26 +230,29 @@ bool form_elimination(const FullMatrix<double> &W,
     identity(k, k) -= 1.;
   if (!(identity.linfty_norm() <= 1e-9 * nb))
     return false;
-  // X = W_BB^-1 W_BU, S = W_UU - W_BU^T X
-  e.X.reinit(nb, nu);
-  e.S.reinit(nu, nu);
-  if (nu > 0)
-  {
-    e.Wbb_inverse.mmult(e.X, e.Wbu);
-    e.Wbu.Tmmult(e.S, e.X);
-    e.S *= -1.;
-    e.S.add(1., Wuu);
-  }
-  for (unsigned int a = 0; a < nu; ++a)
-    if (!(e.S(a, a) > 1e-10 * Wuu(a, a)))
-      return false;
-  e.q_b.reinit(nb);
-  e.y.reinit(nb);
-  e.q_s.reinit(nu);
-  e.lambda_u.reinit(nu);
+  complete_elimination(W, c, e);
   return true;
 }
-} // namespace
+
+void complete_elimination(const FullMatrix<double> &W,
+                          const std::vector<unsigned int> &c,
+                          SchurElimination &e)
+{
+  const unsigned int nb = e.Wbb_inverse.m(), nc = c.size();
+  // X = W_BB^-1 W_BC, S = W_CC - W_BC^T X
+  e.X.reinit(nb, nc);
+  e.S.reinit(nc, nc);
+  if (nc == 0)
+    return;
+  FullMatrix<double> Wcc(nc, nc);
+  for (unsigned int a = 0; a < nc; ++a)
+    for (unsigned int l = 0; l < nc; ++l)
+      Wcc(a, l) = W(c[a], c[l]);
+  e.Wbb_inverse.mmult(e.X, e.Wbc);
+  e.Wbc.Tmmult(e.S, e.X);
+  e.S *= -1.;
+  e.S.add(1., Wcc);
+}
 
 Vector<double> solve_lcp(const FullMatrix<double> &W,
                          const Vector<double> &q,
@@ -299,19 +318,20 @@ void solve_lcp(const FullMatrix<double> &W,
   // y = W_BB^-1 q_B, q_S = q_U - W_BU^T y
   for (unsigned int k = 0; k < nb; ++k)
     e.q_b[k] = q[e.b[k]];
-  e.Wbb_inverse.vmult(e.y, e.q_b);
+  e.schur.Wbb_inverse.vmult(e.y, e.q_b);
   if (nu > 0)
-    e.Wbu.Tvmult(e.q_s, e.y);
+    e.schur.Wbc.Tvmult(e.q_s, e.y);
   for (unsigned int a = 0; a < nu; ++a)
     e.q_s[a] = q[e.u[a]] - e.q_s[a];
   // the unilateral rows' LCP (their S(a, a) > 0: form_elimination())
   if (nu == 1)
-    e.lambda_u[0] = std::max(0., -e.q_s[0] / e.S(0, 0));
+    e.lambda_u[0] = std::max(0., -e.q_s[0] / e.schur.S(0, 0));
   else if (nu > 1)
   {
     static const std::vector<bool> none;
-    const bool ok = (nu <= 12) ? enumerate(e.S, e.q_s, none, e.lambda_u)
-                               : projected_gauss_seidel(e.S, e.q_s, none, e.lambda_u);
+    const bool ok = (nu <= 12)
+                        ? enumerate(e.schur.S, e.q_s, none, e.lambda_u)
+                        : projected_gauss_seidel(e.schur.S, e.q_s, none, e.lambda_u);
     if (!ok)
       throw_no_solution(n);
   }
@@ -319,7 +339,7 @@ void solve_lcp(const FullMatrix<double> &W,
     lambda[e.u[a]] = e.lambda_u[a];
   // lambda_B = -(y + X lambda_U)
   if (nu > 0)
-    e.X.vmult_add(e.y, e.lambda_u);
+    e.schur.X.vmult_add(e.y, e.lambda_u);
   for (unsigned int k = 0; k < nb; ++k)
     lambda[e.b[k]] = -e.y[k];
 }

@@ -2,6 +2,7 @@
 #define hati_contact_condensed_cluster_h
 
 #include <hati/contact/friction_solver.h>
+#include <hati/contact/lcp_solver.h>
 
 namespace hati
 {
@@ -18,7 +19,8 @@ struct CondensedLinks
 {
   bool valid = false;
   std::vector<unsigned int> rows_B, rows_C, kept, condensed;
-  FullMatrix<double> X, T, S;
+  /** W_BB^-1, T = W_BB^-1 W_BC (its X) and S (eliminate_rows()). */
+  SchurElimination schur;
   std::vector<unsigned int> first_S;
   std::vector<double> mu_S;
   std::vector<bool> bilateral_S;

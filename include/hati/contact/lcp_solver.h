@@ -46,6 +46,36 @@ void solve_lcp(const FullMatrix<double> &W,
                Vector<double> &lambda);
 
 /**
+ * The elimination of the rows B of a symmetric Delassus matrix W in favour
+ * of the rows C (A9, doc/theory.md A9 "Links in a frictional cluster"):
+ * with `W = [W_BB W_BC; W_CB W_CC]`, `X = W_BB^-1 W_BC` and the Schur
+ * complement `S = W_CC - W_BC^T X`, so that `W_BB r_B + W_BC r_C = -q_B`
+ * gives `r_B = -W_BB^-1 q_B - X r_C`. Shared by the frictionless clusters'
+ * equalities (BilateralElimination) and the frictional clusters' links
+ * (CondensedLinks).
+ */
+struct SchurElimination
+{
+  /** W_BC, W_BB^-1, X = W_BB^-1 W_BC and S = W_CC - W_BC^T X. */
+  FullMatrix<double> Wbc, Wbb_inverse, X, S;
+};
+
+/**
+ * @p e for the rows @p b and @p c of @p W: W_BB^-1 by Cholesky (LAPACK);
+ * false, with only Wbc set, where W_BB is singular to round-off
+ * (`W_BB^-1 W_BB = I` to 1e-9 n_B fails: dependent equalities).
+ */
+bool eliminate_rows(const FullMatrix<double> &W,
+                    const std::vector<unsigned int> &b,
+                    const std::vector<unsigned int> &c,
+                    SchurElimination &e);
+
+/** X and S of @p e from its Wbc and Wbb_inverse (rows @p c of @p W). */
+void complete_elimination(const FullMatrix<double> &W,
+                          const std::vector<unsigned int> &c,
+                          SchurElimination &e);
+
+/**
  * A cluster's equalities eliminated once (A5 with bilateral rows: ties,
  * rigid links): with B the bilateral rows and U the unilateral ones,
  *
@@ -66,7 +96,7 @@ struct BilateralElimination
   bool invertible = false;
   std::vector<unsigned int> b, u;
   /** W_BU, W_BB^-1, X = W_BB^-1 W_BU and the Schur complement S. */
-  FullMatrix<double> Wbu, Wbb_inverse, X, S;
+  SchurElimination schur;
   /** Work vectors of a solve: q_B, y = W_BB^-1 q_B, q_S, lambda_U. */
   Vector<double> q_b, y, q_s, lambda_u;
 };
