@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <hati/base/cpu_clones.h>
 #include <hati/time/cd_lagrange.h>
 #include <hati/time/cd_lagrange_kernels.h>
 
@@ -344,7 +345,7 @@ void CDLagrange::predict()
   t = system.start_time + n_steps * dt;
 }
 
-void CDLagrange::free_velocity(const bool with_loads)
+HATI_AVX2_CLONES void CDLagrange::free_velocity(const bool with_loads)
 {
   // (A2)-(A3) V_free = V_{n+1/2} + dt M^-1 (F_ext(t_{n+1}) - K U_{n+1}),
   // with dt M^-1 folded into the stored operator and force; V_prev receives

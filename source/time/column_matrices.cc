@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <hati/base/cpu_clones.h>
 #include <hati/time/column_matrices.h>
 
 #include <algorithm>
@@ -39,7 +40,8 @@ void SparseColumns::add_multiply(Vector<double> &y, const Vector<double> &x) con
         y[row[e]] += value[e] * x[k];
 }
 
-void DenseColumns::vmult(Vector<double> &y, const Vector<double> &x) const
+HATI_AVX2_CLONES void DenseColumns::vmult(Vector<double> &y,
+                                          const Vector<double> &x) const
 {
   AssertDimension(y.size(), n_rows);
   AssertDimension(x.size(), n_columns);

@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <hati/base/cpu_clones.h>
 #include <hati/time/maxwell_memory.h>
 
 #include <cmath>
@@ -53,7 +54,7 @@ void MaxwellMemory::reset()
   branch_work = 0.;
 }
 
-void MaxwellMemory::update(const Vector<double> &v)
+HATI_AVX2_CLONES void MaxwellMemory::update(const Vector<double> &v)
 {
   const unsigned int n = S.size(), L = alpha.size();
   const double *__restrict vv = v.data();

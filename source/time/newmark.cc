@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <hati/base/cpu_clones.h>
 #include <hati/linear_algebra/amg_preconditioner.h>
 #include <hati/linear_algebra/column_major.h>
 #include <hati/time/newmark.h>
@@ -459,7 +460,7 @@ void Newmark::step()
   finish_step();
 }
 
-void Newmark::free_step()
+HATI_AVX2_CLONES void Newmark::free_step()
 {
   const unsigned int n = U.size();
   // (N1) predictors U* = U_n + DT V_n + DT^2 (1/2 - beta) A_n,
@@ -553,7 +554,7 @@ void Newmark::add_link(const Vector<double> &force)
   add_link_acceleration(tmp);
 }
 
-void Newmark::add_link_acceleration(const Vector<double> &a_link)
+HATI_AVX2_CLONES void Newmark::add_link_acceleration(const Vector<double> &a_link)
 {
   // A_new += a, U* += beta DT^2 a, V* += gamma DT a in one serial pass (the
   // deal.II vector operations each go through the task scheduler)
@@ -570,7 +571,7 @@ void Newmark::add_link_acceleration(const Vector<double> &a_link)
   }
 }
 
-void Newmark::finish_step()
+HATI_AVX2_CLONES void Newmark::finish_step()
 {
   // energies: 1/2 (U_{n+1} - U_n) . (F_n + F_{n+1}) (and the damping's work)
   const unsigned int n = U.size();
