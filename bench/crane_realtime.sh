@@ -5,7 +5,8 @@
 # along Z, 19.9 s), printed as seconds of stepping per second of
 # earthquake, and where the time goes, per part (summary.json, clocks
 # summed over whole phases; the contacts' and the statistics' clocks are
-# read on one micro step in 16 and scaled):
+# read on one micro step in 16 and scaled, HATI's phases on one macro step
+# in 16):
 #   explicit part: the first pass of every macro step (us per micro step,
 #     ns per DoF), the superpositions (G3', us per macro step), the redone
 #     macro steps (a sliding wheel within reach of the interface; their

@@ -278,15 +278,18 @@ public:
    * the superpositions and the redone passes), the implicit steps, the
    * interface (s).
    */
-  double explicit_seconds() const { return seconds[0] + seconds[3] + seconds[4]; }
-  double implicit_seconds() const { return seconds[1]; }
-  double interface_seconds() const { return seconds[2]; }
+  double explicit_seconds() const
+  {
+    return phase_seconds(0) + phase_seconds(3) + redo_seconds();
+  }
+  double implicit_seconds() const { return phase_seconds(1); }
+  double interface_seconds() const { return phase_seconds(2); }
   /**
    * Within explicit_seconds(): the superpositions (G3': the checks and the
    * products with the ramp responses, A7/A8 dissipation included) and the
    * redone macro steps (their passes and corrections) (s).
    */
-  double superposition_seconds() const { return seconds[3]; }
+  double superposition_seconds() const { return phase_seconds(3); }
   double redo_seconds() const { return seconds[4]; }
   /** Wall time of the explicit part's contact resolution (s), within explicit_seconds().
    */
@@ -426,8 +429,21 @@ private:
    * gaps, A4).
    */
   std::vector<std::vector<bool>> frozen_activation;
-  /** Explicit first passes, implicit, interface, superposition, redo (s). */
+  /**
+   * Explicit first passes, implicit, interface, superposition (s, summed
+   * over the macro steps timed: one in SampledWallClock::sample_every, so
+   * that a macro step of m = 1 reads the clock once in 16), redo (s, every
+   * redone macro step).
+   */
   double seconds[5] = {0., 0., 0., 0., 0.};
+  unsigned long n_macro_steps_seen = 0, n_macro_steps_timed = 0;
+  /** seconds[k] scaled from the timed macro steps to all of them. */
+  double phase_seconds(const unsigned int k) const
+  {
+    return n_macro_steps_timed == 0
+               ? 0.
+               : seconds[k] * double(n_macro_steps_seen) / double(n_macro_steps_timed);
+  }
   SampledWallClock sample_clock;
   double setup = 0.;
   mutable Vector<double> global_U, global_V, expanded_U, expanded_V;
