@@ -1,5 +1,6 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <hati/base/cpu_clones.h>
 #include <hati/model/discrete_system.h>
 
 #include <algorithm>
@@ -30,7 +31,8 @@ void DiscreteSystem::reinit(const unsigned int n)
   monitors.clear();
 }
 
-void DiscreteSystem::external_force(const double t, Vector<double> &f) const
+HATI_AVX2_CLONES void DiscreteSystem::external_force(const double t,
+                                                     Vector<double> &f) const
 {
   // f = F_0 + sum_k a_k(t) f_k, summed in the order of the loads, in one
   // serial pass (the same sums as f = F_0, then f.add(a_k, f_k) for each k,

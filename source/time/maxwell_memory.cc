@@ -83,7 +83,7 @@ HATI_AVX2_CLONES void MaxwellMemory::update(const Vector<double> &v)
   }
 }
 
-void MaxwellMemory::history(Vector<double> &h) const
+HATI_AVX2_CLONES void MaxwellMemory::history(Vector<double> &h) const
 {
   // h = sum_l alpha_l e_l q_l, summed in the order of the branches, in one
   // serial pass (as h = 0, h.add(alpha_l e_l, q_l) for each l, without the
