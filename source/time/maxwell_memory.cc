@@ -133,9 +133,31 @@ void MaxwellMemory::set_memory(const std::vector<Vector<double>> &memory,
   AssertThrow(memory.size() == q.size(),
               ExcMessage("MaxwellMemory::set_memory: wrong number of branches."));
   q = memory;
-  S = 0.;
-  for (unsigned int l = 0; l < alpha.size(); ++l)
-    S.add(alpha[l], q[l]);
+  sum_branches();
   branch_work = work;
+}
+
+HATI_AVX2_CLONES void MaxwellMemory::sum_branches()
+{
+  // (as S = 0, S.add(alpha_l, q_l) for each l, without the task scheduler of
+  // each deal.II vector operation: the superposition calls this every
+  // macro step)
+  const unsigned int n = S.size(), L = alpha.size();
+  AssertThrow(L <= 8, ExcMessage("MaxwellMemory: at most 8 branches"));
+  const double *ql[8];
+  for (unsigned int l = 0; l < L; ++l)
+  {
+    AssertThrow(q[l].size() == n,
+                ExcMessage("MaxwellMemory: a branch's memory has the wrong size."));
+    ql[l] = q[l].data();
+  }
+  double *__restrict s = S.data();
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    double x = 0.;
+    for (unsigned int l = 0; l < L; ++l)
+      x += alpha[l] * ql[l][i];
+    s[i] = x;
+  }
 }
 } // namespace hati

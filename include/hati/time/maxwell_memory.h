@@ -111,12 +111,13 @@ public:
       return;
     for (unsigned int l = 0; l < q.size(); ++l)
       change(l, q[l]);
-    S = 0.;
-    for (unsigned int l = 0; l < alpha.size(); ++l)
-      S.add(alpha[l], q[l]);
+    sum_branches();
   }
 
 private:
+  /** S = sum_l alpha_l q_l in one serial pass, summed in the branches' order. */
+  void sum_branches();
+
   std::vector<double> alpha, decay, gain;
   std::vector<Vector<double>> q;
   Vector<double> S;
