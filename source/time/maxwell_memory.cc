@@ -83,30 +83,17 @@ HATI_AVX2_CLONES void MaxwellMemory::update(const Vector<double> &v)
   }
 }
 
-HATI_AVX2_CLONES void MaxwellMemory::history(Vector<double> &h) const
+void MaxwellMemory::history(Vector<double> &h) const
 {
-  // h = sum_l alpha_l e_l q_l, summed in the order of the branches, in one
-  // serial pass (as h = 0, h.add(alpha_l e_l, q_l) for each l, without the
-  // task scheduler of each deal.II vector operation)
+  // h = sum_l alpha_l e_l q_l
   const unsigned int n = S.size(), L = alpha.size();
   if (h.size() != n)
     h.reinit(n, true);
   AssertThrow(L <= 8, ExcMessage("MaxwellMemory: at most 8 branches"));
-  const double *ql[8];
   double c[8];
   for (unsigned int l = 0; l < L; ++l)
-  {
-    ql[l] = q[l].data();
     c[l] = alpha[l] * decay[l];
-  }
-  double *__restrict hh = h.data();
-  for (unsigned int i = 0; i < n; ++i)
-  {
-    double x = 0.;
-    for (unsigned int l = 0; l < L; ++l)
-      x += c[l] * ql[l][i];
-    hh[i] = x;
-  }
+  weighted_sum(c, h);
 }
 
 void MaxwellMemory::add_energies(Energies &e, const SparseMatrix<double> &K) const
@@ -137,12 +124,19 @@ void MaxwellMemory::set_memory(const std::vector<Vector<double>> &memory,
   branch_work = work;
 }
 
-HATI_AVX2_CLONES void MaxwellMemory::sum_branches()
+void MaxwellMemory::sum_branches()
 {
-  // (as S = 0, S.add(alpha_l, q_l) for each l, without the task scheduler of
-  // each deal.II vector operation: the superposition calls this every
-  // macro step)
-  const unsigned int n = S.size(), L = alpha.size();
+  // S = sum_l alpha_l q_l (the superposition changes q every macro step)
+  weighted_sum(alpha.data(), S);
+}
+
+HATI_AVX2_CLONES void MaxwellMemory::weighted_sum(const double *weight,
+                                                  Vector<double> &out) const
+{
+  // summed in the order of the branches, in one serial pass: the same sums
+  // as out = 0, out.add(weight_l, q_l) for each l, without the task
+  // scheduler of each deal.II vector operation
+  const unsigned int n = out.size(), L = alpha.size();
   AssertThrow(L <= 8, ExcMessage("MaxwellMemory: at most 8 branches"));
   const double *ql[8];
   for (unsigned int l = 0; l < L; ++l)
@@ -151,13 +145,13 @@ HATI_AVX2_CLONES void MaxwellMemory::sum_branches()
                 ExcMessage("MaxwellMemory: a branch's memory has the wrong size."));
     ql[l] = q[l].data();
   }
-  double *__restrict s = S.data();
+  double *__restrict o = out.data();
   for (unsigned int i = 0; i < n; ++i)
   {
     double x = 0.;
     for (unsigned int l = 0; l < L; ++l)
-      x += alpha[l] * ql[l][i];
-    s[i] = x;
+      x += weight[l] * ql[l][i];
+    o[i] = x;
   }
 }
 } // namespace hati

@@ -115,8 +115,10 @@ public:
   }
 
 private:
-  /** S = sum_l alpha_l q_l in one serial pass, summed in the branches' order. */
+  /** S = sum_l alpha_l q_l (weighted_sum()). */
   void sum_branches();
+  /** @p out = sum_l weight_l q_l, summed in the branches' order, in one pass. */
+  void weighted_sum(const double *weight, Vector<double> &out) const;
 
   std::vector<double> alpha, decay, gain;
   std::vector<Vector<double>> q;
