@@ -39,7 +39,7 @@ DenseColumns two_pieces(const unsigned int m,
   for (unsigned int j = 0; j < n; ++j)
     for (unsigned int i = 0; i < m; ++i)
       if ((j < split) == (i < row_split))
-        A(i, j) = value_of(i, j);
+        A.set(i, j, value_of(i, j));
   return A;
 }
 
@@ -76,7 +76,7 @@ HATI_UNIT_TEST(column_matrices)
     check(what + "skipping the zero rows changes no bit", difference, 0., 0.);
     // an entry set afterwards (row 0, last column: zero in both pieces'
     // layout) drops the lists: the product sees it
-    A(0, n - 1) = 2.;
+    A.set(0, n - 1, 2.);
     A.vmult(skipped, x);
     const double expected = full[0] + 2. * x[n - 1];
     check(what + "an entry set after skip_zero_rows() counts",
@@ -90,7 +90,7 @@ HATI_UNIT_TEST(column_matrices)
   B.reinit(9, 6);
   for (unsigned int j = 0; j < 6; ++j)
     for (unsigned int i = 0; i < 9; ++i)
-      B(i, j) = value_of(i, j);
+      B.set(i, j, value_of(i, j));
   Vector<double> y0(9), y1(9), x6(6);
   for (unsigned int j = 0; j < 6; ++j)
     x6[j] = 1. + j;

@@ -239,9 +239,14 @@ void HATICoupling::step()
   Clock::time_point start;
   if (timed)
     start = Clock::now();
+  // ends phase k on a timed macro step (seconds[k]; the next one starts)
+  const auto close_phase = [&](const unsigned int k)
+  {
+    if (timed)
+      seconds[k] += lap(start);
+  };
   implicit.free_step();
-  if (timed)
-    seconds[1] += lap(start);
+  close_phase(1);
 
   // (G2) the micro steps with the known part of the multiplier; with
   // contacts within reach of the ramp response, keep the state to redo them
@@ -250,8 +255,7 @@ void HATICoupling::step()
   if (record_contacts)
     explicit_integrator.save(snapshot);
   micro_steps(lambda_n, true);
-  if (timed)
-    seconds[0] += lap(start);
+  close_phase(0);
 
   // (G3') Lambda_{n+m} from the velocity continuity at t_{n+m}: the pass
   // ran with the guess Lambda_{n+m} = Lambda_n, the correction solves
@@ -265,8 +269,7 @@ void HATICoupling::step()
   interface->correction(ramp.H_inverse, increments.v_end, lambda_n, delta_lambda);
   for (unsigned int k = 0; k < lambda_m.size(); ++k)
     lambda_m[k] = lambda_n[k] + delta_lambda[k];
-  if (timed)
-    seconds[2] += lap(start);
+  close_phase(2);
 
   // the correction added by superposition, or the micro steps redone
   // friction within reach of the ramp (A9) is linear in the multiplier while
@@ -283,13 +286,11 @@ void HATICoupling::step()
     if (after_micro_step)
       for (unsigned int j = 0; j < n_recorded; ++j)
         after_micro_step(contact_record[j]);
-    if (timed)
-      seconds[3] += lap(start);
+    close_phase(3);
   }
   else
   {
-    if (timed)
-      seconds[3] += lap(start);
+    close_phase(3);
     const auto redo_start = Clock::now();
     redo_micro_steps(ramp.H_inverse);
     seconds[4] += seconds_since(redo_start);
@@ -303,8 +304,7 @@ void HATICoupling::step()
   for (unsigned int k = 0; k < interface->size(); ++k)
     interface_work += increments.increment_sum[k] * lambda_n[k] +
                       increments.increment_weighted[k] * (lambda_m[k] - lambda_n[k]);
-  if (timed)
-    seconds[2] += lap(start);
+  close_phase(2);
 
   // (G4) the implicit link with Lambda_{n+m}, its interface work
   // 1/2 dU_I . C_I^T (Lambda_n + Lambda_{n+m}) and the continuity check
@@ -312,8 +312,7 @@ void HATICoupling::step()
       implicit, lambda_n, lambda_m, increments.v_end, interface_work, max_jump);
   implicit.finish_step();
   lambda_n = lambda_m;
-  if (timed)
-    seconds[1] += lap(start);
+  close_phase(1);
 }
 
 void HATICoupling::broyden_step(const DenseColumns &H_inverse,

@@ -57,10 +57,10 @@ InterfaceProblem::InterfaceProblem(const Decomposition &decomposition,
     add_transpose(rows_I, e, b);
     implicit.solve_with_effective_matrix(x, b);
     for (unsigned int k = 0; k < n_gamma; ++k)
-      H_I(k, l) = gamma * DT * rows_I[k].apply(x);
+      H_I.set(k, l, gamma * DT * rows_I[k].apply(x));
     if (keep_columns)
       for (unsigned int i = 0; i < n_I; ++i)
-        link_columns(i, l) = x[i];
+        link_columns.set(i, l, x[i]);
   }
   H_I.skip_zero_rows();
   if (keep_columns)
@@ -80,7 +80,7 @@ void InterfaceProblem::invert(const FullMatrix<double> &H_E,
   H_inverse.reinit(n_gamma, n_gamma);
   for (unsigned int k = 0; k < n_gamma; ++k)
     for (unsigned int l = 0; l < n_gamma; ++l)
-      H_inverse(k, l) = H(k, l);
+      H_inverse.set(k, l, H(k, l));
   H_inverse.skip_zero_rows();
 }
 

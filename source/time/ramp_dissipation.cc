@@ -55,8 +55,10 @@ void RampSuperposition::store_dissipation(
         if (v == 0.)
           continue;
         for (unsigned int k = 0; k < n_gamma; ++k)
-          r.dissipation_quadratic(l, k) +=
-              reach_mass[i] * v * (damping_reach[j - 1](i, k) + damping_reach[j](i, k));
+          r.dissipation_quadratic.add(
+              l,
+              k,
+              reach_mass[i] * v * (damping_reach[j - 1](i, k) + damping_reach[j](i, k)));
       }
   r.dissipation_quadratic.skip_zero_rows();
 }

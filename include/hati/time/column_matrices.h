@@ -58,16 +58,21 @@ public:
     n_rows = m;
     n_columns = n;
     value.assign(std::size_t(m) * n, 0.);
-    pass_start.clear();
-    pass_range.clear();
+    drop_skip_lists();
   }
   /** Whether the matrix has no entries (never set up, or 0 rows or columns). */
   bool has_no_entries() const { return value.empty(); }
-  double &operator()(const unsigned int i, const unsigned int j)
+  /** A_ij = @p a (drops the lists of skip_zero_rows()). */
+  void set(const unsigned int i, const unsigned int j, const double a)
   {
-    pass_start.clear();
-    pass_range.clear();
-    return value[std::size_t(j) * n_rows + i];
+    drop_skip_lists();
+    value[std::size_t(j) * n_rows + i] = a;
+  }
+  /** A_ij += @p a (drops the lists of skip_zero_rows()). */
+  void add(const unsigned int i, const unsigned int j, const double a)
+  {
+    drop_skip_lists();
+    value[std::size_t(j) * n_rows + i] += a;
   }
   double operator()(const unsigned int i, const unsigned int j) const
   {
@@ -88,6 +93,11 @@ public:
   void skip_zero_rows();
 
 private:
+  void drop_skip_lists()
+  {
+    pass_start.clear();
+    pass_range.clear();
+  }
   unsigned int n_rows = 0, n_columns = 0;
   std::vector<double> value;
   // per pass of vmult(): the row ranges [begin, end) it visits,
