@@ -4,6 +4,7 @@
 #include <hati/time/maxwell_memory.h>
 
 #include <cmath>
+#include <string>
 
 namespace hati
 {
@@ -15,6 +16,10 @@ MaxwellMemory::MaxwellMemory(const MaxwellBranches &branches,
   AssertThrow(
       branches.alpha.size() == branches.tau.size(),
       ExcMessage("frequency-range damping: as many alpha_l as tau_l are needed."));
+  AssertThrow(branches.alpha.size() <= max_branches,
+              ExcMessage("frequency-range damping: at most " +
+                         std::to_string(max_branches) + " Maxwell branches, got " +
+                         std::to_string(branches.alpha.size()) + "."));
   for (unsigned int l = 0; l < alpha.size(); ++l)
   {
     AssertThrow(alpha[l] >= 0. && std::isfinite(alpha[l]) && tau[l] > 0. &&
@@ -59,10 +64,10 @@ HATI_AVX2_CLONES void MaxwellMemory::update(const Vector<double> &v)
   const unsigned int n = S.size(), L = alpha.size();
   const double *__restrict vv = v.data();
   double *__restrict s = S.data();
-  // one pass over the DoFs, the branches inside (at most 8): q_l and S
-  // stay in cache
-  double *ql[8];
-  double e[8], g[8], a[8];
+  // one pass over the DoFs, the branches inside (at most max_branches, the
+  // constructor): q_l and S stay in cache
+  double *ql[max_branches];
+  double e[max_branches], g[max_branches], a[max_branches];
   for (unsigned int l = 0; l < L; ++l)
   {
     ql[l] = q[l].data();
@@ -89,8 +94,7 @@ void MaxwellMemory::history(Vector<double> &h) const
   const unsigned int n = S.size(), L = alpha.size();
   if (h.size() != n)
     h.reinit(n, true);
-  AssertThrow(L <= 8, ExcMessage("MaxwellMemory: at most 8 branches"));
-  double c[8];
+  double c[max_branches];
   for (unsigned int l = 0; l < L; ++l)
     c[l] = alpha[l] * decay[l];
   weighted_sum(c, h);
@@ -119,6 +123,11 @@ void MaxwellMemory::set_memory(const std::vector<Vector<double>> &memory,
 {
   AssertThrow(memory.size() == q.size(),
               ExcMessage("MaxwellMemory::set_memory: wrong number of branches."));
+  for (unsigned int l = 0; l < q.size(); ++l)
+    AssertThrow(memory[l].size() == q[l].size(),
+                ExcMessage("MaxwellMemory::set_memory: a branch's memory has " +
+                           std::to_string(memory[l].size()) + " entries, expected " +
+                           std::to_string(q[l].size()) + "."));
   q = memory;
   sum_branches();
   branch_work = work;
@@ -137,12 +146,10 @@ HATI_AVX2_CLONES void MaxwellMemory::weighted_sum(const double *weight,
   // as out = 0, out.add(weight_l, q_l) for each l, without the task
   // scheduler of each deal.II vector operation
   const unsigned int n = out.size(), L = alpha.size();
-  AssertThrow(L <= 8, ExcMessage("MaxwellMemory: at most 8 branches"));
-  const double *ql[8];
+  const double *ql[max_branches];
   for (unsigned int l = 0; l < L; ++l)
   {
-    AssertThrow(q[l].size() == n,
-                ExcMessage("MaxwellMemory: a branch's memory has the wrong size."));
+    AssertDimension(q[l].size(), n);
     ql[l] = q[l].data();
   }
   double *__restrict o = out.data();

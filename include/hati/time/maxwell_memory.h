@@ -33,11 +33,15 @@ using namespace dealii;
 class MaxwellMemory
 {
 public:
+  /** The most branches one memory holds (the loops keep them on the stack). */
+  static constexpr unsigned int max_branches = 8;
+
   /** No branches: inactive. */
   MaxwellMemory() = default;
 
   /**
-   * The branches @p branches (at most 8, alpha_l >= 0, tau_l > 0 s) for the time step
+   * The branches @p branches (at most max_branches, alpha_l >= 0, tau_l > 0 s) for the
+   * time step
    * @p dt (s) on @p n_dofs DoFs, all memory variables zero (a relaxed
    * state). Without branches the object is inactive.
    */
