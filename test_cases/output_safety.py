@@ -29,7 +29,9 @@ directory.
   process may mount one; skipped with a message otherwise) end the run with
   a non-zero exit and one line naming the file and the system error; on
   the full disk every CSV ends on a whole line and summary.json says
-  "status": "failed" with that line's message."""
+  "status": "failed" with that line's message;
+- issue #59: a records/ or modal/ folder that is a symbolic link is refused
+  and its target stays empty."""
 import hashlib
 import itertools
 import concurrent.futures
@@ -450,4 +452,30 @@ else:
                        "No space left on device" in errors[0], "(exit %d) %s" % (p.returncode, errors))
     finally:
         subprocess.run(["umount", disk], capture_output=True)
+
+# issue #59, finding 4: a records/ (artificial records) or modal/ (a suite's
+# T1) that is a symbolic link is refused, its target untouched
+for sub, sets in (("records", ["Artificial records/Number=1", "Artificial records/Duration=6",
+                               "Artificial records/Strong motion=4",
+                               "Artificial records/Time step=0.01",
+                               "Artificial records/Components=X",
+                               "Suite/Records=artificial"]),
+                  ("modal", ["Suite/Scale factors=1, 2"])):
+    out = os.path.join(ctx.work, "linked_" + sub)
+    shutil.rmtree(out, ignore_errors=True)
+    victim = os.path.join(ctx.work, "victim_" + sub)
+    shutil.rmtree(victim, ignore_errors=True)
+    os.makedirs(out)
+    os.makedirs(victim)
+    os.symlink(victim, os.path.join(out, sub))
+    p = subprocess.run(command(out, ["Time integration/End time=0.05", "Output/Output interval=0",
+                                     "Design spectrum/Type=EC8 type 1",
+                                     "Design spectrum/Peak ground acceleration=3",
+                                     "Design spectrum/Period range=0.05, 1"] + sets,
+                               prm=ctx.prm("portal_frame_elcentro.prm")),
+                       capture_output=True, text=True, timeout=300, cwd=ctx.source,
+                       env=environment())
+    ctx.check_true("a linked %s/ refused naming it, its target empty" % sub,
+                   p.returncode != 0 and os.path.join(out, sub) + " is a symbolic link" in p.stderr
+                   and os.listdir(victim) == [], "(exit %d) %s" % (p.returncode, p.stderr.strip()[-300:]))
 ctx.finish()

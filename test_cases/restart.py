@@ -27,9 +27,16 @@ against the run from 0 to 1 s:
   masters), the balance closed;
 - the times of the restarted rows continue the record (t from 0.5 s), and
   a state of another model, past End time or truncated is refused with
-  the parameter and the file named."""
+  the parameter and the file named;
+- issue #59 (the 1D bar, 1 ms with a state at 0.5 ms): a state of another
+  Young's modulus is refused naming the entry and both moduli; a restart
+  into the state's own output folder is refused before it touches it (the
+  state stays byte for byte); a temporary `.state.bin.tmp` left by a
+  killed run is removed at the next run's start.
+(Every flipped byte, FIFOs, /dev/zero and directories: unit.state_file.)"""
 import csv
 import os
+import subprocess
 
 import numpy as np
 
@@ -139,4 +146,40 @@ for what, prm, sets, expected in (
     ctx.check_true("refused, %s: one line naming the file" % what,
                    p.returncode != 0 and expected in p.stderr and state in p.stderr
                    and "Analysis/Initial state file" in p.stderr, p.stderr.strip())
+
+# issue #59: the bar's state, refused for another E and in its own folder
+bar = ctx.prm("bar_impact_1d.prm")
+BAR = ["Output/Output interval=0", "Output/History interval=1e-5"]
+bar_first, _ = ctx.run(bar, "bar_first", BAR + ["Time integration/End time=5e-4",
+                                               "Output/State interval=2.5e-4"])
+bar_state = os.path.join(bar_first, "state.bin")
+with open(bar_state, "rb") as f:
+    bar_bytes = f.read()
+RESTART = BAR + ["Analysis/Initial state=file", "Analysis/Initial state file=" + bar_state]
+_, p = ctx.run(bar, "bar_other_E", RESTART + ["Model/Bar/Young's modulus=2.1e11"],
+               expect_failure=True)
+ctx.check_true("another Young's modulus refused naming it and both values",
+               p.returncode != 0 and "another model: Model/Bar/Young's modulus: '2e11' in "
+               "the state, '2.1e11' in this run" in p.stderr and bar_state in p.stderr,
+               p.stderr.strip())
+own = subprocess.run([ctx.hati, bar, "--set", "Output/Output directory=" + bar_first] +
+                     [a for x in RESTART for a in ("--set", x)],
+                     capture_output=True, text=True, timeout=300)
+with open(bar_state, "rb") as f:
+    kept = f.read() == bar_bytes
+ctx.check_true("a restart into the state's own folder refused, the state kept",
+               own.returncode != 0 and "inside this run's output folder" in own.stderr and
+               kept and os.path.exists(os.path.join(bar_first, "history.csv")),
+               own.stderr.strip())
+_, p = ctx.run(bar, "bar_restart", RESTART + ["Time integration/End time=1e-3"])
+ctx.check_true("the same state restarts elsewhere", p.returncode == 0, p.stderr[-300:])
+# a killed run's temporary, beside its whole state: gone at the next start
+stale = os.path.join(bar_first, ".state.bin.tmp")
+with open(stale, "wb") as f:
+    f.write(bar_bytes[:100])
+subprocess.run([ctx.hati, bar, "--set", "Output/Output directory=" + bar_first] +
+               [a for x in BAR + ["Time integration/End time=1e-4"] for a in ("--set", x)],
+               capture_output=True, text=True, timeout=300)
+ctx.check_true("a stale .state.bin.tmp removed at the next run's start",
+               not os.path.exists(stale))
 ctx.finish()

@@ -170,8 +170,7 @@ void check_suite_check()
   const std::vector<std::vector<double>> spectra = {
       {12., 9., 10., 11., 8.}, {10., 10., 9., 9., 10.}, {11., 9., 8., 10., 9.5}};
   // mean: 11, 9.3333, 9, 10, 9.1667; ratio min 0.9 at 0.6 s: passes (>= 0.9)
-  const auto pass =
-      check_component(periods, spectra, {3., 3.25, 3.5}, target, 3.2, "mean");
+  const auto pass = check_component(periods, spectra, {3., 3.25, 3.5}, target, 3.2);
   check("mean check: min ratio (hand: 0.9)", pass.min_ratio, 0.9, 1e-15);
   check("mean check: its period (hand: 0.6 s)", pass.period_of_min_ratio, 0.6, 0.);
   check("mean check: ratio at 1 s (hand: 27.5 / 30)", pass.ratio[4], 27.5 / 30., 1e-15);
@@ -181,18 +180,30 @@ void check_suite_check()
   // the third record at 0.6 s lower (8 -> 7.7): mean 8.9, ratio 0.89: fails
   auto lower = spectra;
   lower[2][2] = 7.7;
-  const auto fail = check_component(periods, lower, {3., 3.2, 3.3}, target, 3.2, "mean");
+  const auto fail = check_component(periods, lower, {3., 3.2, 3.3}, target, 3.2);
   check("lowered mean check: min ratio (hand: 0.89)", fail.min_ratio, 0.89, 1e-15);
   expect(!fail.passes_90_percent, "mean check at 0.89 fails");
   expect(!fail.pga_not_below_target, "mean PGA 3.1667 below 3.2");
-  // envelope of the lowered suite: 12, 10, 10, 11, 10: min ratio 1 at 0.4 s
-  const auto env =
-      check_component(periods, lower, {3., 3.2, 3.3}, target, 3.2, "envelope");
-  check("envelope check: min ratio (hand: 1.0)", env.min_ratio, 1., 1e-15);
-  check("envelope check: its period (hand: 0.4 s, first of the minima)",
-        env.period_of_min_ratio,
-        0.4,
-        0.);
+  expect(pass.passes() && pass.reasons().empty(),
+         "three records at 0.9: the component passes");
+  expect(!fail.passes() && fail.reasons().size() == 2,
+         "lowered: fails with two reasons (ratio, PGA)");
+  // the lowered suite's envelope (12, 10, 10, 11, 10) would pass at 1.0: EN
+  // 1998-1 3.2.3.1.2 checks the mean whatever the number of records, and the
+  // check has no other statistic to take
+  // two records (the first two: mean 11, 9.5, 9.5, 10, 9; min ratio 9 / 10
+  // at 1 s): the ratio passes, the count does not
+  const std::vector<std::vector<double>> two = {spectra[0], spectra[1]};
+  const auto few = check_component(periods, two, {3.3, 3.3}, target, 3.2);
+  check("two records: min ratio (hand: 0.9 at 1 s)", few.min_ratio, 0.9, 1e-15);
+  check("two records: its period", few.period_of_min_ratio, 1.0, 0.);
+  expect(few.passes_90_percent && few.pga_not_below_target,
+         "two records: ratio and PGA pass");
+  expect(few.n_records == 2 && !few.enough_records && !few.passes(),
+         "two records: refused its pass (EN 1998-1: at least 3)");
+  expect(few.reasons().size() == 1 &&
+             few.reasons()[0].find("at least 3") != std::string::npos,
+         "two records: the reason names the count");
 }
 } // namespace
 

@@ -310,6 +310,14 @@ std::string temporary_name(const std::string &name)
   return (p.parent_path() / ("." + p.filename().string() + ".tmp")).string();
 }
 
+void refuse_linked_folder(const std::string &path)
+{
+  struct stat status;
+  AssertThrow(::lstat(path.c_str(), &status) != 0 || !S_ISLNK(status.st_mode),
+              ExcMessage(path + " is a symbolic link: refused (a folder hati creates is "
+                                "never followed; remove the link)"));
+}
+
 void write_file_atomically(const std::string &filename,
                            const std::string &content,
                            const bool durable)

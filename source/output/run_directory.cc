@@ -157,11 +157,18 @@ void RunDirectory::begin()
                        folder.path_of(lock_name) +
                        "); wait for it to end or set another Output/Output directory");
 
-  // delete exactly the files the previous run listed, nothing else
+  // delete exactly the files the previous run listed and their temporaries
+  // (a run killed while it replaced one leaves `.<name>.tmp`), nothing else
   for (const std::string &name : previous_manifest(folder))
     if (!name.empty() && name != "." && name != ".." &&
         name.find('/') == std::string::npos && name != lock_name && name != manifest_name)
+    {
       folder.remove_regular_file(name);
+      folder.remove_regular_file(temporary_name(name));
+    }
+  // a state file's temporary whatever the manifest says (a run killed while
+  // its manifest line was being written)
+  folder.remove_regular_file(temporary_name("state.bin"));
   manifest = folder.create(manifest_name, O_APPEND);
 
   replace("parameters.prm", parameters, true);

@@ -80,6 +80,7 @@ Problem::Problem(ParameterHandler &prm, const ConditionalOStream &out) : out(out
               ExcMessage("Output/State interval: Method = event-driven writes no state "
                          "file (CD-Lagrange, Newmark and HATI do); set it to 0"));
   common_parameters.parse_parameters(prm);
+  model_identity(prm, state_identity);
   // the explicit scheme enforces ties and rigid links as bilateral rows; the
   // other analyses eliminate them (doc/theory.md 11.2)
   common_parameters.links_as_rows =
@@ -268,10 +269,9 @@ void Problem::set_file_initial_state()
   AssertThrow(time_parameters.method != "event-driven",
               ExcMessage("Analysis/Initial state = file: Method = event-driven starts "
                          "from t = 0 only; restart with CD-Lagrange, Newmark or HATI"));
-  const RunState state = read_state_file(analysis_parameters.initial_state_file,
-                                         system.n_dofs(),
-                                         model->description(),
-                                         parameter);
+  state_identity.model = model->description();
+  const RunState state = read_state_file(
+      analysis_parameters.initial_state_file, system.n_dofs(), state_identity, parameter);
   AssertThrow(state.time < time_parameters.end_time,
               ExcMessage(parameter + " = " +
                          printable(analysis_parameters.initial_state_file) +

@@ -56,6 +56,7 @@ void RecordGeneration::write() const
 {
   const auto start = std::chrono::steady_clock::now();
   const DesignSpectrum target(spectrum);
+  refuse_linked_folder(folder);
   std::error_code ec;
   std::filesystem::create_directories(folder, ec);
   AssertThrow(!ec,

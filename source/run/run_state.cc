@@ -1,10 +1,15 @@
+#include <deal.II/base/utilities.h>
+
 #include <hati/analysis/reduced_part.h>
+#include <hati/base/fnv_hash.h>
+#include <hati/base/input_file.h>
 #include <hati/run/problem.h>
 #include <hati/run/run_state.h>
 #include <hati/time/cd_lagrange.h>
 #include <hati/time/hati_coupling.h>
 #include <hati/time/newmark.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <iomanip>
 #include <sstream>
@@ -19,6 +24,8 @@ RunState current_run_state(const Integrator &integrator, const Problem &problem)
   RunState state;
   state.time = integrator.time();
   state.model = problem.model->description();
+  state.model_parameters = problem.state_identity.model_parameters;
+  state.model_files = problem.state_identity.model_files;
   state.displacement = integrator.displacement();
   if constexpr (std::is_same_v<Integrator, Newmark>)
   {
@@ -63,6 +70,65 @@ RunState current_run_state(const Integrator &integrator, const Problem &problem)
     }
   }
   return state;
+}
+
+void model_identity(const dealii::ParameterHandler &prm, RunState &identity)
+{
+  static const std::vector<std::string> left_out = {"Monitor nodes",
+                                                    "Section force members",
+                                                    "Solid cuts",
+                                                    "Damping type",
+                                                    "Damping ratio",
+                                                    "Damping band",
+                                                    "Initial velocity",
+                                                    "Initial height"};
+  std::ostringstream text;
+  prm.print_parameters(text, dealii::ParameterHandler::ShortPRM);
+  std::istringstream in(text.str());
+  std::vector<std::string> path;
+  std::string line;
+  identity.model_parameters.clear();
+  identity.model_files.clear();
+  while (std::getline(in, line))
+  {
+    const std::string t = dealii::Utilities::trim(line);
+    if (t.rfind("subsection ", 0) == 0)
+      path.push_back(dealii::Utilities::trim(t.substr(11)));
+    else if (t == "end" && !path.empty())
+      path.pop_back();
+    else if (t.rfind("set ", 0) == 0 && !path.empty() && path[0] == "Model" &&
+             !(path.size() > 1 && path[1] == "Decomposition"))
+    {
+      const auto equal = t.find('=');
+      const std::string entry = dealii::Utilities::trim(t.substr(4, equal - 4)),
+                        value = equal == std::string::npos
+                                    ? std::string()
+                                    : dealii::Utilities::trim(t.substr(equal + 1));
+      if (std::find(left_out.begin(), left_out.end(), entry) != left_out.end())
+        continue;
+      std::string where;
+      for (const auto &p : path)
+        where += p + "/";
+      where += entry;
+      identity.model_parameters.push_back(where + " = " + value);
+      // the mesh files it names
+      std::string words = value, f;
+      std::replace_if(
+          words.begin(),
+          words.end(),
+          [](const char c) { return c == ',' || c == ';'; },
+          ' ');
+      std::istringstream in_words(words);
+      while (in_words >> f)
+        if (f.size() > 4 && f.compare(f.size() - 4, 4, ".msh") == 0)
+        {
+          struct stat status;
+          const bool regular = ::stat(f.c_str(), &status) == 0 && S_ISREG(status.st_mode);
+          identity.model_files.push_back(where + " = " + f + ": " +
+                                         (regular ? file_digest(f) : "missing"));
+        }
+    }
+  }
 }
 
 std::string coupling_signature(const Decomposition &decomposition)

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <hati/base/fnv_hash.h>
 #include <hati/base/input_file.h>
 #include <hati/output/run_directory.h>
 #include <hati/run/simulation.h>
@@ -112,27 +113,7 @@ std::string input_digests(const ParameterHandler &prm)
     if (!get_value(prm, path, file) || Utilities::trim(file).empty())
       continue;
     file = Utilities::trim(file);
-    // FNV-1a, 64 bits: enough to see that a file changed
-    std::uint64_t hash = 0xcbf29ce484222325ULL;
-    std::uint64_t size = 0;
-    std::ifstream in(file, std::ios::binary);
-    char block[1 << 16];
-    while (in && (in.read(block, sizeof(block)), in.gcount() > 0))
-    {
-      for (std::streamsize i = 0; i < in.gcount(); ++i)
-      {
-        hash ^= static_cast<unsigned char>(block[i]);
-        hash *= 0x100000001b3ULL;
-      }
-      size += in.gcount();
-    }
-    char hex[17];
-    std::snprintf(hex, sizeof(hex), "%016llx", static_cast<unsigned long long>(hash));
-    text += path + " = " + file + ": " +
-            (in.bad() || !std::ifstream(file) ? std::string("missing")
-                                              : "fnv1a64 " + std::string(hex) + ", " +
-                                                    std::to_string(size) + " bytes") +
-            "\n";
+    text += path + " = " + file + ": " + file_digest(file) + "\n";
   }
   return text;
 }

@@ -118,15 +118,6 @@ const char *const suite_files[] = {"suite.csv",
 /** The lock of a suite's folder: a second suite there is refused. */
 const char *const suite_lock_name = ".hati-suite.lock";
 
-/** Throw the one-line refusal if @p path is a symbolic link (a member's folder). */
-void refuse_linked_folder(const std::string &path)
-{
-  struct stat status;
-  AssertThrow(::lstat(path.c_str(), &status) != 0 || !S_ISLNK(status.st_mode),
-              ExcMessage(path + " is a symbolic link: refused (a member's folder is "
-                                "never followed; remove the link)"));
-}
-
 } // namespace
 
 SuiteRunner::SuiteRunner(ParameterHandler &prm,
@@ -184,6 +175,7 @@ void SuiteRunner::find_fundamental_period()
   SuiteMember modal = members[0];
   modal.name = "modal";
   const std::string dir = folder + "/modal";
+  refuse_linked_folder(dir);
   modal.overrides.push_back("Analysis/Type=modal");
   modal.overrides.push_back("Output/Output directory=" + dir);
   ParameterHandler prm;
@@ -232,7 +224,6 @@ SummaryValue SuiteRunner::check_design_spectrum() const
                                                    base_scale * suite.scale_factors[0],
                                                    fundamental_period,
                                                    fundamental_period_source,
-                                                   suite.effective_statistic(),
                                                    csv,
                                                    std::cout);
   out.replace("design_spectrum_check.csv", csv, true);

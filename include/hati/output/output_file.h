@@ -140,6 +140,13 @@ void sync_file(const std::string &filename);
 /** The name of the temporary file of write_file_atomically() for @p name. */
 std::string temporary_name(const std::string &name);
 
+/**
+ * Throw the one-line refusal `<path> is a symbolic link: refused (...)` if
+ * @p path, a folder hati creates inside an output folder (a suite member's,
+ * `modal/`, `records/`), is a symbolic link: its target is never written.
+ */
+void refuse_linked_folder(const std::string &path);
+
 /** Write all of @p size bytes at @p data to @p fd; false (errno set) if that fails. */
 bool write_all(const int fd, const char *data, std::size_t size);
 

@@ -4,6 +4,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <string>
+#include <vector>
 
 namespace hati
 {
@@ -14,7 +15,8 @@ using namespace dealii;
  * (Output/State interval) and a run restarts from it (Analysis/Initial
  * state = file; doc/theory.md 1.1, "Restart"): the time, the displacement
  * and the velocity of every DoF of the whole model at that time, and what
- * identifies the model (its number of DoFs and its description).
+ * identifies the model (its number of DoFs, its description, its
+ * parameters and the digests of its mesh files).
  *
  * The velocity is the integer-time one: Newmark's `V_n`, CD-Lagrange's
  * `(V_{n-1/2} + V_{n+1/2}) / 2` (which holds half of the step's contact
@@ -30,6 +32,13 @@ struct RunState
   double time = 0.; ///< s
   /** Model::description() of the run that wrote the state. */
   std::string model;
+  /**
+   * The model's parameters as `Model/.../Entry = value` lines, those that
+   * make its mesh, DoFs, mass and stiffness (model_identity(): not the
+   * decomposition, the outputs, the damping or the initial conditions),
+   * and its mesh files as `<entry> = <file>: fnv1a64 <digest>, <n> bytes`.
+   */
+  std::vector<std::string> model_parameters, model_files;
   Vector<double> displacement; ///< m (rad for rotations), per DoF
   Vector<double> velocity;     ///< m/s (rad/s), per DoF
   /**
@@ -64,24 +73,30 @@ struct RunState
 std::string state_model_line(const std::string &description);
 
 /**
- * The bytes of `state.bin` for @p state: a text header (`hati state 1`,
- * `time`, `n_dofs`, `model`, with HATI's multiplier an `interface` line
- * with its size and signature, with HATI's implicit interface values an
- * `implicit_interface` line with their number, and `data`) and the
- * displacement, the velocity, the contact force, the multiplier and the
- * implicit interface values as native doubles.
+ * The bytes of `state.bin` for @p state: a text header (`hati state 2`, a
+ * `checksum` line with the FNV-1a digest of everything after it, `time`,
+ * `n_dofs`, `model`, `parameters <n>` and its n lines, `files <n>` and its
+ * n lines, with HATI's multiplier an `interface` line with its size and
+ * signature, with HATI's implicit interface values an `implicit_interface`
+ * line with their number, and `data`) and the displacement, the velocity,
+ * the contact force, the multiplier and the implicit interface values as
+ * native doubles.
  */
 std::string state_file_content(const RunState &state);
 
 /**
- * Read the state file @p path for a model of @p n_dofs DoFs described as
- * @p model. A missing or unreadable file, another format, another model
- * or number of DoFs, a truncated file or a value that is not finite is a
- * one-line message naming @p parameter and the file.
+ * Read the state file @p path for the model of @p expected (its number of
+ * DoFs, RunState::model, model_parameters and model_files; the vectors
+ * are not looked at). A missing file or one that is not a regular file
+ * (a FIFO, a device, a directory: refused before it is opened), another
+ * format, a checksum that does not match (any byte changed), another
+ * model (the first differing parameters or mesh files named, with both
+ * values), a truncated file or a value that is not finite is a one-line
+ * message naming @p parameter and the file.
  */
 RunState read_state_file(const std::string &path,
                          const unsigned int n_dofs,
-                         const std::string &model,
+                         const RunState &expected,
                          const std::string &parameter);
 } // namespace hati
 

@@ -8,6 +8,7 @@
 #include <hati/model/decomposition.h>
 #include <hati/model/discrete_system.h>
 #include <hati/model/model.h>
+#include <hati/output/state_file.h>
 #include <hati/parameters/run_parameters.h>
 #include <hati/time/damping.h>
 #include <hati/time/hati_coupling.h>
@@ -139,6 +140,12 @@ public:
   SummaryEntries initial_state_summary;
   /** The warnings of the run so far (warn()), in order. */
   std::vector<std::string> warnings;
+  /**
+   * What identifies the model in a state file (model_identity(): its
+   * parameters and mesh files; the vectors empty): written with every
+   * state, checked against a restart's.
+   */
+  RunState state_identity;
 
 private:
   /**

@@ -1,6 +1,8 @@
 #ifndef hati_run_run_state_h
 #define hati_run_run_state_h
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <hati/output/state_file.h>
 
 #include <string>
@@ -40,6 +42,20 @@ std::string coupling_signature(const Decomposition &decomposition);
  * RunState::implicit_interface holds their values.
  */
 std::vector<unsigned int> shared_implicit_dofs(const Decomposition &decomposition);
+
+/**
+ * What identifies the model of @p prm in a state file
+ * (RunState::model_parameters and model_files): every entry of
+ * `subsection Model` as `Model/.../Entry = value`, but for those a restart
+ * may change without changing the state's meaning: the decomposition
+ * (`Model/Decomposition`: a state restarts with another method), the
+ * outputs (`Monitor nodes`, `Section force members`, `Solid cuts`), the
+ * crane's damping (`Damping type`, `Damping ratio`, `Damping band`) and
+ * the initial conditions the state replaces (`Initial velocity`, `Initial
+ * height`); and the digest of every mesh file they name (a value or a
+ * comma-, semicolon- or space-separated word of one ending in `.msh`).
+ */
+void model_identity(const dealii::ParameterHandler &prm, RunState &identity);
 
 } // namespace hati
 
