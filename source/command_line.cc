@@ -207,6 +207,13 @@ int run_command_line(int argc, char **argv)
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
       return 0;
     simulation = std::make_unique<Simulation>(prm, file);
+    // a target that neither a suite's check nor artificial records take
+    if (!generation->active() &&
+        prm.get(std::vector<std::string>{"Design spectrum"}, "Type") != "none")
+      simulation->warn("subsection Design spectrum is ignored: a single run checks no "
+                       "spectrum (a subsection Suite with Records or Scale factors is "
+                       "checked against it, Artificial records/Number > 0 generates "
+                       "records that match it)");
     if (n_ranks > 1)
       simulation->warn(
           std::to_string(n_ranks) +

@@ -60,8 +60,11 @@ for index, name in enumerate(cases.sections()):
     missing = [f for f in lines(case, "contains") if f not in err]
     one_line = len(err.splitlines()) == 1 and err.startswith("hati: error:")
     untouched = case.get("touches output", "no") == "yes" or not os.path.exists(out)
-    ok = p.returncode == expected_exit and one_line and not missing and untouched
+    quick = "at most seconds" not in case or seconds <= float(case["at most seconds"])
+    ok = p.returncode == expected_exit and one_line and not missing and untouched and quick
     detail = "(exit %d, expected %d)" % (p.returncode, expected_exit)
+    if not quick:
+        detail += " slower than %s s" % case["at most seconds"]
     if missing:
         detail += " missing %s" % missing
     if not untouched:

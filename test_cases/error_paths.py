@@ -487,4 +487,33 @@ if summary and summary2:
                    name is not None and summary["contacts"][name]["peak_mean_force"]
                    == summary2["contacts"][name]["peak_mean_force"],
                    str(summary.get("contacts")))
+# --- issue #59, finding 8: entries that do not apply are never ignored
+# silently: one warning line each, in summary.json "warnings" too
+bar = ctx.prm("bar_impact_1d.prm")
+for what, prm, sets, fragment in (
+        ("Implicit reduction without HATI", bar,
+         ["Model/Decomposition/Implicit reduction=Craig-Bampton",
+          "Time integration/End time=1e-5"],
+         "Model/Decomposition/Implicit reduction = Craig-Bampton is ignored"),
+        ("Initial state = file in a static analysis (a missing file)",
+         ctx.prm("cantilever_static.prm"),
+         ["Analysis/Initial state=file", "Analysis/Initial state file=missing.bin"],
+         "Analysis/Initial state = file is ignored: a static analysis"),
+        ("State interval in a modal analysis", ctx.prm("cantilever_modal.prm"),
+         ["Output/State interval=0.1"], "Output/State interval is ignored: a modal"),
+        ("a Design spectrum with neither a suite nor records", bar,
+         ["Design spectrum/Type=EC8 type 1", "Design spectrum/Peak ground acceleration=3",
+          "Time integration/End time=1e-5"],
+         "subsection Design spectrum is ignored: a single run checks no spectrum"),
+        ("End carriage height with Eccentricities = false",
+         ctx.prm("bridge_crane_static.prm"),
+         ["Model/Bridge crane/Eccentricities=false",
+          "Model/Bridge crane/End carriage height=0.8"],
+         "Model/Bridge crane/End carriage height is ignored")):
+    rc, lines, summary, _ = run("ignored_" + what.split()[0], prm, *sets)
+    warned = [l for l in lines if l.startswith("hati: warning: ") and fragment in l]
+    ctx.check_true("%s: exit 0, one warning line, in summary.json" % what,
+                   rc == 0 and len(warned) == 1 and summary is not None and
+                   any(fragment in w for w in summary.get("warnings", [])),
+                   "(exit %d) %s" % (rc, lines[-3:]))
 ctx.finish()

@@ -137,6 +137,20 @@ void check_table()
         1e-12);
   check("table at a row", s(1., 2), 4., 1e-12);
   check("table zero-period value (first row)", s.zero_period_value(0), 2., 0.);
+  // issue #59: a byte-order mark without a header keeps its first row, and a
+  // '#' comment after a row is a comment
+  {
+    std::vector<double> x, y;
+    DesignSpectrum::read_table(table_file("bom",
+                                          "\xEF\xBB\xBF"
+                                          "0.01, 2\n0.1, 8 # plateau\n1, 4\n"),
+                               "Design spectrum/Table file",
+                               x,
+                               y);
+    expect(x.size() == 3 && x[0] == 0.01 && y[0] == 2. && y[1] == 8.,
+           "a table with a byte-order mark and no header: its 3 rows, the first kept, "
+           "'# plateau' after a row a comment");
+  }
   const std::pair<std::string, std::string> bad[] = {
       {"empty", "period, pseudo_acceleration\n"},
       {"unsorted", "0.1, 2\n0.5, 3\n0.3, 1\n"},

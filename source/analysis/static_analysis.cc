@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <sstream>
 
@@ -275,10 +276,12 @@ void solve_direct(const std::string &package,
 
 /**
  * K U = F by CG with Trilinos ML AMG (the rigid translations of the model as
- * its near null space) to `1e-12 ||F||`; throws if CG breaks down or does
- * not converge.
+ * its near null space) to `1e-12 ||F||`; throws if CG does not converge.
+ * Returns false if CG breaks down (a zero curvature p.K p = 0), which a
+ * singular K gives but also a solvable one whose AMG hierarchy is
+ * singular (solids tied to beams): the caller then asks the direct solver.
  */
-void solve_iterative(const DiscreteSystem &system,
+bool solve_iterative(const DiscreteSystem &system,
                      const SparseMatrix<double> &K,
                      const Vector<double> &F,
                      Vector<double> &U)
@@ -307,9 +310,9 @@ void solve_iterative(const DiscreteSystem &system,
   catch (const std::exception &)
   {
     // AztecOO reports a breakdown of CG (a zero curvature p.K p = 0)
-    AssertThrow(false,
-                ExcMessage(singular_message + " (CG + AMG broke down: p.K p = 0)."));
+    return false;
   }
+  return true;
 }
 
 /**
@@ -415,8 +418,16 @@ void solve_linear(const StaticSolve &s,
 
   if (s.linear_solver != "iterative")
     solve_direct(s.package, K, F, fixed, U, s.reusable);
-  else if (norm_F > 0.)
-    solve_iterative(s.system, K, F, U);
+  else if (norm_F > 0. && !solve_iterative(s.system, K, F, U))
+  {
+    // a breakdown is not a proof of singularity: the direct solver decides
+    // (its zero pivot is), and a solvable model is solved and said so
+    U = 0.;
+    solve_direct(s.package, K, F, fixed, U, nullptr);
+    std::cout << "  Linear solver = iterative: CG + AMG broke down (p.K p = 0) on a "
+                 "stiffness that is not singular; solved with "
+              << s.package << " instead" << std::endl;
+  }
 
   AssertThrow(std::isfinite(U.l2_norm()),
               ExcMessage(singular_message + " (the solution is not finite)."));

@@ -3,6 +3,7 @@
 #include <hati/base/messages.h>
 
 #include <cctype>
+#include <new>
 #include <sstream>
 
 namespace hati
@@ -18,6 +19,9 @@ std::string one_line_message(const std::exception &e)
     d->print_info(s);
     text = s.str();
   }
+  else if (dynamic_cast<const std::bad_alloc *>(&e) != nullptr)
+    text = "out of memory (std::bad_alloc): the run needs more memory than this "
+           "machine (or its memory limit) gives; reduce the model's size";
   else
     text = e.what();
   std::string r;

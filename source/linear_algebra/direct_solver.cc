@@ -9,9 +9,33 @@
 #include <hati/linear_algebra/symmetric_mumps.h>
 
 #include <chrono>
+#include <cstdlib>
+#include <new>
+#include <string>
 
 namespace hati
 {
+namespace
+{
+/**
+ * The one-line message of a factorisation that ran out of memory: MUMPS's
+ * INFOG(1) @p error and INFOG(2) @p detail (for -13 the size it asked for,
+ * in MB if negative), the matrix size @p n.
+ */
+std::string
+memory_failure_message(const std::size_t n, const int error, const long detail)
+{
+  std::string asked;
+  if (error == -13 && detail != 0)
+    asked = detail < 0 ? ", " + std::to_string(-detail) + " MB asked for"
+                       : ", " + std::to_string(detail) + " entries asked for";
+  return "the direct solver (MUMPS) ran out of memory factorising the matrix of " +
+         std::to_string(n) + " DoFs (INFOG(1) = " + std::to_string(error) + asked +
+         "): not a singular model, a model too large for this machine's memory; reduce "
+         "its cells or their degree";
+}
+} // namespace
+
 struct DirectSolver::Data
 {
   TrilinosWrappers::SparseMatrix matrix;
@@ -83,7 +107,12 @@ void DirectSolver::factorize(const SparseMatrix<double> &matrix,
     data->symmetric = std::make_unique<SymmetricMumps>();
     if (!data->symmetric->factorize(matrix))
     {
+      const int error = data->symmetric->error();
+      const long detail = data->symmetric->error_detail();
       data->symmetric.reset();
+      // memory is not singularity: MUMPS's own code said
+      AssertThrow(!SymmetricMumps::memory_error(error),
+                  ExcMessage(memory_failure_message(matrix.m(), error, detail)));
       AssertThrow(false, ExcMessage(failure));
     }
     seconds =
@@ -98,9 +127,20 @@ void DirectSolver::factorize(const SparseMatrix<double> &matrix,
   {
     data->solver->initialize(data->matrix);
   }
-  catch (const std::exception &)
+  catch (const std::bad_alloc &)
   {
     data->solver.reset();
+    AssertThrow(false, ExcMessage(memory_failure_message(matrix.m(), -13, 0)));
+  }
+  catch (const std::exception &e)
+  {
+    data->solver.reset();
+    // Amesos passes MUMPS's INFOG(1) on as its error number
+    const std::string what = e.what();
+    const auto at = what.find("error number ");
+    const int error = at == std::string::npos ? 0 : std::atoi(what.c_str() + at + 13);
+    AssertThrow(amesos_package != "Amesos_Mumps" || !SymmetricMumps::memory_error(error),
+                ExcMessage(memory_failure_message(matrix.m(), error, 0)));
     AssertThrow(false, ExcMessage(failure));
   }
   data->x.reinit(matrix.m());

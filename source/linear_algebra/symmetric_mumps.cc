@@ -33,6 +33,12 @@ bool workspace_too_small(const int error)
 }
 } // namespace
 
+bool SymmetricMumps::memory_error(const int error)
+{
+  return error == -7 || error == -13 || error == -19 || error == -11 ||
+         workspace_too_small(error);
+}
+
 bool is_symmetric(const SparseMatrix<double> &matrix)
 {
   if (matrix.m() != matrix.n())
@@ -108,6 +114,8 @@ bool SymmetricMumps::factorize(const SparseMatrix<double> &matrix)
   m.sym = 2; // general symmetric: L D L^T with 2x2 pivots (indefinite matrices too)
   m.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(MPI_COMM_SELF));
   dmumps_c(&m);
+  infog[0] = m.infog[0];
+  infog[1] = m.infog[1];
   if (m.infog[0] < 0)
     return false;
   data->initialised = true;
@@ -136,6 +144,8 @@ bool SymmetricMumps::factorize(const SparseMatrix<double> &matrix)
   m.irn = nullptr;
   m.jcn = nullptr;
   m.a = nullptr;
+  infog[0] = m.infog[0];
+  infog[1] = m.infog[1];
   return m.infog[0] >= 0;
 }
 

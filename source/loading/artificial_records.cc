@@ -100,9 +100,18 @@ void ArtificialRecordParameters::parse_parameters(ParameterHandler &prm)
               ExcMessage(head + "Strong motion: " + number_text(strong_motion) +
                          ": 0 < strong motion <= Duration (" + number_text(duration) +
                          " s) is expected"));
-  AssertThrow(time_step > 0. && time_step <= 0.1 && duration / time_step <= 1e7,
+  AssertThrow(time_step > 0. && time_step <= 0.1,
               ExcMessage(head + "Time step: " + number_text(time_step) +
-                         ": 0 < dt <= 0.1 s with at most 1e7 samples is expected"));
+                         ": 0 < dt <= 0.1 s is expected"));
+  AssertThrow(duration / time_step <= max_record_samples,
+              ExcMessage(head + "Time step: " + number_text(time_step) + " s over the " +
+                         number_text(duration) + " s Duration gives " +
+                         number_text(duration / time_step) +
+                         " samples a record, more than the " +
+                         number_text(max_record_samples) +
+                         " the matching affords (about 0.3 ms a sample: half a minute a "
+                         "record at the bound); a larger Time step or a shorter Duration "
+                         "is expected"));
   AssertThrow(matching_tolerance > 0.,
               ExcMessage(head + "Matching tolerance: " + number_text(matching_tolerance) +
                          ": a tolerance > 0 is "

@@ -248,8 +248,12 @@ void DesignSpectrum::read_table(const std::string &file,
   while (std::getline(in, line))
   {
     ++n;
-    const std::string text = Utilities::trim(line);
-    if (text.empty() || text[0] == '#')
+    // a UTF-8 byte-order mark (a spreadsheet's export) is not part of the row
+    if (n == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0)
+      line.erase(0, 3);
+    // a '#' comment, a whole line or after a row
+    const std::string text = Utilities::trim(line.substr(0, line.find('#')));
+    if (text.empty())
       continue;
     const std::string at =
         entry + ": spectrum table '" + file + "', line " + std::to_string(n) + ": ";

@@ -35,7 +35,8 @@ void BridgeCrane::Parameters::declare_heights(ParameterHandler &prm)
       "0.5",
       Patterns::Double(),
       "Eccentricities = true: height of the end carriages' axis (and of the girder "
-      "axes joined to them) above the runway rail head (m), > 0 and at most 20 m. "
+      "axes joined to them) above the runway rail head (m), from 0.05 m (a wheel's "
+      "radius at least; a shorter post would make the explicit step vanish) to 20 m. "
       "Default 0.5 m: the wheel's radius (about 0.2 m for a 20 t crane) plus half an "
       "end carriage 0.5 m deep (doc/crane_data.md section 3, estimate).");
 }
@@ -44,11 +45,13 @@ void BridgeCrane::Parameters::parse_heights(ParameterHandler &prm)
 {
   eccentricities = prm.get_bool("Eccentricities");
   end_carriage_height = prm.get_double("End carriage height");
-  if (!(end_carriage_height > 0. && end_carriage_height <= 20.))
+  if (!(end_carriage_height >= 0.05 && end_carriage_height <= 20.))
   {
     std::ostringstream m;
     m << bridge_crane_where << "End carriage height: expected a height above the rail "
-      << "head > 0 and at most 20 m, got " << prm.get("End carriage height") << " m";
+      << "head from 0.05 m (a wheel's radius at least: a shorter post stiffens the "
+      << "explicit step to nothing) to 20 m, got " << prm.get("End carriage height")
+      << " m";
     AssertThrow(false, ExcMessage(m.str()));
   }
 }

@@ -356,7 +356,7 @@ void validate_solids(const FrameDescription &d, const std::set<std::string> &use
                   "material",
                   "Materials");
   }
-  std::set<std::string> fixed, bound;
+  std::set<std::string> fixed, bound, tie_names, link_names;
   for (const auto &s : d.supports)
     for (const double k : s.stiffness)
       if (k == 0.)
@@ -364,6 +364,8 @@ void validate_solids(const FrameDescription &d, const std::set<std::string> &use
   for (const auto &t : S.ties)
   {
     check_name(t.name, "Model/Frame/Ties", "tie");
+    require(
+        tie_names.insert(t.name).second, "Ties", "tie '" + t.name + "' is defined twice");
     require_known(used_nodes, t.node, "Ties", "tie '" + t.name + "'", "node", "Members");
     require_known(
         solids, t.face.solid, "Ties", "tie '" + t.name + "'", "solid", "Solids");
@@ -402,6 +404,7 @@ void validate_solids(const FrameDescription &d, const std::set<std::string> &use
   {
     check_name(l.name, "Model/Frame/Rigid links", "rigid link");
     const std::string who = "rigid link '" + l.name + "'";
+    require(link_names.insert(l.name).second, "Rigid links", who + " is defined twice");
     require_known(used_nodes, l.master, "Rigid links", who, "node", "Members");
     require_known(used_nodes, l.slave, "Rigid links", who, "node", "Members");
     require(l.master != l.slave, "Rigid links", who + ": master and slave are one node");

@@ -198,6 +198,17 @@ private:
     }
   }
 
+  /** A node's coordinates, refused (file and line) beyond max_file_coordinate. */
+  Point<3> checked_point(const double x, const double y, const double z) const
+  {
+    for (const double c : {x, y, z})
+      AssertThrow(std::isfinite(c) && std::abs(c) <= max_file_coordinate,
+                  ExcMessage(r.where() +
+                             "a node coordinate is out of range (|x| <= 1e6 m "
+                             "expected)"));
+    return Point<3>(x, y, z);
+  }
+
   void read_nodes()
   {
     if (version < 4.)
@@ -207,7 +218,7 @@ private:
       {
         const auto v = r.numbers(4);
         node_coordinates[r.integer(v[0], 0, max_file_count, "the node tag")] =
-            Point<3>(v[1], v[2], v[3]);
+            checked_point(v[1], v[2], v[3]);
       }
       return;
     }
@@ -225,7 +236,7 @@ private:
       for (long i = 0; i < n; ++i)
       {
         const auto x = r.numbers(3);
-        node_coordinates[tags[i]] = Point<3>(x[0], x[1], x[2]);
+        node_coordinates[tags[i]] = checked_point(x[0], x[1], x[2]);
       }
     }
   }

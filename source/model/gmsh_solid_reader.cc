@@ -159,6 +159,10 @@ void HexahedronReader::read_nodes()
   {
     if (!(std::isfinite(x[k]) && std::isfinite(x[k + 1]) && std::isfinite(x[k + 2])))
       fail("the coordinates of node " + std::to_string(tag) + " are not finite");
+    for (unsigned int d = 0; d < 3; ++d)
+      if (std::abs(x[k + d]) > max_file_coordinate)
+        fail("the coordinates of node " + std::to_string(tag) +
+             " are out of range (|x| <= 1e6 m expected)");
     if (!vertex_index.emplace(tag, vertices.size()).second)
       fail("node " + std::to_string(tag) + " is defined twice");
     vertices.emplace_back(x[k], x[k + 1], x[k + 2]);

@@ -67,13 +67,32 @@ void axial_steps(const SolidItem &s,
   }
 }
 
-void create_box(const SolidItem &s, Triangulation<3> &t)
+/**
+ * Refuse a solid of @p n_cells cells of @p size (DoFs, nonzeros) at degree
+ * @p degree that would not fit in memory with its factorisation.
+ */
+void check_solid_memory(const SolidItem &s,
+                        const double n_cells,
+                        const HexahedraSize &size,
+                        const unsigned int degree)
 {
   check_memory_estimate(where(s),
-                        double(s.cells[0]) * s.cells[1] * s.cells[2],
-                        81. * (s.cells[0] + 1.) * (s.cells[1] + 1.) * (s.cells[2] + 1.),
-                        81. * 27. * (s.cells[0] + 1.) * (s.cells[1] + 1.) *
-                            (s.cells[2] + 1.));
+                        n_cells,
+                        size.n_dofs,
+                        size.n_nonzeros,
+                        factorization_memory(size.n_dofs, degree),
+                        "its cells or their degree (now " + std::to_string(degree) +
+                            ": Model/Frame/Solid element degree, the crane's Girder "
+                            "element size and Girder element degree)");
+}
+
+void create_box(const SolidItem &s, const unsigned int degree, Triangulation<3> &t)
+{
+  check_solid_memory(
+      s,
+      double(s.cells[0]) * s.cells[1] * s.cells[2],
+      box_size({double(s.cells[0]), double(s.cells[1]), double(s.cells[2])}, degree),
+      degree);
   GridGenerator::subdivided_hyper_rectangle(
       t, std::vector<unsigned int>(s.cells.begin(), s.cells.end()), s.x0, s.x1);
 }
@@ -96,11 +115,11 @@ double girder_cells_bound(const SolidItem &s, const double length)
          across(s.height - 2. * s.flange_thickness);
 }
 
-void create_box_girder(const SolidItem &s, Triangulation<3> &t)
+void create_box_girder(const SolidItem &s, const unsigned int degree, Triangulation<3> &t)
 {
   const double length = s.x0.distance(s.x1);
   const double bound = girder_cells_bound(s, length);
-  check_memory_estimate(where(s), bound, 81. * bound, 81. * 27. * bound);
+  check_solid_memory(s, bound, hexahedra_size(bound, degree), degree);
   std::vector<std::vector<double>> steps(3);
   std::vector<bool> diaphragm;
   axial_steps(s, length, steps[0], diaphragm);
@@ -112,7 +131,7 @@ void create_box_girder(const SolidItem &s, Triangulation<3> &t)
   add_steps(steps[2], s.height - 2. * tf, s.element_size);
   steps[2].push_back(tf);
   const double n_cells = double(steps[0].size()) * steps[1].size() * steps[2].size();
-  check_memory_estimate(where(s), n_cells, 81. * n_cells, 81. * 27. * n_cells);
+  check_solid_memory(s, n_cells, hexahedra_size(n_cells, degree), degree);
 
   Triangulation<3> block;
   GridGenerator::subdivided_hyper_rectangle(
@@ -187,14 +206,14 @@ void create_solid_mesh(const SolidDescription &description,
     const SolidItem &s = description.solids[k];
     Triangulation<3> part;
     if (s.kind == "box")
-      create_box(s, part);
+      create_box(s, description.degree, part);
     else if (s.kind == "box girder")
-      create_box_girder(s, part);
+      create_box_girder(s, description.degree, part);
     else
     {
       read_gmsh_hexahedra(s.file, where(s), part);
       const double n = part.n_active_cells();
-      check_memory_estimate(where(s), n, 81. * n, 81. * 27. * n);
+      check_solid_memory(s, n, hexahedra_size(n, description.degree), description.degree);
     }
     for (const auto &cell : part.active_cell_iterators())
       cell->set_material_id(k);

@@ -10,6 +10,7 @@
 #include <hati/output/response_spectra.h>
 #include <hati/output/state_file.h>
 #include <hati/run/analysis_registry.h>
+#include <hati/run/entry_warnings.h>
 #include <hati/run/problem.h>
 #include <hati/run/run_state.h>
 #include <hati/run/run_tools.h>
@@ -86,6 +87,7 @@ Problem::Problem(ParameterHandler &prm, const ConditionalOStream &out) : out(out
   common_parameters.links_as_rows =
       analysis_parameters.type == "transient" && time_parameters.method == "CD-Lagrange";
   model = create_model(prm);
+  warn_inapplicable_entries(prm, *this);
 }
 
 void Problem::build_system()

@@ -6,7 +6,9 @@
 #include <hati/output/response_spectrum.h>
 #include <hati/run/record_generation.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -22,6 +24,14 @@ RecordGeneration::RecordGeneration(ParameterHandler &prm,
   AssertThrow(!active() || spectrum.active(),
               ExcMessage("Artificial records/Number: " + std::to_string(records.number) +
                          " records need a target: Design spectrum/Type is none"));
+  // the shortest period of the matching needs two samples a period
+  AssertThrow(
+      !active() || records.time_step <= 0.5 * spectrum.period_range[0],
+      ExcMessage("Artificial records/Time step: " + shortest_number(records.time_step) +
+                 " s cannot hold the Design spectrum's shortest period " +
+                 shortest_number(spectrum.period_range[0]) +
+                 " s (Period range): a Time step of at most half of it, " +
+                 shortest_number(0.5 * spectrum.period_range[0]) + " s, is expected"));
   std::string out = prm.get(std::vector<std::string>{"Output"}, "Output directory");
   if (out.empty())
     out = "output/" + std::filesystem::path(parameter_file).stem().string();
@@ -66,7 +76,12 @@ void RecordGeneration::write() const
   std::cout << "hati: artificial records: " << records.number << " x "
             << records.components.size() << " components against "
             << target.description(0) << " (seed " << records.seed << ", "
-            << records.duration << " s at " << records.time_step << " s)\n"
+            << records.duration << " s at " << records.time_step
+            << " s: " << std::lround(records.duration / records.time_step)
+            << " samples a record, about " << std::setprecision(2)
+            << std::max(0.1,
+                        seconds_per_record_sample * records.duration / records.time_step)
+            << std::setprecision(6) << " s each)\n"
             << "  record  axis  PGA (m/s^2)  target   max deviation  iterations  draws"
             << std::endl;
   const std::vector<double> periods = matching_periods(target);

@@ -509,7 +509,10 @@ int SuiteRunner::finish(std::vector<MemberResult> &results, const double wall_ti
     catch (const std::exception &e)
     {
       check_error = one_line_message(e);
-      std::cerr << "hati: error: suite: design spectrum check: " << check_error
+      // (the check's own messages start with its name)
+      const std::string prefix = "design spectrum check: ";
+      std::cerr << "hati: error: suite: "
+                << (check_error.rfind(prefix, 0) == 0 ? "" : prefix) << check_error
                 << std::endl;
     }
   out.replace("suite.csv", statistics.csv(), true);

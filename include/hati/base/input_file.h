@@ -14,6 +14,10 @@ namespace hati
 /** The largest count or tag accepted from a mesh file (Gmsh): a guard
  * against absurd values, which are refused with the entry named. */
 constexpr long max_file_count = 1000000000000L;
+/** The largest coordinate accepted from a mesh file (m): a structure is
+ * smaller than 1000 km; beyond, the geometry's round-off would make its
+ * matrices singular, so it is refused as out of range with file and line. */
+constexpr double max_file_coordinate = 1e6;
 
 /**
  * Check, with stat() and without opening it, that @p path names a regular

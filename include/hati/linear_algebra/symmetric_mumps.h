@@ -59,10 +59,23 @@ public:
   /** The size of the factorised matrix. */
   unsigned int size() const { return n; }
 
+  /** MUMPS's INFOG(1) and INFOG(2) of the last call (0: no error). */
+  int error() const { return infog[0]; }
+  long error_detail() const { return infog[1]; }
+
+  /**
+   * Whether MUMPS's INFOG(1) @p error says memory, not the matrix: an
+   * allocation that failed (-7, -13, -19) or a workspace still too small
+   * after factorize() doubled it four times (-8, -9, -11, -14, -15, -17,
+   * -20).
+   */
+  static bool memory_error(const int error);
+
 private:
   struct Data;
   std::unique_ptr<Data> data;
   unsigned int n = 0;
+  int infog[2] = {0, 0};
 };
 
 } // namespace hati

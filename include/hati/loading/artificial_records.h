@@ -17,6 +17,15 @@ class DesignSpectrum;
 constexpr unsigned int max_artificial_records = 1000;
 /** Draws of phases per record, and corrections per draw, before a record is refused. */
 constexpr unsigned int max_matching_attempts = 12, max_matching_iterations = 60;
+/**
+ * The most samples a record may have (Duration / Time step): the matching
+ * costs about 0.3 ms and a few kB a sample (measured: 6 s at 0.000625 s,
+ * 9,600 samples, 3 s; 6e5 samples ran past 90 s, 6e6 reached
+ * std::bad_alloc), so a record at the bound takes about half a minute.
+ */
+constexpr double max_record_samples = 1e5;
+/** The matching's measured cost per sample of a record, all its corrections (s). */
+constexpr double seconds_per_record_sample = 3e-4;
 
 /**
  * `subsection Artificial records` (doc/user_guide.md, "Qualifying against

@@ -23,14 +23,18 @@ estimated_memory(const double n_cells, const double n_dofs, const double n_nonze
 double available_memory();
 
 /**
- * Refuse a model whose estimated_memory() exceeds available_memory(), with
- * a one-line message naming @p entry (the parameter that sets the size) and
- * both numbers.
+ * Refuse a model whose estimated_memory() plus @p factorization (bytes, the
+ * direct solver's factor: factorization_memory(); 0 if none is estimated)
+ * exceeds available_memory(), with a one-line message naming @p entry (the
+ * parameter that sets the size), the figures and what to reduce
+ * (@p remedy; empty: @p entry).
  */
 void check_memory_estimate(const std::string &entry,
                            const double n_cells,
                            const double n_dofs,
-                           const double n_nonzeros);
+                           const double n_nonzeros,
+                           const double factorization = 0.,
+                           const std::string &remedy = "");
 
 /** DoFs and stiffness nonzeros of a mesh of hexahedra (hexahedra_size()). */
 struct HexahedraSize
