@@ -158,4 +158,16 @@ for tag, sets, expected in [
     ctx.check_true("refusal (%s): one line" % tag,
                    p.returncode == 1 and len(lines) == 1 and lines[0].startswith(expected),
                    repr(p.stderr.strip()))
+# issue #59, finding 9: an element whose every DoF is held (the arm clamped
+# at both ends, one element) never vibrates and is left out of the critical
+# step: the rope on its fixed hook sets it, dt_crit = 2 / sqrt(k / m) =
+# 2 / sqrt(1e7 / 1000) = 0.02 s (hand; the arm gave 1.9e-4 s before)
+import re
+_, p = ctx.run(ctx.prm("rope_pendulum.prm"), "clamped_arm", [
+    "Analysis/Type=transient", "Model/Frame/Supports=base: clamped; hook: clamped",
+    "Model/Frame/Members=arm: base, hook, arm, steel, 1", "Time integration/End time=0.01",
+    "Time integration/Time step=1e-3"])
+m = re.search(r"dt_crit = ([0-9.e+-]+) s", p.stdout)
+ctx.check("clamped arm: dt_crit from the rope alone (s)", float(m.group(1)) if m else math.nan,
+          2 / math.sqrt(1e7 / 1000), rel=1e-3)
 ctx.finish()

@@ -184,4 +184,23 @@ damaged("cut_short", lambda l: l.__delitem__(slice(hexes + 3, None)),
         "unexpected end of the file")
 damaged("twice", lambda l: l.__setitem__(hexes + 2, "6 " + " ".join(l[hexes + 1].split()[1:])),
         "has the same eight nodes as an earlier one")
+
+# issue #59, finding 5: solids stay apart unless a tie joins them. A box
+# sharing the prism's face x = 2 keeps its own DoFs there: 3 (9 x 5 x 5) +
+# 3 (5 x 5 x 5) = 1050 solid DoFs (merged: 975), and the prism's tie on that
+# face still finds the prism's own face; an overlapping box is refused
+import subprocess as _sp
+two = ("prism: box, 0, -0.2, -0.15, 2, 0.2, 0.15, 4, 2, 2, steel; "
+       "p2: box, 2, -0.2, -0.15, 3, 0.2, 0.15, 2, 2, 2, steel")
+out, p = ctx.run(prm, "shared_face", ["Analysis/Type=static", "Model/Frame/Solids=" + two,
+                                      "Model/Frame/Solid supports=p2: x=3"])
+ctx.check_true("two boxes sharing a face: 1050 solid DoFs (kept apart)",
+               "2 solids: 24 hexahedra of degree 2, 1050 DoFs" in p.stdout, p.stdout[:600])
+over = ("prism: box, 0, -0.2, -0.15, 2, 0.2, 0.15, 4, 2, 2, steel; "
+        "p2: box, 1, -0.2, -0.15, 3, 0.2, 0.15, 2, 1, 1, steel")
+out, p = ctx.run(prm, "overlap", ["Analysis/Type=static", "Model/Frame/Solids=" + over],
+                 expect_failure=True)
+ctx.check_true("overlapping solids refused in one line",
+               p.returncode == 1 and "solid 'p2' overlaps solid 'prism'" in p.stderr,
+               p.stderr.strip())
 ctx.finish()

@@ -225,6 +225,37 @@ HATI_UNIT_TEST(lcp_solver)
     expect(v < 1e-9 * q.linfty_norm(),
            "dependent equalities: conditions " + sci(v / q.linfty_norm()));
   }
+  // issue #59: redundant contacts in a cluster of 4 to 12 (the enumeration
+  // tests each set's regularity itself; FullMatrix::invert() does not in
+  // Release): two wheels' rows on one node of inverse mass 1, the second a
+  // copy of the first perturbed at round-off, plus four single rows; every
+  // row closing at -1 m/s. Reference: the conditions themselves and the
+  // total impulse on the doubled node, 1 (its velocity stopped)
+  for (const double perturbation : {0., 1e-15, 1e-13})
+  {
+    FullMatrix<double> L(6, 5);
+    L(0, 0) = 1.;
+    L(1, 0) = 1. + perturbation;
+    for (unsigned int i = 2; i < 6; ++i)
+      L(i, i - 1) = 1.;
+    FullMatrix<double> W(6, 6);
+    for (unsigned int i = 0; i < 6; ++i)
+      for (unsigned int j = 0; j < 6; ++j)
+        for (unsigned int d = 0; d < 5; ++d)
+          W(i, j) += L(i, d) * L(j, d);
+    Vector<double> q(6);
+    for (unsigned int i = 0; i < 6; ++i)
+      q[i] = -1.;
+    const Vector<double> l = hati::solve_lcp(W, q);
+    bool finite = true;
+    for (const double x : l)
+      finite = finite && std::isfinite(x) && std::abs(x) < 10.;
+    const double stopped = l[0] + (1. + perturbation) * l[1];
+    expect(finite && violation(W, q, l) < 1e-9 && std::abs(stopped - 1.) < 1e-9,
+           "redundant rows in a cluster of 6, perturbation " + sci(perturbation) +
+               ": complementary, bounded, the doubled node stopped (" +
+               sci(std::abs(stopped - 1.)) + ")");
+  }
   std::cout << (failures ? "FAILED" : "all checks passed") << std::endl;
   return failures ? 1 : 0;
 }

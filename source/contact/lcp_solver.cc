@@ -14,6 +14,41 @@ namespace hati
 {
 namespace
 {
+/**
+ * Whether the square matrix @p A (n <= 12) is regular: Gaussian elimination
+ * with partial pivoting on a copy, every pivot above 1e-12 of the largest
+ * diagonal entry @p wmax. FullMatrix::invert() checks nothing in Release
+ * (a singular set of 4 to 12 contacts gave huge or non-finite values), so
+ * the enumeration asks this first; the inverse itself is still invert()'s.
+ */
+bool regular(const FullMatrix<double> &A, const double wmax)
+{
+  const unsigned int n = A.m();
+  std::array<double, 144> a;
+  for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int j = 0; j < n; ++j)
+      a[i * n + j] = A(i, j);
+  for (unsigned int k = 0; k < n; ++k)
+  {
+    unsigned int p = k;
+    for (unsigned int i = k + 1; i < n; ++i)
+      if (std::abs(a[i * n + k]) > std::abs(a[p * n + k]))
+        p = i;
+    if (!(std::abs(a[p * n + k]) > 1e-12 * wmax))
+      return false;
+    if (p != k)
+      for (unsigned int j = 0; j < n; ++j)
+        std::swap(a[k * n + j], a[p * n + j]);
+    for (unsigned int i = k + 1; i < n; ++i)
+    {
+      const double f = a[i * n + k] / a[k * n + k];
+      for (unsigned int j = k; j < n; ++j)
+        a[i * n + j] -= f * a[k * n + j];
+    }
+  }
+  return true;
+}
+
 /** Exact enumeration of the 2^n active sets (n <= 12). */
 bool enumerate(const FullMatrix<double> &W,
                const Vector<double> &q,
@@ -82,8 +117,10 @@ bool enumerate(const FullMatrix<double> &W,
         wmax = std::max(wmax, std::abs(Wss(a, a)));
       if (wmax == 0.)
         continue;
-      const double det = Wss.determinant();
-      if (set_size <= 3 && std::abs(det) < 1e-14 * std::pow(wmax, set_size))
+      // (FullMatrix::determinant() is exact up to 3 x 3 only)
+      if (set_size <= 3 && std::abs(Wss.determinant()) < 1e-14 * std::pow(wmax, set_size))
+        continue;
+      if (set_size > 3 && !regular(Wss, wmax))
         continue;
       FullMatrix<double> &inv = inv_of_size[set_size];
       try

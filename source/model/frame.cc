@@ -444,10 +444,20 @@ void Frame::assemble_cells(const std::vector<bool> &excited,
     if (restricted && excited[info.member])
       constraints.distribute_local_to_global(
           lumped_cell, dofs, system.excited_lumped_mass);
-    omega2 =
-        std::max(omega2,
-                 element_omega_squared(
-                     kg, std::vector<double>(lumped_cell.begin(), lumped_cell.end())));
+    // an element whose every DoF is held at zero (a support; not the
+    // slaves of a link, which move) never vibrates: left out of the bound
+    bool clamped = true;
+    for (const auto i : info.dofs)
+    {
+      const auto *entries = constraints.get_constraint_entries(i);
+      clamped = clamped && constraints.is_constrained(i) &&
+                (entries == nullptr || entries->empty());
+    }
+    if (!clamped)
+      omega2 =
+          std::max(omega2,
+                   element_omega_squared(
+                       kg, std::vector<double>(lumped_cell.begin(), lumped_cell.end())));
     mass += material.rho * section.A * info.length;
   }
 }

@@ -198,6 +198,50 @@ bool in_box_girder_hollow(const SolidItem &s, const Point<3> &x, const double to
          std::abs(local[2]) < 0.5 * s.height - s.flange_thickness - tolerance;
 }
 
+namespace
+{
+/**
+ * Refuse the solid @p s (its mesh @p part) if a cell of it overlaps a cell
+ * of the solids before it (@p earlier): a cell centre of one strictly
+ * inside a cell of the other. Solids that only touch (a shared face) pass.
+ */
+void refuse_overlap(const SolidDescription &description,
+                    const Triangulation<3> &earlier,
+                    const Triangulation<3> &part,
+                    const SolidItem &s)
+{
+  const auto a = GridTools::compute_bounding_box(earlier),
+             b = GridTools::compute_bounding_box(part);
+  const double size = std::max(a.side_length(0) + a.side_length(1) + a.side_length(2),
+                               b.side_length(0) + b.side_length(1) + b.side_length(2));
+  for (unsigned int d = 0; d < 3; ++d)
+    if (std::min(a.get_boundary_points().second[d], b.get_boundary_points().second[d]) -
+            std::max(a.get_boundary_points().first[d],
+                     b.get_boundary_points().first[d]) <=
+        1e-9 * size)
+      return; // bounding boxes that at most touch
+  const auto inside = [](const Triangulation<3> &t, const Point<3> &x)
+  {
+    for (const auto &cell : t.active_cell_iterators())
+      if (cell->bounding_box().point_inside(x) && cell->point_inside(x))
+        return cell->material_id();
+    return numbers::invalid_material_id;
+  };
+  const auto report = [&](const types::material_id other)
+  {
+    AssertThrow(other == numbers::invalid_material_id,
+                ExcMessage(where(s) + " overlaps solid '" +
+                           description.solids[other].name +
+                           "': solids may touch (a tie joins them), never share volume"));
+  };
+  for (const auto &cell : part.active_cell_iterators())
+    report(inside(earlier, cell->center()));
+  for (const auto &cell : earlier.active_cell_iterators())
+    if (inside(part, cell->center()) != numbers::invalid_material_id)
+      report(cell->material_id());
+}
+} // namespace
+
 void create_solid_mesh(const SolidDescription &description,
                        Triangulation<3> &triangulation)
 {
@@ -221,8 +265,11 @@ void create_solid_mesh(const SolidDescription &description,
       triangulation.copy_triangulation(part);
     else
     {
+      refuse_overlap(description, triangulation, part, s);
+      // solids stay apart: coincident vertices of two solids are not merged
+      // (a tie joins them, never their mesh), so each keeps its own DoFs
       Triangulation<3> merged;
-      GridGenerator::merge_triangulations(triangulation, part, merged);
+      GridGenerator::merge_triangulations(triangulation, part, merged, 0.);
       triangulation.clear();
       triangulation.copy_triangulation(merged);
     }
