@@ -91,7 +91,7 @@ void create_box(const SolidItem &s, const unsigned int degree, Triangulation<3> 
   check_solid_memory(
       s,
       double(s.cells[0]) * s.cells[1] * s.cells[2],
-      box_size({double(s.cells[0]), double(s.cells[1]), double(s.cells[2])}, degree),
+      box_size({{double(s.cells[0]), double(s.cells[1]), double(s.cells[2])}}, degree),
       degree);
   GridGenerator::subdivided_hyper_rectangle(
       t, std::vector<unsigned int>(s.cells.begin(), s.cells.end()), s.x0, s.x1);
