@@ -3,6 +3,8 @@
 #include <hati/model/frame.h>
 #include <hati/model/frame_solids.h>
 
+#include <sstream>
+
 namespace hati
 {
 namespace
@@ -152,6 +154,16 @@ void Frame::add_monitors(DiscreteSystem &system) const
   if (solids)
     for (const auto &node : solids->monitor_nodes())
     {
+      // a point outside its solid (a typo in a coordinate) is not refused
+      // (a monitor at a surface may lie just off it) but said
+      if (node.distance > node.cell_size)
+      {
+        std::ostringstream w;
+        w << "Model/Frame/Monitor nodes: monitor '" << node.name << "' is "
+          << node.distance << " m from its point, farther than its solid's largest cell ("
+          << node.cell_size << " m): the point lies outside the solid";
+        system.warnings.push_back(w.str());
+      }
       MonitorPoint m;
       m.name = node.name;
       for (unsigned int c = 0; c < 3; ++c)

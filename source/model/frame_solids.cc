@@ -64,6 +64,7 @@ FrameSolids::MonitorNode nearest_node(const DoFHandler<3> &dof_handler,
   {
     if (cell->material_id() != solid)
       continue;
+    best.cell_size = std::max(best.cell_size, cell->diameter());
     cell->get_dof_indices(dofs);
     for (unsigned int k = 0; k < unit.size(); ++k)
     {

@@ -143,6 +143,9 @@ public:
     /** The node (m) and its distance from the requested point (m). */
     Point<3> node;
     double distance = 0.;
+    /** The largest cell diameter of its solid (m): a point inside the
+     * solid is nearer than that to a node. */
+    double cell_size = 0.;
   };
   /** The monitor points at solid nodes, in the order of `Monitor nodes`. */
   const std::vector<MonitorNode> &monitor_nodes() const { return monitors; }
