@@ -11,12 +11,14 @@ Prints, per contact name of contacts.csv:
 - the peak contact force of both runs (summary.json, every step, or
   contacts.csv) and its difference;
 and the wall times of both runs (summary.json) and the speed-up of B over A.
-With --monitor COLUMN (a history.csv column, e.g. trolley_wheel_1.uz) it also
-draws COLUMN of both runs against time, full length and a zoom (--zoom
-t0,t1; default: around the first contact-loss episode of run A), as PNG.
+With --monitor COLUMN (a history.csv column, e.g. tw1.uz) it also draws
+COLUMN of both runs against time, full length and a zoom (--zoom t0,t1;
+default: around the longest contact-loss episode of run A), as PNG; with
+--gap CONTACT (a contacts.csv contact, e.g. trolley_wheel_1) also that
+contact's gap in mm (the wheel's height above its rail: paper Fig. 9).
 
-Usage: scripts/compare_runs.py RUN_A RUN_B [--monitor COLUMN] [--zoom T0,T1]
-                               [--png FILE] [--min-duration S]
+Usage: scripts/compare_runs.py RUN_A RUN_B [--monitor COLUMN] [--gap CONTACT]
+                               [--zoom T0,T1] [--png FILE] [--min-duration S]
 Episodes shorter than --min-duration (s, default 0) are ignored (chatter).
 Exit code 0; the numbers are for the user (and tests) to judge."""
 import argparse
@@ -89,6 +91,7 @@ def main():
     p.add_argument("run_a")
     p.add_argument("run_b")
     p.add_argument("--monitor", help="history.csv column to plot (e.g. NODE.uz)")
+    p.add_argument("--gap", help="contacts.csv contact whose gap to plot (e.g. trolley_wheel_1)")
     p.add_argument("--zoom", help="t0,t1 of the zoomed plot (s)")
     p.add_argument("--png", default="compare_runs.png", help="output picture")
     p.add_argument("--min-duration", type=float, default=0.0,
@@ -105,7 +108,7 @@ def main():
     # travel contacts, whose flanges chatter
     wheels = set(sa.get("wheels", {}))
     wheel_time, wheel_force = 0.0, 0.0
-    first_episode = None
+    longest_episode = None
     for name in ca:
         if name not in cb:
             print("contact %s: only in A" % name)
@@ -148,8 +151,11 @@ def main():
             print("  %3d %12s %12s %12s %12s %11s %11s" % (
                 k + 1, fmt(sa_), fmt(ea_), fmt(sb_), fmt(eb_),
                 "-" if ds is None else "%+.2e" % ds, "-" if de is None else "%+.2e" % de))
-            if first_episode is None and sa_ is not None:
-                first_episode = (sa_, ea_ if ea_ is not None else sa_ + 0.05)
+            if sa_ is not None:
+                span = (sa_, ea_ if ea_ is not None else sa_ + 0.05)
+                if longest_episode is None or (span[1] - span[0] >
+                                               longest_episode[1] - longest_episode[0]):
+                    longest_episode = span
     wa, wb = sa.get("stepping_wall_time", sa["wall_time"]), sb.get("stepping_wall_time",
                                                                    sb["wall_time"])
     print("\nlargest difference of episode start/end times: %.3e s; of peak forces: %.2f %%"
@@ -159,37 +165,54 @@ def main():
               "times %.3e s; of peak forces %.2f %%" % (wheel_time, 100 * wheel_force))
     print("wall time of the time stepping: A %.3f s, B %.3f s, speed-up of B over A %.2f"
           % (wa, wb, wa / wb if wb > 0 else float("nan")))
+    if a.monitor or a.gap:
+        plot(a, sa, sb, ca, cb, longest_episode)
+
+
+def plot(a, sa, sb, ca, cb, longest_episode):
+    """The monitor column and/or the contact gap of both runs, whole run and
+    zoom, one row each."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = []  # (title, ylabel, [(t, y) of A, (t, y) of B])
     if a.monitor:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
         ha = read_csv(os.path.join(a.run_a, "history.csv"))
         hb = read_csv(os.path.join(a.run_b, "history.csv"))
         column = a.monitor.replace(".", "")  # numpy drops the dot of NODE.uz
-        if column not in ha.dtype.names:
+        if column not in ha.dtype.names or column not in hb.dtype.names:
             sys.exit("compare_runs.py: no column %s in history.csv" % a.monitor)
-        if a.zoom:
-            z0, z1 = (float(x) for x in a.zoom.split(","))
-        elif first_episode:
-            z0, z1 = first_episode[0] - 0.02, first_episode[1] + 0.02
-        else:
-            z0, z1 = ha["time"][0], ha["time"][-1]
-        fig, ax = plt.subplots(1, 2, figsize=(13, 4.5))
-        for axis, (lo, hi) in zip(ax, ((ha["time"][0], ha["time"][-1]), (z0, z1))):
-            for h, label, style in ((ha, "A: " + str(sa.get("method")), "k-"),
-                                    (hb, "B: " + str(sb.get("method")), "C3--")):
-                sel = (h["time"] >= lo) & (h["time"] <= hi)
-                axis.plot(h["time"][sel], h[column][sel], style, label=label)
+        rows.append((a.monitor, a.monitor + " (m)",
+                     [(h["time"], h[column]) for h in (ha, hb)]))
+    if a.gap:
+        if a.gap not in ca or a.gap not in cb:
+            sys.exit("compare_runs.py: no contact %s in contacts.csv" % a.gap)
+        rows.append(("%s gap" % a.gap, "%s gap (mm)" % a.gap,
+                     [(c[a.gap]["time"], 1e3 * c[a.gap]["gap"]) for c in (ca, cb)]))
+    t_all = np.concatenate([t for _, _, runs in rows for t, _ in runs])
+    if a.zoom:
+        z0, z1 = (float(x) for x in a.zoom.split(","))
+    elif longest_episode:
+        z0, z1 = longest_episode[0] - 0.02, longest_episode[1] + 0.02
+    else:
+        z0, z1 = t_all.min(), t_all.max()
+    fig, ax = plt.subplots(len(rows), 2, figsize=(13, 4.5 * len(rows)), squeeze=False)
+    for (title, ylabel, runs), axes in zip(rows, ax):
+        for axis, (lo, hi) in zip(axes, ((t_all.min(), t_all.max()), (z0, z1))):
+            for (t, y), label, style in zip(runs, ("A: " + str(sa.get("method")),
+                                                   "B: " + str(sb.get("method"))),
+                                            ("k-", "C3--")):
+                sel = (t >= lo) & (t <= hi)
+                axis.plot(t[sel], y[sel], style, label=label)
             axis.set_xlabel("time (s)")
-            axis.set_ylabel(a.monitor + " (m)")
+            axis.set_ylabel(ylabel)
             axis.grid(alpha=0.3)
             axis.legend()
-        ax[0].set_title("%s: whole run" % a.monitor)
-        ax[1].set_title("zoom %.3f-%.3f s" % (z0, z1))
-        fig.tight_layout()
-        fig.savefig(a.png, dpi=110)
-        print("wrote %s" % a.png)
-
+        axes[0].set_title("%s: whole run" % title)
+        axes[1].set_title("%s: zoom %.3f-%.3f s" % (title, z0, z1))
+    fig.tight_layout()
+    fig.savefig(a.png, dpi=110)
+    print("wrote %s" % a.png)
 
 if __name__ == "__main__":
     main()

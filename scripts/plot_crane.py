@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Plots of a bridge crane run (paper Fig. 8): the Z displacement of the four
 trolley wheels (history.csv columns tw1.uz ... tw4.uz, relative to the
-ground), the vertical contact force of every wheel (contacts.csv), and, when
+ground), every wheel's height above its rail (contacts.csv gap: above zero
+the wheel has lifted off, paper Figs. 8-9), the vertical contact force of
+every wheel (contacts.csv), and, when
 the run has them, the slip velocity of the wheels with friction (contacts.csv
 slip_velocity; their slip distances from summary.json in the legend) and the
 rope tension (history.csv hoist_rope.tension), as one PNG.
@@ -35,7 +37,7 @@ def main():
     if os.path.exists(os.path.join(a.run, "summary.json")):
         with open(os.path.join(a.run, "summary.json")) as f:
             summary = json.load(f)
-    panels = 2 + friction + bool(ropes)
+    panels = 3 + friction + bool(ropes)
     fig, ax = plt.subplots(panels, 1, figsize=(11, 3.75 * panels), sharex=True)
     for k in range(1, 5):
         column = "tw%duz" % k
@@ -47,12 +49,19 @@ def main():
     ax[0].legend(fontsize=8)
     for name in contact_names:
         sel = c["contact"] == name
-        ax[1].plot(c["time"][sel], 1e-3 * c["force"][sel], lw=0.7, label=name)
-    ax[1].set_ylabel("vertical wheel force (kN)")
-    ax[1].set_title("Wheel contact forces at the output times")
+        ax[1].plot(c["time"][sel], 1e3 * np.maximum(c["gap"][sel], 0.), lw=0.8, label=name)
+    ax[1].set_ylabel("height above the rail (mm)")
+    ax[1].set_title("Wheel uplift: the vertical contacts' gaps (0: on the rail)")
     ax[1].grid(alpha=0.3)
     ax[1].legend(fontsize=7, ncol=2)
-    panel = 2
+    for name in contact_names:
+        sel = c["contact"] == name
+        ax[2].plot(c["time"][sel], 1e-3 * c["force"][sel], lw=0.7, label=name)
+    ax[2].set_ylabel("vertical wheel force (kN)")
+    ax[2].set_title("Wheel contact forces at the output times")
+    ax[2].grid(alpha=0.3)
+    ax[2].legend(fontsize=7, ncol=2)
+    panel = 3
     if friction:
         wheels = summary.get("wheels", {})
         for name in contact_names:
