@@ -520,4 +520,29 @@ for what, prm, sets, fragment in (
                    rc == 0 and len(warned) == 1 and summary is not None and
                    any(fragment in w for w in summary.get("warnings", [])),
                    "(exit %d) %s" % (rc, lines[-3:]))
+# issue #59, finding 7: conjugate gradients that break down (p.K p = 0) on
+# the prism, whose stiffness is regular, hand it to the direct solver, which
+# decides; the static state is then the KLU run's (reference: the same run
+# with Linear solver = KLU)
+statics = {}
+for solver in ("iterative", "KLU"):
+    out = os.path.join(ctx.work, "cg_" + solver)
+    p = subprocess.run([ctx.hati, ctx.prm("beam_solid_prism.prm"), "--set",
+                        "Output/Output directory=" + out, "--set", "Analysis/Type=static",
+                        "--set", "Output/Output interval=0", "--set",
+                        "Time integration/Newmark/Linear solver=" + solver],
+                       capture_output=True, text=True, timeout=300, cwd=ctx.work)
+    statics[solver] = (p, np.genfromtxt(os.path.join(out, "history.csv"), delimiter=",",
+                                        names=True) if p.returncode == 0 else None)
+p, h = statics["iterative"]
+ctx.check_true("Linear solver = iterative: a CG breakdown solved directly, said in one line",
+               p.returncode == 0 and "CG + AMG broke down (p.K p = 0) on a stiffness that is "
+               "not singular; solved with Amesos_Klu instead" in p.stdout,
+               "(exit %d) %s" % (p.returncode, p.stderr[-300:]))
+if h is not None and statics["KLU"][1] is not None:
+    ref = statics["KLU"][1]
+    worst = max(abs(float(h[n]) - float(ref[n])) for n in h.dtype.names if n != "time")
+    scale = max(abs(float(ref[n])) for n in ref.dtype.names if n != "time")
+    ctx.check("Linear solver = iterative after the breakdown: static state against KLU's "
+              "(relative to the largest value)", worst / scale, 0.0, abs_tol=1e-9)
 ctx.finish()
