@@ -1,0 +1,134 @@
+#include <deal.II/base/exceptions.h>
+
+#include <hati/analysis/spectral_combination.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hati
+{
+using namespace dealii;
+
+ModalCombination parse_modal_combination(const std::string &name)
+{
+  if (name == "CQC")
+    return ModalCombination::CQC;
+  if (name == "SRSS")
+    return ModalCombination::SRSS;
+  AssertThrow(false,
+              ExcMessage("Response spectrum/Modal combination: '" + name +
+                         "': CQC or SRSS is expected"));
+  return ModalCombination::CQC;
+}
+
+DirectionalCombination parse_directional_combination(const std::string &name)
+{
+  if (name == "SRSS")
+    return DirectionalCombination::SRSS;
+  if (name == "100-40-40")
+    return DirectionalCombination::percent_40;
+  if (name == "100-30-30")
+    return DirectionalCombination::percent_30;
+  AssertThrow(false,
+              ExcMessage("Response spectrum/Directional combination: '" + name +
+                         "': SRSS, 100-40-40 or 100-30-30 is expected"));
+  return DirectionalCombination::SRSS;
+}
+
+std::string name_of(const ModalCombination rule)
+{
+  return rule == ModalCombination::CQC ? "CQC" : "SRSS";
+}
+
+std::string name_of(const DirectionalCombination rule)
+{
+  switch (rule)
+  {
+  case DirectionalCombination::SRSS:
+    return "SRSS";
+  case DirectionalCombination::percent_40:
+    return "100-40-40";
+  case DirectionalCombination::percent_30:
+    return "100-30-30";
+  }
+  return "SRSS";
+}
+
+double cqc_correlation(const double omega_i, const double omega_j, const double xi)
+{
+  AssertThrow(omega_i > 0. && omega_j > 0. && xi > 0.,
+              ExcMessage("cqc_correlation: frequencies and damping ratio > 0 expected"));
+  const double r = omega_j / omega_i;
+  const double xi2 = xi * xi;
+  return 8. * xi2 * (1. + r) * std::pow(r, 1.5) /
+         ((1. - r * r) * (1. - r * r) + 4. * xi2 * r * (1. + r) * (1. + r));
+}
+
+double combine_modes(const std::vector<double> &modal,
+                     const std::vector<double> &omega,
+                     const double xi,
+                     const ModalCombination rule)
+{
+  AssertThrow(modal.size() == omega.size(),
+              ExcMessage("combine_modes: one frequency per modal response expected"));
+  double sum = 0.;
+  for (std::size_t i = 0; i < modal.size(); ++i)
+  {
+    sum += modal[i] * modal[i];
+    if (rule == ModalCombination::CQC)
+      for (std::size_t j = i + 1; j < modal.size(); ++j)
+        sum += 2. * cqc_correlation(omega[i], omega[j], xi) * modal[i] * modal[j];
+  }
+  // the CQC double sum is a quadratic form with a positive semi-definite
+  // matrix: a negative sum is round-off
+  return std::sqrt(std::max(sum, 0.));
+}
+
+double gupta_rigid_fraction(const double f, const double f1, const double f2)
+{
+  AssertThrow(
+      f1 > 0. && f2 > f1,
+      ExcMessage("Response spectrum/Gupta frequencies: two frequencies 0 < f1 < f2 "
+                 "(Hz) are expected"));
+  if (f <= f1)
+    return 0.;
+  if (f >= f2)
+    return 1.;
+  return std::log(f / f1) / std::log(f2 / f1);
+}
+
+double combine_with_rigid_part(const std::vector<double> &modal,
+                               const std::vector<double> &omega,
+                               const double xi,
+                               const ModalCombination rule,
+                               const std::vector<double> &rigid_fraction,
+                               const double missing_mass)
+{
+  AssertThrow(
+      rigid_fraction.empty() || rigid_fraction.size() == modal.size(),
+      ExcMessage("combine_with_rigid_part: one rigid fraction per mode expected"));
+  std::vector<double> periodic(modal);
+  double rigid = missing_mass;
+  for (std::size_t k = 0; k < rigid_fraction.size(); ++k)
+  {
+    const double alpha = rigid_fraction[k];
+    periodic[k] = std::sqrt(std::max(1. - alpha * alpha, 0.)) * modal[k];
+    rigid += alpha * modal[k];
+  }
+  const double r_periodic = combine_modes(periodic, omega, xi, rule);
+  return std::sqrt(r_periodic * r_periodic + rigid * rigid);
+}
+
+double combine_directions(const std::array<double, 3> &peaks,
+                          const DirectionalCombination rule)
+{
+  if (rule == DirectionalCombination::SRSS)
+    return std::sqrt(peaks[0] * peaks[0] + peaks[1] * peaks[1] + peaks[2] * peaks[2]);
+  const double c = rule == DirectionalCombination::percent_40 ? 0.4 : 0.3;
+  const double sum = peaks[0] + peaks[1] + peaks[2];
+  double largest = 0.;
+  for (const double r : peaks)
+    largest = std::max(largest, r + c * (sum - r));
+  return largest;
+}
+} // namespace hati
