@@ -176,6 +176,65 @@ void check_table()
   }
 }
 
+/**
+ * Issue #57: a table per axis (`Table file Y`, `Table file Z`) through the
+ * parameter file: X and Y on `Table file`, Z on its own; a Z table that
+ * does not cover the Period range is refused naming `Table file Z`.
+ */
+void check_axis_tables()
+{
+  const std::string x_file = table_file("x", "0.01, 2\n0.1, 8\n1, 4\n4, 1\n");
+  const std::string z_file = table_file("z", "0.01, 1\n0.05, 3\n0.5, 3\n4, 0.5\n");
+  const std::string short_file = table_file("short", "0.05, 1\n1, 3\n");
+  const auto parse = [&](const std::string &z)
+  {
+    ParameterHandler prm;
+    DesignSpectrumParameters::declare_parameters(prm);
+    prm.enter_subsection("Design spectrum");
+    prm.set("Type", "table");
+    prm.set("Table file", x_file);
+    prm.set("Table file Z", z);
+    prm.leave_subsection();
+    DesignSpectrumParameters p;
+    p.parse_parameters(prm);
+    return p;
+  };
+  const DesignSpectrum s(parse(z_file));
+  check("Table file Z: Z at a row of its own table (0.5 s: 3)", s(0.5, 2), 3., 1e-12);
+  check("Table file Z: Z between rows (0.2 s: the plateau 3)", s(0.2, 2), 3., 1e-12);
+  check("Table file Z: X on Table file (1 s: 4)", s(1., 0), 4., 1e-12);
+  check("Table file Y empty: Y on Table file (1 s: 4)", s(1., 1), 4., 1e-12);
+  check("Table file Z: Z's zero-period value (its first row)",
+        s.zero_period_value(2),
+        1.,
+        0.);
+  expect(s.description(2).find(z_file) != std::string::npos &&
+             s.description(0).find(x_file) != std::string::npos,
+         "each axis's description names its table: " + s.description(2));
+  try
+  {
+    parse(short_file);
+    expect(false, "a Z table from 0.05 s refused for the Period range from 0.02 s");
+  }
+  catch (const std::exception &e)
+  {
+    const std::string m = hati_test::message_of(e);
+    expect(m.find("is not within the table '" + short_file + "'") != std::string::npos,
+           "a Z table not covering the Period range refused: " + m);
+  }
+  try
+  {
+    parse(x_file + ".missing");
+    expect(false, "a missing Table file Z refused");
+  }
+  catch (const std::exception &e)
+  {
+    const std::string m = hati_test::message_of(e);
+    expect(m.rfind("Design spectrum/Table file Z:", 0) == 0,
+           "a missing Table file Z refused naming the entry: " + m);
+  }
+}
+
 void check_suite_check()
 {
   // a stored suite spectrum: three records at five periods (m/s^2), target 10
@@ -227,6 +286,7 @@ HATI_UNIT_TEST(design_spectrum)
   {
     check_corners();
     check_table();
+    check_axis_tables();
     check_suite_check();
   }
   catch (const std::exception &e)

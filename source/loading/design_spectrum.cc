@@ -67,6 +67,14 @@ void DesignSpectrumParameters::declare_parameters(ParameterHandler &prm)
                     "periods increasing, both > 0, an optional header line; "
                     "interpolated linearly in log-log. Its first row is the zero-period "
                     "value (the records' peak ground acceleration).");
+  for (const char axis : {'Y', 'Z'})
+    prm.declare_entry(std::string("Table file ") + axis,
+                      "",
+                      Patterns::Anything(),
+                      std::string("Type = table: the table of the ") + axis +
+                          " axis, as Table file (s, m/s^2; floor response spectra differ "
+                          "per axis); empty: " +
+                          axis + " takes Table file.");
   prm.declare_entry("Period range",
                     "0.02, 4",
                     Patterns::List(Patterns::Double(0.), 2, 2),
@@ -84,6 +92,8 @@ void DesignSpectrumParameters::parse_parameters(ParameterHandler &prm)
   damping_ratio = prm.get_double("Damping ratio");
   vertical = prm.get_bool("Vertical");
   table_file = Utilities::trim(prm.get("Table file"));
+  for (unsigned int k = 0; k < 2; ++k)
+    table_file_yz[k] = Utilities::trim(prm.get(std::string("Table file ") + "YZ"[k]));
   const auto range =
       Utilities::string_to_double(Utilities::split_string_list(prm.get("Period range")));
   prm.leave_subsection();
@@ -106,17 +116,29 @@ void DesignSpectrumParameters::parse_parameters(ParameterHandler &prm)
     AssertThrow(!table_file.empty(),
                 ExcMessage("Design spectrum/Table file: Type = table needs the file of "
                            "'period, pseudo-acceleration' rows"));
-    DesignSpectrum::read_table(
-        table_file, "Design spectrum/Table file", table_periods, table_values);
-    AssertThrow(table_periods.front() <= range[0] * (1. + 1e-12) &&
-                    table_periods.back() >= range[1] * (1. - 1e-12),
-                ExcMessage("Design spectrum/Period range: " + ten_digit_text(range[0]) +
-                           " to " + ten_digit_text(range[1]) +
-                           " s is not within the "
-                           "table '" +
-                           table_file + "' (" + ten_digit_text(table_periods.front()) +
-                           " to " + ten_digit_text(table_periods.back()) +
-                           " s): a table is not extrapolated"));
+    const auto read = [&](const std::string &file,
+                          const std::string &entry,
+                          std::vector<double> &periods,
+                          std::vector<double> &values)
+    {
+      DesignSpectrum::read_table(file, entry, periods, values);
+      AssertThrow(periods.front() <= range[0] * (1. + 1e-12) &&
+                      periods.back() >= range[1] * (1. - 1e-12),
+                  ExcMessage("Design spectrum/Period range: " + ten_digit_text(range[0]) +
+                             " to " + ten_digit_text(range[1]) +
+                             " s is not within the "
+                             "table '" +
+                             file + "' (" + ten_digit_text(periods.front()) + " to " +
+                             ten_digit_text(periods.back()) +
+                             " s): a table is not extrapolated"));
+    };
+    read(table_file, "Design spectrum/Table file", table_periods, table_values);
+    for (unsigned int k = 0; k < 2; ++k)
+      if (!table_file_yz[k].empty())
+        read(table_file_yz[k],
+             std::string("Design spectrum/Table file ") + "YZ"[k],
+             table_periods_yz[k],
+             table_values_yz[k]);
   }
 }
 
@@ -185,13 +207,31 @@ bool DesignSpectrum::is_vertical(const unsigned int axis) const
   return axis == 2 && p.vertical && p.type != "table";
 }
 
+const std::vector<double> &DesignSpectrum::table_periods(const unsigned int axis) const
+{
+  return axis > 0 && !p.table_periods_yz[axis - 1].empty() ? p.table_periods_yz[axis - 1]
+                                                           : p.table_periods;
+}
+
+const std::vector<double> &DesignSpectrum::table_values(const unsigned int axis) const
+{
+  return axis > 0 && !p.table_values_yz[axis - 1].empty() ? p.table_values_yz[axis - 1]
+                                                          : p.table_values;
+}
+
+const std::string &DesignSpectrum::table_file(const unsigned int axis) const
+{
+  return axis > 0 && !p.table_periods_yz[axis - 1].empty() ? p.table_file_yz[axis - 1]
+                                                           : p.table_file;
+}
+
 double DesignSpectrum::operator()(const double period, const unsigned int axis) const
 {
   const double T = std::max(period, 0.);
   if (p.type == "table")
   {
-    const auto &x = p.table_periods;
-    const auto &y = p.table_values;
+    const auto &x = table_periods(axis);
+    const auto &y = table_values(axis);
     if (T <= x.front())
       return y.front();
     if (T >= x.back())
@@ -223,7 +263,7 @@ std::string DesignSpectrum::description(const unsigned int axis) const
   std::ostringstream s;
   s << p.type;
   if (p.type == "table")
-    s << " " << p.table_file;
+    s << " " << table_file(axis);
   else
     s << ", ground type " << p.ground_type << ", a_g = " << p.peak_ground_acceleration
       << " m/s^2";

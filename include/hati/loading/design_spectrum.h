@@ -45,6 +45,14 @@ struct DesignSpectrumParameters
   std::array<double, 2> period_range{{0.02, 4.}};
   /** The table's periods (s) and pseudo-accelerations (m/s^2) (Type = table). */
   std::vector<double> table_periods, table_values;
+  /**
+   * Type = table: the files of Y and Z (`Table file Y`, `Table file Z`;
+   * floor response spectra differ per axis), and their rows; a file left
+   * empty leaves its axis on `Table file`.
+   */
+  std::array<std::string, 2> table_file_yz;
+  /** The rows of `Table file Y` and `Table file Z` (empty: not given). */
+  std::array<std::vector<double>, 2> table_periods_yz, table_values_yz;
 };
 
 /** The corner values of an EC8 elastic spectrum (EN 1998-1 Tables 3.2-3.4). */
@@ -74,7 +82,8 @@ double ec8_damping_correction(const double damping_ratio);
 /**
  * The target spectrum of DesignSpectrumParameters: S_a(T) (m/s^2) per
  * global axis, the horizontal spectrum for X and Y, for Z the vertical one
- * when Vertical (EC8 types; a table gives every axis the table).
+ * when Vertical (EC8 types); a table gives every axis `Table file`, but Y
+ * and Z their own where `Table file Y` or `Table file Z` is given.
  *
  * EC8 (DS1, doc/theory.md 13.1; EN 1998-1 3.2.2.2, 3.2.2.3 with eta):
  * `a S (1 + T/T_B (p eta - 1))` up to T_B, `a S p eta` up to T_C,
@@ -114,6 +123,12 @@ public:
                          std::vector<double> &values);
 
 private:
+  /** The table of @p axis (Type = table): its own, or `Table file`'s. */
+  const std::vector<double> &table_periods(const unsigned int axis) const;
+  /** The pseudo-accelerations of that table (m/s^2). */
+  const std::vector<double> &table_values(const unsigned int axis) const;
+  /** The file of that table. */
+  const std::string &table_file(const unsigned int axis) const;
   /** Whether @p axis follows the vertical EC8 spectrum. */
   bool is_vertical(const unsigned int axis) const;
 
