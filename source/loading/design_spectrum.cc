@@ -207,22 +207,24 @@ bool DesignSpectrum::is_vertical(const unsigned int axis) const
   return axis == 2 && p.vertical && p.type != "table";
 }
 
+bool DesignSpectrum::own_table(const unsigned int axis) const
+{
+  return axis > 0 && !p.table_periods_yz[axis - 1].empty();
+}
+
 const std::vector<double> &DesignSpectrum::table_periods(const unsigned int axis) const
 {
-  return axis > 0 && !p.table_periods_yz[axis - 1].empty() ? p.table_periods_yz[axis - 1]
-                                                           : p.table_periods;
+  return own_table(axis) ? p.table_periods_yz[axis - 1] : p.table_periods;
 }
 
 const std::vector<double> &DesignSpectrum::table_values(const unsigned int axis) const
 {
-  return axis > 0 && !p.table_values_yz[axis - 1].empty() ? p.table_values_yz[axis - 1]
-                                                          : p.table_values;
+  return own_table(axis) ? p.table_values_yz[axis - 1] : p.table_values;
 }
 
 const std::string &DesignSpectrum::table_file(const unsigned int axis) const
 {
-  return axis > 0 && !p.table_periods_yz[axis - 1].empty() ? p.table_file_yz[axis - 1]
-                                                           : p.table_file;
+  return own_table(axis) ? p.table_file_yz[axis - 1] : p.table_file;
 }
 
 double DesignSpectrum::operator()(const double period, const unsigned int axis) const

@@ -123,6 +123,8 @@ public:
                          std::vector<double> &values);
 
 private:
+  /** Whether @p axis (Y or Z) has a table of its own (`Table file Y|Z`). */
+  bool own_table(const unsigned int axis) const;
   /** The table of @p axis (Type = table): its own, or `Table file`'s. */
   const std::vector<double> &table_periods(const unsigned int axis) const;
   /** The pseudo-accelerations of that table (m/s^2). */
