@@ -209,6 +209,7 @@ int run_command_line(int argc, char **argv)
     simulation = std::make_unique<Simulation>(prm, file);
     // a target that neither a suite's check nor artificial records take
     if (!generation->active() &&
+        prm.get(std::vector<std::string>{"Analysis"}, "Type") != "response spectrum" &&
         prm.get(std::vector<std::string>{"Design spectrum"}, "Type") != "none")
       simulation->warn("subsection Design spectrum is ignored: a single run checks no "
                        "spectrum (a subsection Suite with Records or Scale factors is "

@@ -32,6 +32,7 @@
 #include <hati/linear_algebra/column_major.h>
 #include <hati/linear_algebra/direct_solver.h>
 #include <hati/linear_algebra/sparse_nonzeros.h>
+#include <hati/linear_algebra/symmetric_mumps.h>
 
 #include <algorithm>
 #include <cmath>
@@ -313,36 +314,6 @@ struct ModalMatrices
   }
 };
 
-/**
- * `M r_d` per direction d (empty where the model has no influence vector),
- * with the inertia coupled to the supports where the system provides it
- * (DiscreteSystem::mass_influence), and the total masses `r_d.M r_d` (kg).
- */
-std::array<Vector<double>, 3> influence_masses(const DiscreteSystem &system,
-                                               const SparseMatrix<double> &M,
-                                               std::array<double, 3> &total_mass)
-{
-  const unsigned int n = system.n_dofs();
-  std::array<Vector<double>, 3> Mr;
-  for (unsigned int d = 0; d < 3; ++d)
-    if (system.mass_influence[d].size() == n)
-    {
-      // M r with the inertia coupled to the supports (DiscreteSystem)
-      Mr[d] = system.mass_influence[d];
-      for (unsigned int i = 0; i < n; ++i)
-        if (system.fixed[i])
-          Mr[d][i] = 0.;
-      total_mass[d] = system.influence[d].size() == n ? system.influence[d] * Mr[d] : 0.;
-    }
-    else if (system.influence[d].size() == n)
-    {
-      Mr[d].reinit(n);
-      M.vmult(Mr[d], system.influence[d]);
-      total_mass[d] = system.influence[d] * Mr[d];
-    }
-  return Mr;
-}
-
 /** The largest absolute row sum of @p A (its infinity norm). */
 double max_row_sum(const SparseMatrix<double> &A)
 {
@@ -407,6 +378,31 @@ void normalise_and_check(const unsigned int k,
 } // namespace modal_internal
 using namespace modal_internal;
 
+std::array<Vector<double>, 3> influence_masses(const DiscreteSystem &system,
+                                               const SparseMatrix<double> &M,
+                                               std::array<double, 3> &total_mass)
+{
+  const unsigned int n = system.n_dofs();
+  std::array<Vector<double>, 3> Mr;
+  for (unsigned int d = 0; d < 3; ++d)
+    if (system.mass_influence[d].size() == n)
+    {
+      // M r with the inertia coupled to the supports (DiscreteSystem)
+      Mr[d] = system.mass_influence[d];
+      for (unsigned int i = 0; i < n; ++i)
+        if (system.fixed[i])
+          Mr[d][i] = 0.;
+      total_mass[d] = system.influence[d].size() == n ? system.influence[d] * Mr[d] : 0.;
+    }
+    else if (system.influence[d].size() == n)
+    {
+      Mr[d].reinit(n);
+      M.vmult(Mr[d], system.influence[d]);
+      total_mass[d] = system.influence[d] * Mr[d];
+    }
+  return Mr;
+}
+
 /**
  * The eigenproblem on the free DoFs: K and M, and with closed contacts or
  * held rows `K_r = T^T K T`, `M_r = T^T M T` on the full numbering, the
@@ -426,6 +422,8 @@ struct ModalProblem::Data
   SparsityPattern product_pattern;
   SparseMatrix<double> M_products;
   unsigned int n_free = 0;
+  /** The factorisation of the condensed stiffness (solve_static()). */
+  mutable std::unique_ptr<DirectSolver> static_solver;
   /** The last factorisation, of the shift @p factorised_shift asked for. */
   mutable std::unique_ptr<ShiftedInverse> inverse;
   mutable double factorised_shift = 0.;
@@ -505,6 +503,57 @@ unsigned int ModalProblem::n_closed_contacts() const { return data->n_closed_con
 unsigned int ModalProblem::n_constraints() const { return data->n_constraints; }
 
 const SparseMatrix<double> &ModalProblem::mass() const { return data->matrices.M; }
+
+const SparseMatrix<double> &ModalProblem::stiffness() const { return data->matrices.K; }
+
+unsigned int ModalProblem::count_below(const double lambda) const
+{
+  const SparseMatrix<double> &K = data->K(), &M = data->M();
+  SparseMatrix<double> shifted(K.get_sparsity_pattern());
+  shifted.copy_from(K);
+  shifted.add(-lambda, M);
+  SymmetricMumps solver;
+  std::ostringstream message;
+  message << "modal analysis: the factorisation of K - lambda M at lambda = " << lambda
+          << " 1/s^2 (" << std::sqrt(std::max(lambda, 0.)) / (2. * M_PI)
+          << " Hz) failed (MUMPS INFOG(1) = ";
+  AssertThrow(solver.factorize(shifted),
+              ExcMessage(message.str() + std::to_string(solver.error()) +
+                         "): is the frequency an eigenfrequency of the model?"));
+  // fixed and eliminated DoFs: a positive diagonal of K, no mass, a positive pivot
+  return static_cast<unsigned int>(solver.negative_pivots());
+}
+
+void ModalProblem::condense_load(Vector<double> &f) const
+{
+  AssertThrow(f.size() == data->n, ExcInternalError());
+  if (!data->elimination.slaves.empty())
+    data->elimination.transpose_apply(f);
+  for (unsigned int i = 0; i < data->n; ++i)
+    if (data->fixed[i])
+      f[i] = 0.;
+}
+
+Vector<double> ModalProblem::solve_static(const Vector<double> &f) const
+{
+  AssertThrow(f.size() == data->n, ExcInternalError());
+  if (!data->static_solver)
+  {
+    auto solver = std::make_unique<DirectSolver>(data->package);
+    solver->factorize(data->K(),
+                      "static solve of the modal problem: " + data->package +
+                          " found a zero pivot in the condensed stiffness (a mechanism: "
+                          "a free DoF that nothing holds).");
+    data->static_solver = std::move(solver);
+  }
+  Vector<double> U(data->n);
+  data->static_solver->solve(U, f);
+  for (unsigned int i = 0; i < data->n; ++i)
+    if (data->fixed[i])
+      U[i] = 0.;
+  data->elimination.distribute(U);
+  return U;
+}
 
 double ModalProblem::lowest_shift() const
 {

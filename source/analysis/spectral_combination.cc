@@ -119,6 +119,52 @@ double combine_with_rigid_part(const std::vector<double> &modal,
   return std::sqrt(r_periodic * r_periodic + rigid * rigid);
 }
 
+ModalCorrelation::ModalCorrelation(const std::vector<double> &omega,
+                                   const double xi,
+                                   const ModalCombination rule,
+                                   const std::vector<double> &rigid_fraction)
+    : n(omega.size()), srss(rule == ModalCombination::SRSS), alpha(rigid_fraction)
+{
+  AssertThrow(alpha.empty() || alpha.size() == n,
+              ExcMessage("ModalCorrelation: one rigid fraction per mode expected"));
+  if (alpha.empty())
+    alpha.assign(n, 0.);
+  periodic_factor.resize(n);
+  for (std::size_t k = 0; k < n; ++k)
+    periodic_factor[k] = std::sqrt(std::max(1. - alpha[k] * alpha[k], 0.));
+  if (!srss)
+  {
+    twice_rho.reserve(n * (n - (n > 0)) / 2);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j)
+        twice_rho.push_back(2. * cqc_correlation(omega[i], omega[j], xi));
+  }
+}
+
+double ModalCorrelation::combine(const double *modal,
+                                 const double missing_mass,
+                                 const std::size_t stride) const
+{
+  double sum = 0., rigid = missing_mass;
+  const double *rho = twice_rho.data();
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double r_i = periodic_factor[i] * modal[i * stride];
+    rigid += alpha[i] * modal[i * stride];
+    sum += r_i * r_i;
+    if (!srss)
+    {
+      double row = 0.;
+      for (std::size_t j = i + 1; j < n; ++j)
+        row += *rho++ * periodic_factor[j] * modal[j * stride];
+      sum += r_i * row;
+    }
+  }
+  // a quadratic form with a positive semi-definite matrix: a negative sum
+  // is round-off
+  return std::sqrt(std::max(sum, 0.) + rigid * rigid);
+}
+
 double combine_directions(const std::array<double, 3> &peaks,
                           const DirectionalCombination rule)
 {

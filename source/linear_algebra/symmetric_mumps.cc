@@ -146,6 +146,7 @@ bool SymmetricMumps::factorize(const SparseMatrix<double> &matrix)
   m.a = nullptr;
   infog[0] = m.infog[0];
   infog[1] = m.infog[1];
+  n_negative = m.infog[0] >= 0 ? m.infog[11] : 0;
   return m.infog[0] >= 0;
 }
 

@@ -18,7 +18,13 @@ const Registry<AnalysisRunner> &analysis_registry()
         "modal: the lowest natural frequencies and mode shapes (modes.csv, mode "
         "shapes in VTU).",
         {},
-        run_modal_analysis}});
+        run_modal_analysis},
+       {"response spectrum",
+        "response spectrum: the modal (response-spectrum) analysis of the linearised "
+        "model against subsection Design spectrum, combined as subsection Response "
+        "spectrum says (response_spectrum.csv, response_spectrum_modes.csv).",
+        {},
+        run_response_spectrum_analysis}});
   return registry;
 }
 

@@ -50,6 +50,7 @@ void Problem::declare_parameters(ParameterHandler &prm)
   SuiteParameters::declare_parameters(prm);
   DesignSpectrumParameters::declare_parameters(prm);
   ArtificialRecordParameters::declare_parameters(prm);
+  ResponseSpectrumParameters::declare_parameters(prm);
 }
 
 Problem::Problem(ParameterHandler &prm, const ConditionalOStream &out) : out(out)
@@ -86,6 +87,18 @@ Problem::Problem(ParameterHandler &prm, const ConditionalOStream &out) : out(out
   // other analyses eliminate them (doc/theory.md 11.2)
   common_parameters.links_as_rows =
       analysis_parameters.type == "transient" && time_parameters.method == "CD-Lagrange";
+  if (analysis_parameters.type == "response spectrum")
+  {
+    AssertThrow(analysis_parameters.initial_state != "file",
+                ExcMessage("Analysis/Initial state = file: a response-spectrum analysis "
+                           "starts from the static state of its model, not from a state "
+                           "file; set Initial state = given"));
+    design_spectrum_parameters.parse_parameters(prm);
+    AssertThrow(design_spectrum_parameters.active(),
+                ExcMessage("Analysis/Type = response spectrum needs a target spectrum: "
+                           "Design spectrum/Type is none (give an EC8 type or a table)"));
+    response_spectrum_parameters.parse_parameters(prm);
+  }
   model = create_model(prm);
   warn_inapplicable_entries(prm, *this);
 }

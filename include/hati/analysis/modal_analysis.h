@@ -77,6 +77,17 @@ ModalResult compute_modes(const DiscreteSystem &system,
                           const std::string &linear_solver = "auto",
                           const std::vector<SparseRow> *held = nullptr);
 
+/**
+ * `M r_d` per direction d (kg, N per m/s^2; empty where the model has no
+ * influence vector), with the inertia coupled to the supports where the
+ * system provides it (DiscreteSystem::mass_influence), zero on fixed DoFs,
+ * and the total masses `r_d.M r_d` (kg) in @p total_mass: what the
+ * participation factors `Gamma_kd = phi_k.M r_d` use (doc/theory.md 7.1).
+ */
+std::array<Vector<double>, 3> influence_masses(const DiscreteSystem &system,
+                                               const SparseMatrix<double> &M,
+                                               std::array<double, 3> &total_mass);
+
 /** One eigenpair of ModalProblem::modes_near(). */
 struct Eigenpair
 {
@@ -126,6 +137,36 @@ public:
   unsigned int n_constraints() const;
   /** The mass matrix M of the eigenproblem on the system's DoFs (zero on fixed DoFs). */
   const SparseMatrix<double> &mass() const;
+  /**
+   * The stiffness K of the eigenproblem on the system's DoFs, the ropes'
+   * tangent included, before the elimination (fixed rows decoupled).
+   */
+  const SparseMatrix<double> &stiffness() const;
+
+  /**
+   * The number of eigenvalues below @p lambda (1/s^2, > 0) of the
+   * eigenproblem solved: the negative pivots of the `L D L^T` factorisation
+   * of `K - lambda M` (MUMPS, SymmetricMumps::negative_pivots(); Sylvester's
+   * law of inertia, doc/theory.md 14.5), fixed and eliminated DoFs left out.
+   * Throws if the factorisation fails (lambda on an eigenvalue).
+   */
+  unsigned int count_below(const double lambda) const;
+
+  /**
+   * A load @p f (N) on the system's DoFs brought into the eigenproblem's
+   * space: `f <- T^T f`, zero on fixed and eliminated DoFs (the space of
+   * Eigenpair::Mphi).
+   */
+  void condense_load(Vector<double> &f) const;
+
+  /**
+   * The static solution `U = T (T^T K T)^-1 f` (m) of a load @p f already
+   * condensed (condense_load()): the closed contacts and held rows hold,
+   * the eliminated DoFs distributed back. One factorisation of the condensed
+   * stiffness, kept for the next calls. Throws, naming it, if the condensed
+   * stiffness is singular (a mechanism).
+   */
+  Vector<double> solve_static(const Vector<double> &f) const;
 
   /**
    * The shift of compute_modes() (1/s^2): tiny and negative, so that `K -

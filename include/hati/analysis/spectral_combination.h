@@ -91,6 +91,42 @@ double combine_with_rigid_part(const std::vector<double> &modal,
                                double missing_mass);
 
 /**
+ * The coefficients of a modal combination kept for many quantities: the
+ * correlation matrix rho_ij of the modes (RS1; the identity for SRSS) and
+ * their rigid fractions alpha_k (RS3), so that combining a quantity costs
+ * its double sum only. combine() is combine_with_rigid_part() with them.
+ */
+class ModalCorrelation
+{
+public:
+  /**
+   * @p omega (rad/s, > 0), @p xi (-, > 0), @p rule; @p rigid_fraction empty
+   * or one per mode.
+   */
+  ModalCorrelation(const std::vector<double> &omega,
+                   double xi,
+                   ModalCombination rule,
+                   const std::vector<double> &rigid_fraction = {});
+
+  /** The number of modes. */
+  std::size_t size() const { return n; }
+
+  /**
+   * The combined peak of the modal responses @p modal (signed, size() of
+   * them, at a stride @p stride) with the missing mass @p missing_mass
+   * (RS2, RS3).
+   */
+  double combine(const double *modal, double missing_mass, std::size_t stride = 1) const;
+
+private:
+  std::size_t n;
+  bool srss;
+  /** rho_ij, i < j, row by row (the strict upper triangle), times 2. */
+  std::vector<double> twice_rho;
+  std::vector<double> alpha, periodic_factor;
+};
+
+/**
  * The combined peak of the three directions' peaks @p peaks (X, Y, Z,
  * >= 0; 0 for a direction not excited) (RS4): SRSS sqrt(R_X^2 + R_Y^2 +
  * R_Z^2), or the largest over i of R_i + c (R_j + R_k) with c = 0.4 or 0.3.

@@ -71,11 +71,21 @@ public:
    */
   static bool memory_error(const int error);
 
+  /**
+   * The number of negative pivots of the last factorisation (MUMPS's
+   * INFOG(12) for a symmetric matrix): by Sylvester's law of inertia the
+   * number of negative eigenvalues of the matrix, so that for `K - sigma M`
+   * (M positive semi-definite) it counts the eigenvalues of `K phi = lambda
+   * M phi` below sigma (RS5, doc/theory.md 14.5).
+   */
+  long negative_pivots() const { return n_negative; }
+
 private:
   struct Data;
   std::unique_ptr<Data> data;
   unsigned int n = 0;
   int infog[2] = {0, 0};
+  long n_negative = 0;
 };
 
 } // namespace hati

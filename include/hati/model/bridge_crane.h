@@ -212,6 +212,17 @@ public:
   {
     return frame.section_force_dofs();
   }
+  /** Frame::response_groups(). */
+  std::vector<ResponseGroup> response_groups() const override
+  {
+    return frame.response_groups();
+  }
+  /** Frame::response_values(). */
+  void response_values(const Vector<double> &U,
+                       std::vector<double> &values) const override
+  {
+    frame.response_values(U, values);
+  }
   std::string description() const override;
   /** Frame::describe_dof(). */
   DofDescription describe_dof(const types::global_dof_index dof) const override

@@ -79,6 +79,15 @@ public:
   /** The DoFs of the section force members' elements (the cuts: output_functionals()). */
   std::vector<types::global_dof_index> section_force_dofs() const override;
   /** `solids` for a frame with solids (SolidStressOutput), none otherwise. */
+  /**
+   * Every member's section forces N, Vy, Vz, T, My, Mz (N, N m) at both
+   * ends of each of its elements (`<member>.N`, ...), in the order of the
+   * members (frame_response.cc).
+   */
+  std::vector<ResponseGroup> response_groups() const override;
+  /** The section forces of response_groups() for @p U, without the own weight. */
+  void response_values(const Vector<double> &U,
+                       std::vector<double> &values) const override;
   std::vector<std::string> vtu_series() const override;
   /** The snapshot of `solids` (SolidStressOutput::write_vtu()). */
   void write_series_vtu(const std::string &series,

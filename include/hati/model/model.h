@@ -7,6 +7,7 @@
 #include <hati/base/registry.h>
 #include <hati/base/summary_value.h>
 #include <hati/model/discrete_system.h>
+#include <hati/model/response_quantities.h>
 
 #include <array>
 #include <functional>
@@ -354,6 +355,24 @@ public:
   virtual void write_envelope_file(const std::string & /*name*/,
                                    std::ostream & /*out*/) const
   {
+  }
+
+  /**
+   * The groups of linear response quantities that a response-spectrum
+   * analysis combines (ResponseGroup, doc/theory.md 14.6; a frame: every
+   * member's six section forces at its stations). None by default.
+   */
+  virtual std::vector<ResponseGroup> response_groups() const { return {}; }
+
+  /**
+   * The values of response_groups() for the displacement @p U (m, the
+   * model's constraints not yet distributed), one group after another in
+   * @p values (resized to the sum of their sizes).
+   */
+  virtual void response_values(const Vector<double> & /*U*/,
+                               std::vector<double> &values) const
+  {
+    values.clear();
   }
 
 protected:

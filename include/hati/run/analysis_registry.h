@@ -19,8 +19,8 @@ class RunDirectory;
 using AnalysisRunner = std::function<void(Problem &, RunDirectory &)>;
 
 /**
- * The analyses of `Analysis/Type` (transient, static, modal), registered in
- * source/run/analysis_registry.cc.
+ * The analyses of `Analysis/Type` (transient, static, modal, response spectrum),
+ * registered in source/run/analysis_registry.cc.
  */
 const Registry<AnalysisRunner> &analysis_registry();
 
@@ -36,6 +36,7 @@ const Registry<AnalysisRunner> &method_registry();
 void run_transient_analysis(Problem &problem, RunDirectory &directory);
 void run_static_analysis(Problem &problem, RunDirectory &directory);
 void run_modal_analysis(Problem &problem, RunDirectory &directory);
+void run_response_spectrum_analysis(Problem &problem, RunDirectory &directory);
 void run_cd_lagrange(Problem &problem, RunDirectory &directory);
 void run_event_driven(Problem &problem, RunDirectory &directory);
 void run_newmark(Problem &problem, RunDirectory &directory);

@@ -4,6 +4,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <hati/analysis/response_spectrum_analysis.h>
 #include <hati/base/summary_value.h>
 #include <hati/model/decomposition.h>
 #include <hati/model/discrete_system.h>
@@ -116,6 +117,12 @@ public:
   void warn(const std::string &message);
 
   AnalysisParameters analysis_parameters;
+  /**
+   * `subsection Response spectrum` and the `Design spectrum` it uses, read
+   * for Analysis/Type = response spectrum only.
+   */
+  ResponseSpectrumParameters response_spectrum_parameters;
+  DesignSpectrumParameters design_spectrum_parameters;
   TimeIntegrationParameters time_parameters;
   NewmarkParameters newmark_parameters;
   /** Time integration/Damping, with the model's default Rayleigh damping applied. */
