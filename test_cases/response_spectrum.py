@@ -33,7 +33,11 @@ computed here, independently of hati:
 6. The crane (bridge_crane_hati.prm): the kept modes' effective mass plus
    the missing mass (computed from the missing-mass load itself) is the
    crane's mass per direction (1e-8), the trolley wheels' lift-off is
-   flagged where min_force < 0."""
+   flagged where min_force < 0.
+7. The 3D crane (solid girders, 0.4 m plates): the same mass sum, and the
+   largest cell value of stress_envelope.vtu is the girders'
+   max_von_mises of response_spectrum.csv (the combined components' von
+   Mises stress, at least each direction's)."""
 import csv
 import json
 import math
@@ -318,4 +322,30 @@ ctx.check_true("crane: the trolley wheels are predicted to lift off (a_g = 2 m/s
                all(wheels["trolley_wheel_%d" % i]["uplift_predicted"] for i in range(1, 5)))
 ctx.check_true("crane: the terminal prints the contact table",
                "uplift predicted" in p.stdout)
+# 7. the 3D crane (solid girders, 0.4 m plates): the stress envelope
+from vtu_files import read_vtu  # noqa: E402
+
+out, p = ctx.run(ctx.prm("bridge_crane_3d.prm"), "crane_3d",
+                 ["Analysis/Type=response spectrum", "Design spectrum/Type=EC8 type 1",
+                  "Design spectrum/Peak ground acceleration=2",
+                  "Loading/Accelerogram X=", "Loading/Accelerogram Z=",
+                  "Model/Decomposition/Implicit reduction=none"])
+table = rows(out)
+rs = read_summary(out)["response_spectrum"]
+for axis in "XYZ":
+    ctx.check("3D crane %s: effective + missing mass ratio" % axis,
+              rs["effective_mass_ratio"][axis] + rs["missing_mass_ratio"][axis], 1.0,
+              rel=1e-8)
+points, cells, fields = read_vtu(os.path.join(out, "stress_envelope.vtu"))
+envelope = max(fields["max_von_mises"][1])
+girders = max(value(table, "girder_%d.max_von_mises" % g) for g in (1, 2))
+# the VTU holds Float32 values
+ctx.check("3D crane: the largest cell of stress_envelope.vtu = the girders' "
+          "max_von_mises (Pa)", envelope, girders, rel=1e-6)
+for g in (1, 2):
+    r = table["girder_%d.max_von_mises" % g]
+    ctx.check_true("3D crane girder_%d: combined von Mises >= each direction's" % g,
+                   float(r["combined"]) >= max(float(r[d]) for d in "XYZ"))
+    ctx.check_true("3D crane girder_%d: a stress of tens of MPa (not zero, not absurd)" % g,
+                   1e6 < float(r["combined"]) < 3.55e8, "(%s Pa)" % r["combined"])
 ctx.finish()

@@ -575,6 +575,7 @@ ResponseSpectrumAnalysis::ResponseSpectrumAnalysis(
     SpectralQuantity q{row.name, row.unit, {{0., 0., 0.}}, 0.};
     if (row.stress)
     {
+      envelopes.emplace_back(row.size / 6, 0.);
       for (std::size_t p = 0; p < row.size / 6; ++p)
       {
         std::array<std::array<double, 6>, 3> peaks{};
@@ -590,7 +591,8 @@ ResponseSpectrumAnalysis::ResponseSpectrumAnalysis(
         }
         for (const unsigned int d : directions)
           q.peak[d] = std::max(q.peak[d], von_mises_of(peaks[d].data()));
-        q.combined = std::max(q.combined, von_mises_of(total.data()));
+        envelopes.back()[p] = von_mises_of(total.data());
+        q.combined = std::max(q.combined, envelopes.back()[p]);
       }
     }
     else

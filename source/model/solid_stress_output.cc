@@ -153,6 +153,18 @@ void SolidStressOutput::write_envelope(std::ostream &out) const
   data_out.write_vtu(out);
 }
 
+void SolidStressOutput::write_cell_envelope(std::ostream &out,
+                                            const std::vector<double> &cell_values) const
+{
+  AssertThrow(cell_values.size() == cell_max.size(), ExcInternalError());
+  const Vector<double> value(cell_values.begin(), cell_values.end());
+  DataOut<3> data_out;
+  data_out.attach_triangulation(solids.dofs().get_triangulation());
+  data_out.add_data_vector(value, "max_von_mises", DataOut<3>::type_cell_data);
+  data_out.build_patches();
+  data_out.write_vtu(out);
+}
+
 SummaryValue SolidStressOutput::summary() const
 {
   SummaryValue result = SummaryValue::object();

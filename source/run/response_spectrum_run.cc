@@ -198,6 +198,12 @@ void run_response_spectrum_analysis(Problem &problem, RunDirectory &directory)
   directory.replace(
       "response_spectrum_modes.csv", modes_csv(rsa, parameters.directions), true);
   directory.replace("response_spectrum.csv", quantities_csv(rsa), true);
+  for (const std::string &name : problem.model->response_envelope_files())
+  {
+    std::ostringstream file;
+    problem.model->write_response_envelope(name, rsa.stress_envelopes(), file);
+    directory.replace(name, file.str(), true);
+  }
 
   // the table: every quantity but the stations' detail
   std::cout << "  " << std::left << std::setw(36) << "quantity" << std::setw(7) << "unit"

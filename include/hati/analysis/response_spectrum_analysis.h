@@ -134,6 +134,12 @@ public:
   const std::vector<SpectralMode> &modes() const { return kept_modes; }
   /** The rows of response_spectrum.csv, in order. */
   const std::vector<SpectralQuantity> &quantities() const { return rows; }
+  /**
+   * Per stress group of the model's response_groups(), in their order, the
+   * combined von Mises stress (Pa) at each of its points
+   * (Model::write_response_envelope()).
+   */
+  const std::vector<std::vector<double>> &stress_envelopes() const { return envelopes; }
   /** The contacts (summary.json), in the order of their first row. */
   const std::vector<SpectralContact> &contacts() const { return contact_results; }
   /** The total mass m_d per axis (kg). */
@@ -159,6 +165,7 @@ private:
   std::vector<SpectralMode> kept_modes;
   std::vector<SpectralQuantity> rows;
   std::vector<SpectralContact> contact_results;
+  std::vector<std::vector<double>> envelopes;
   /** The contact rows of each entry of contact_results. */
   std::vector<std::vector<unsigned int>> contact_rows;
   std::array<double, 3> masses{{0., 0., 0.}}, effective_ratio{{0., 0., 0.}},

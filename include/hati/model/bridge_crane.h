@@ -223,6 +223,18 @@ public:
   {
     frame.response_values(U, values);
   }
+  /** Frame::response_envelope_files(). */
+  std::vector<std::string> response_envelope_files() const override
+  {
+    return frame.response_envelope_files();
+  }
+  /** Frame::write_response_envelope(). */
+  void write_response_envelope(const std::string &name,
+                               const std::vector<std::vector<double>> &von_mises,
+                               std::ostream &out) const override
+  {
+    frame.write_response_envelope(name, von_mises, out);
+  }
   std::string description() const override;
   /** Frame::describe_dof(). */
   DofDescription describe_dof(const types::global_dof_index dof) const override

@@ -82,12 +82,19 @@ public:
   /**
    * Every member's section forces N, Vy, Vz, T, My, Mz (N, N m) at both
    * ends of each of its elements (`<member>.N`, ...), in the order of the
-   * members (frame_response.cc).
+   * members, then every solid's stress tensor at the quadrature points of
+   * its cells (`<solid>.max_von_mises`, Pa; frame_response.cc).
    */
   std::vector<ResponseGroup> response_groups() const override;
   /** The section forces of response_groups() for @p U, without the own weight. */
   void response_values(const Vector<double> &U,
                        std::vector<double> &values) const override;
+  /** `stress_envelope.vtu` for a frame with solids, none otherwise. */
+  std::vector<std::string> response_envelope_files() const override;
+  /** `stress_envelope.vtu`: per solid cell the largest combined von Mises stress. */
+  void write_response_envelope(const std::string &name,
+                               const std::vector<std::vector<double>> &von_mises,
+                               std::ostream &out) const override;
   std::vector<std::string> vtu_series() const override;
   /** The snapshot of `solids` (SolidStressOutput::write_vtu()). */
   void write_series_vtu(const std::string &series,

@@ -375,6 +375,25 @@ public:
     values.clear();
   }
 
+  /**
+   * The files a response-spectrum analysis writes from the combined values
+   * of the stress groups of response_groups() (a frame with solids:
+   * `stress_envelope.vtu`); none by default.
+   */
+  virtual std::vector<std::string> response_envelope_files() const { return {}; }
+
+  /**
+   * The file @p name of response_envelope_files() from @p von_mises: per
+   * stress group of response_groups(), in their order, the combined von
+   * Mises stress (Pa) at each of its points.
+   */
+  virtual void
+  write_response_envelope(const std::string & /*name*/,
+                          const std::vector<std::vector<double>> & /*von_mises*/,
+                          std::ostream & /*out*/) const
+  {
+  }
+
 protected:
   /** Whether build() assembles the active cell @p index (select_part()). */
   bool cell_selected(const unsigned int index) const

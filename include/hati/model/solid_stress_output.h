@@ -62,6 +62,14 @@ public:
   void write_envelope(std::ostream &out) const;
 
   /**
+   * A `stress_envelope.vtu` of given values: per active cell of the solids
+   * `max_von_mises` (Pa) from @p cell_values (one per cell), e.g. the
+   * combined von Mises stress of a response-spectrum analysis.
+   */
+  void write_cell_envelope(std::ostream &out,
+                           const std::vector<double> &cell_values) const;
+
+  /**
    * summary.json `solids`: per solid name,
    * `{"max_von_mises": {"value" (Pa), "time" (s), "point" [x, y, z] (m)}}`.
    */
