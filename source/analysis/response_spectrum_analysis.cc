@@ -325,6 +325,7 @@ ResponseSpectrumAnalysis::ResponseSpectrumAnalysis(
     const DesignSpectrum &spectrum,
     const Vector<double> &rope_state,
     const std::string &linear_solver)
+    : model(model)
 {
   const auto start = std::chrono::steady_clock::now();
   const unsigned int n = system.n_dofs();
@@ -430,14 +431,15 @@ ResponseSpectrumAnalysis::ResponseSpectrumAnalysis(
   // the layout: monitors' displacements, the model's groups, the contacts
   // (the displacement block, from U and its load), then the monitors'
   // accelerations and the base reaction
-  std::vector<RowLayout> layout;
+  std::vector<RowLayout> rows_layout;
   std::size_t n_values = 0;
   const auto add_row = [&](const std::string &name,
                            const std::string &unit,
                            const std::size_t size,
                            const bool stress)
   {
-    layout.push_back({name, unit, n_values, size, stress});
+    rows_layout.push_back({name, unit, n_values, size, stress});
+    layout.push_back({n_values, size, stress});
     n_values += size;
   };
   // the monitors' translations (their rotations are not reported)
@@ -450,10 +452,11 @@ ResponseSpectrumAnalysis::ResponseSpectrumAnalysis(
         add_row(m.name + ".u" + m.labels[i], "m", 1, false);
       }
   const std::vector<ResponseGroup> groups = model.response_groups();
-  const std::size_t first_group_value = n_values;
+  first_group_value = n_values;
   for (const ResponseGroup &g : groups)
     add_row(g.name, g.unit, g.size, g.stress);
   const std::size_t first_contact_value = n_values;
+  n_group_values = first_contact_value - first_group_value;
   for (const std::string &name : contacts.names)
     add_row(name + ".force", "N", 1, false);
   const std::size_t n_displacement_values = n_values;
@@ -570,7 +573,8 @@ ResponseSpectrumAnalysis::ResponseSpectrumAnalysis(
     return correlation.combine(modal.data(), missing);
   };
   // the rows of the displacement block
-  for (const RowLayout &row : layout)
+  combined_values.assign(n_displacement_values, 0.);
+  for (const RowLayout &row : rows_layout)
   {
     SpectralQuantity q{row.name, row.unit, {{0., 0., 0.}}, 0.};
     if (row.stress)
@@ -588,6 +592,7 @@ ResponseSpectrumAnalysis::ResponseSpectrumAnalysis(
                 modal_values, n_displacement_values, j, q_peak[d], missing_values[d][j]);
           total[c] = combine_directions({{peaks[0][c], peaks[1][c], peaks[2][c]}},
                                         parameters.directional_combination);
+          combined_stress.push_back(total[c]);
         }
         for (const unsigned int d : directions)
           q.peak[d] = std::max(q.peak[d], von_mises_of(peaks[d].data()));
@@ -604,8 +609,8 @@ ResponseSpectrumAnalysis::ResponseSpectrumAnalysis(
               modal_values, n_displacement_values, j, q_peak[d], missing_values[d][j]);
         for (unsigned int d = 0; d < 3; ++d)
           q.peak[d] = std::max(q.peak[d], peak[d]);
-        q.combined = std::max(
-            q.combined, combine_directions(peak, parameters.directional_combination));
+        combined_values[j] = combine_directions(peak, parameters.directional_combination);
+        q.combined = std::max(q.combined, combined_values[j]);
       }
     rows.push_back(q);
   }
@@ -614,7 +619,7 @@ ResponseSpectrumAnalysis::ResponseSpectrumAnalysis(
   {
     SpectralContact contact;
     contact.name = contacts.names[c];
-    contact.change = rows[layout.size() - contacts.names.size() + c].combined;
+    contact.change = rows[rows_layout.size() - contacts.names.size() + c].combined;
     contact.two_sided = contacts.two_sided[c];
     contact_results.push_back(contact);
     contact_rows.push_back(contacts.members[c]);
@@ -651,13 +656,49 @@ ResponseSpectrumAnalysis::ResponseSpectrumAnalysis(
   wall_times[3] = seconds_since(combine_start);
 }
 
-void ResponseSpectrumAnalysis::set_static_forces(const std::vector<double> &static_forces)
+void ResponseSpectrumAnalysis::set_static_state(const Vector<double> &U,
+                                                const std::vector<double> &static_forces)
 {
   for (std::size_t c = 0; c < contact_results.size(); ++c)
   {
     contact_results[c].static_force = 0.;
     for (const unsigned int k : contact_rows[c])
       contact_results[c].static_force += k < static_forces.size() ? static_forces[k] : 0.;
+  }
+  // the static values of the model's groups (with the members' own weight);
+  // the monitors' and contacts' rows are changes about it
+  std::vector<double> values;
+  model.response_values(U, values, true);
+  AssertThrow(values.size() == n_group_values, ExcInternalError());
+  std::size_t stress_point = 0;
+  for (std::size_t r = 0; r < layout.size(); ++r)
+  {
+    const Row &row = layout[r];
+    SpectralQuantity &q = rows[r];
+    const bool in_group =
+        row.first >= first_group_value && row.first < first_group_value + n_group_values;
+    if (!in_group)
+    {
+      q.with_static = q.combined;
+      continue;
+    }
+    q.with_static = 0.;
+    const double *s = values.data() + (row.first - first_group_value);
+    if (row.stress)
+      for (std::size_t p = 0; p < row.size / 6; ++p, ++stress_point)
+      {
+        std::array<double, 6> moved;
+        for (unsigned int c = 0; c < 6; ++c)
+        {
+          const double st = s[6 * p + c], comb = combined_stress[6 * stress_point + c];
+          moved[c] = st + (st < 0. ? -comb : comb);
+        }
+        q.with_static = std::max(q.with_static, von_mises_of(moved.data()));
+      }
+    else
+      for (std::size_t j = 0; j < row.size; ++j)
+        q.with_static =
+            std::max(q.with_static, std::abs(s[j]) + combined_values[row.first + j]);
   }
 }
 } // namespace hati

@@ -52,7 +52,9 @@ std::vector<ResponseGroup> Frame::response_groups() const
   return groups;
 }
 
-void Frame::response_values(const Vector<double> &U, std::vector<double> &values) const
+void Frame::response_values(const Vector<double> &U,
+                            std::vector<double> &values,
+                            const bool own_weight) const
 {
   Vector<double> u(U);
   constraints.distribute(u);
@@ -62,7 +64,7 @@ void Frame::response_values(const Vector<double> &U, std::vector<double> &values
   for (unsigned int k = 0; k < cells.size(); ++k)
     member_cells[cells[k].member].push_back(k);
   values.clear();
-  const Tensor<1, 3> no_gravity;
+  const Tensor<1, 3> span_load = own_weight ? gravity : Tensor<1, 3>();
   std::vector<std::array<double, 12>> forces;
   for (unsigned int m = 0; m < frame.members.size(); ++m)
   {
@@ -70,7 +72,7 @@ void Frame::response_values(const Vector<double> &U, std::vector<double> &values
       continue;
     forces.clear();
     for (const unsigned int k : member_cells[m])
-      forces.push_back(frame_cell_section_forces(cells[k], u, no_gravity));
+      forces.push_back(frame_cell_section_forces(cells[k], u, span_load));
     for (unsigned int c = 0; c < 6; ++c)
       for (const auto &s : forces)
       {

@@ -56,6 +56,14 @@ std::string read_member_summary(const std::string &folder, MemberResult &result)
                  "value",
                  "max_absolute_acceleration",
                  values);
+  if (summary.contains("solids") && summary["solids"].is_object())
+    for (const auto &[name, entry] : summary["solids"].items())
+      if (entry.is_object() && entry.contains("max_von_mises") &&
+          entry["max_von_mises"].is_object() &&
+          entry["max_von_mises"].contains("value") &&
+          entry["max_von_mises"]["value"].is_number())
+        values.emplace_back(name + ".max_von_mises",
+                            entry["max_von_mises"]["value"].get<double>());
   if (summary.contains("rope_tension"))
     add_per_name(summary["rope_tension"], "max", "max_tension", values);
   if (summary.contains("wall_time") && summary["wall_time"].is_number())

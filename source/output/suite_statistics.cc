@@ -199,6 +199,29 @@ std::string SuiteStatistics::summary_json(const SummaryEntries &extra) const
   return out + "}\n";
 }
 
+std::vector<std::pair<std::string, double>>
+SuiteStatistics::group_statistic(const unsigned int group) const
+{
+  std::vector<std::pair<std::string, double>> result;
+  const auto all = groups();
+  if (group >= all.size())
+    return result;
+  for (const auto &quantity : quantities())
+  {
+    std::vector<std::pair<double, unsigned int>> values;
+    for (const unsigned int i : all[group])
+      if (results[i].usable())
+        for (const auto &[key, value] : results[i].values)
+          if (key == quantity)
+            values.emplace_back(value, i);
+    if (values.empty())
+      continue;
+    const Statistic s = statistic_of(values);
+    result.emplace_back(quantity, statistic == "mean" ? s.mean : s.max);
+  }
+  return result;
+}
+
 std::string SuiteStatistics::spectra_csv() const
 {
   std::map<unsigned int, SpectraTable> tables;

@@ -64,6 +64,84 @@ std::string quantities_csv(const ResponseSpectrumAnalysis &rsa)
   return csv.str();
 }
 
+/**
+ * The combined value of the row @p name of @p rsa (-1 if it has none), with
+ * @p with_static its SpectralQuantity::with_static.
+ */
+double combined_value(const ResponseSpectrumAnalysis &rsa,
+                      const std::string &name,
+                      const bool with_static = false)
+{
+  for (const SpectralQuantity &q : rsa.quantities())
+    if (q.name == name)
+      return with_static ? q.with_static : q.combined;
+  return -1.;
+}
+
+/**
+ * What a transient run's summary.json gives too, for the comparison with a
+ * suite, with the static state as a time history's envelope has it:
+ * `section_force_envelope` (N, My, Mz: the largest |static| + combined
+ * value over the model's section force members, with the member),
+ * `max_absolute_acceleration` per monitor (the length of the vector of its
+ * combined component peaks: an upper bound, they do not occur at once) and
+ * `max_von_mises` per solid (static and combined, SpectralQuantity::with_static).
+ */
+void add_comparable_entries(const ResponseSpectrumAnalysis &rsa,
+                            const Problem &problem,
+                            SummaryValue &entry)
+{
+  // static + combined: the time histories' envelopes hold the static state
+  const std::vector<std::string> members = problem.model->section_force_members();
+  if (!members.empty())
+  {
+    SummaryValue envelope = SummaryValue::object();
+    for (const char *force : {"N", "My", "Mz"})
+    {
+      double largest = -1.;
+      std::string where;
+      for (const std::string &m : members)
+      {
+        const double v = combined_value(rsa, m + "." + force, true);
+        if (v > largest)
+        {
+          largest = v;
+          where = m;
+        }
+      }
+      if (largest >= 0.)
+        envelope.set(force,
+                     SummaryValue::object().set("max_abs", largest).set("member", where));
+    }
+    entry.set("section_force_envelope", envelope);
+  }
+  SummaryValue accelerations = SummaryValue::object();
+  for (const MonitorPoint &m : problem.system.monitors)
+  {
+    double sum = 0.;
+    bool any = false;
+    for (const char *c : {".ax", ".ay", ".az"})
+    {
+      const double v = combined_value(rsa, m.name + c);
+      if (v >= 0.)
+      {
+        sum += v * v;
+        any = true;
+      }
+    }
+    if (any)
+      accelerations.set(m.name, std::sqrt(sum));
+  }
+  entry.set("max_absolute_acceleration", accelerations);
+  SummaryValue solids = SummaryValue::object();
+  const std::string suffix = ".max_von_mises";
+  for (const SpectralQuantity &q : rsa.quantities())
+    if (q.name.size() > suffix.size() &&
+        q.name.compare(q.name.size() - suffix.size(), suffix.size(), suffix) == 0)
+      solids.set(q.name.substr(0, q.name.size() - suffix.size()), q.with_static);
+  entry.set("max_von_mises", solids);
+}
+
 /** The `response_spectrum` entry of summary.json. */
 SummaryValue summary_entry(const ResponseSpectrumAnalysis &rsa,
                            const ResponseSpectrumParameters &parameters)
@@ -147,7 +225,7 @@ void run_response_spectrum_analysis(Problem &problem, RunDirectory &directory)
                                problem.newmark_parameters.linear_solver);
   if (system.ropes.empty())
     static_state();
-  rsa.set_static_forces(forces);
+  rsa.set_static_state(U, forces);
   const auto output_start = std::chrono::steady_clock::now();
 
   std::cout << "  response spectrum: " << name_of(parameters.modal_combination)
@@ -234,10 +312,12 @@ void run_response_spectrum_analysis(Problem &problem, RunDirectory &directory)
           .count();
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  SummaryValue rsa_entry = summary_entry(rsa, parameters);
+  add_comparable_entries(rsa, problem, rsa_entry);
   SummaryEntries summary{{"analysis", "response spectrum"},
                          {"model", problem.model->description()},
                          {"n_dofs", system.n_dofs()},
-                         {"response_spectrum", summary_entry(rsa, parameters)},
+                         {"response_spectrum", rsa_entry},
                          {"wall_time", wall},
                          {"wall_time_parts",
                           SummaryValue::object()

@@ -49,6 +49,15 @@ void SuiteParameters::declare_parameters(ParameterHandler &prm)
       "factor (use Scale factors) nor, with Records, Loading/Accelerogram X|Y|Z. A "
       "suite has at most 10000 members (records x scale factors x variations).");
   prm.declare_entry(
+      "Response spectrum comparison",
+      "true",
+      Patterns::Bool(),
+      "With a subsection Design spectrum: also run the response-spectrum analysis of "
+      "the model (the first member's parameters, Analysis/Type = response spectrum, "
+      "the directions of the records, in <output>/response_spectrum/) and compare it "
+      "with the suite's statistic (rsa_comparison.csv, rsa_comparison.png, "
+      "suite_summary.json rsa_comparison).");
+  prm.declare_entry(
       "Statistic",
       "",
       Patterns::Selection("|envelope|mean"),
@@ -169,6 +178,7 @@ void SuiteParameters::parse_parameters(ParameterHandler &prm,
   const std::string scales_text = prm.get("Scale factors");
   const std::string variations_text = prm.get("Variations");
   statistic = prm.get("Statistic");
+  response_spectrum_comparison = prm.get_bool("Response spectrum comparison");
   fundamental_period = prm.get_double("Fundamental period");
   prm.leave_subsection();
   if (Utilities::trim(records_text) == "artificial")

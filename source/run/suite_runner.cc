@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
+#include <hati/base/silence.h>
 #include <hati/output/design_spectrum_check.h>
 #include <hati/output/output_file.h>
 #include <hati/output/plot_script.h>
@@ -86,26 +87,6 @@ private:
   std::unique_ptr<OutputStream> log;
 };
 
-/** std::cout and std::cerr discarded while it lives (the dry runs of the checks). */
-class Silence
-{
-public:
-  Silence() : out(std::cout.rdbuf(&null)), err(std::cerr.rdbuf(&null)) {}
-  ~Silence()
-  {
-    std::cout.rdbuf(out);
-    std::cerr.rdbuf(err);
-  }
-
-private:
-  class Null : public std::streambuf
-  {
-  protected:
-    int_type overflow(int_type c) override { return traits_type::not_eof(c); }
-  } null;
-  std::streambuf *out, *err;
-};
-
 /** The suite's own files in its folder (links there refused, old ones deleted). */
 const char *const suite_files[] = {"suite.csv",
                                    "design_spectrum_check.csv",
@@ -113,7 +94,10 @@ const char *const suite_files[] = {"suite.csv",
                                    "suite_spectra.csv",
                                    "suite.png",
                                    "spectra.png",
-                                   "plot_suite.log"};
+                                   "plot_suite.log",
+                                   "rsa_comparison.csv",
+                                   "rsa_comparison.png",
+                                   "plot_rsa_comparison.log"};
 
 /** The lock of a suite's folder: a second suite there is refused. */
 const char *const suite_lock_name = ".hati-suite.lock";
@@ -515,6 +499,8 @@ int SuiteRunner::finish(std::vector<MemberResult> &results, const double wall_ti
                 << (check_error.rfind(prefix, 0) == 0 ? "" : prefix) << check_error
                 << std::endl;
     }
+  if (design_spectrum.active() && suite.response_spectrum_comparison && !stop_requested())
+    compare_with_response_spectrum(statistics, extra);
   out.replace("suite.csv", statistics.csv(), true);
   out.replace("suite_summary.json", statistics.summary_json(extra), true);
   const std::string spectra = statistics.spectra_csv();
@@ -539,6 +525,15 @@ int SuiteRunner::finish(std::vector<MemberResult> &results, const double wall_ti
     else
       std::cerr << "hati: warning: suite: the plots were not drawn: " << warning
                 << std::endl;
+    if (std::filesystem::is_regular_file(folder + "/rsa_comparison.csv"))
+    {
+      const std::string rsa_warning = run_plot_script("plot_rsa_comparison.py", folder);
+      if (rsa_warning.empty())
+        std::cout << "  plot: " << folder << "/rsa_comparison.png" << std::endl;
+      else
+        std::cerr << "hati: warning: suite: rsa_comparison.png was not drawn: "
+                  << rsa_warning << std::endl;
+    }
   }
   if (stop_requested())
   {

@@ -1,4 +1,5 @@
 #include <hati/base/names.h>
+#include <hati/output/run_directory.h>
 #include <hati/run/analysis_registry.h>
 #include <hati/run/problem.h>
 

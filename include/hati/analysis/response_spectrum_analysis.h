@@ -77,6 +77,14 @@ struct SpectralQuantity
   std::string name, unit;
   std::array<double, 3> peak{{0., 0., 0.}};
   double combined = 0.;
+  /**
+   * With the static state (ResponseSpectrumAnalysis::set_static_state()):
+   * the largest over the stations of |static| + combined (a stress: the von
+   * Mises stress of the static components moved away from zero by the
+   * combined ones), the value a time history's envelope (static and
+   * dynamic) compares with; -1 before.
+   */
+  double with_static = -1.;
 };
 
 /** What the linear method says about a contact (summary.json). */
@@ -125,10 +133,13 @@ public:
                            const std::string &linear_solver);
 
   /**
-   * The contacts' static forces from @p static_forces, the static force of
-   * every contact row (N, solve_static()), summed per contact.
+   * The static state @p U (m, solve_static() under the constant loads) and
+   * @p static_forces, the static force of every contact row (N): each
+   * contact's static force (summed over its rows), each quantity's
+   * SpectralQuantity::with_static.
    */
-  void set_static_forces(const std::vector<double> &static_forces);
+  void set_static_state(const Vector<double> &U,
+                        const std::vector<double> &static_forces);
 
   /** The modes combined, ascending. */
   const std::vector<SpectralMode> &modes() const { return kept_modes; }
@@ -166,6 +177,20 @@ private:
   std::vector<SpectralQuantity> rows;
   std::vector<SpectralContact> contact_results;
   std::vector<std::vector<double>> envelopes;
+  /** The model (set_static_state()). */
+  const Model &model;
+  /** The quantities of the displacement block and how they lie in their values. */
+  struct Row
+  {
+    std::size_t first = 0, size = 1;
+    bool stress = false;
+  };
+  std::vector<Row> layout;
+  /** The combined value of every value of the displacement block (stresses: 0). */
+  std::vector<double> combined_values;
+  /** The combined components of every stress point (6 per point, group after group). */
+  std::vector<double> combined_stress;
+  std::size_t first_group_value = 0, n_group_values = 0;
   /** The contact rows of each entry of contact_results. */
   std::vector<std::vector<unsigned int>> contact_rows;
   std::array<double, 3> masses{{0., 0., 0.}}, effective_ratio{{0., 0., 0.}},

@@ -219,9 +219,15 @@ public:
   }
   /** Frame::response_values(). */
   void response_values(const Vector<double> &U,
-                       std::vector<double> &values) const override
+                       std::vector<double> &values,
+                       const bool own_weight = false) const override
   {
-    frame.response_values(U, values);
+    frame.response_values(U, values, own_weight);
+  }
+  /** Frame::section_force_members() (the girders). */
+  std::vector<std::string> section_force_members() const override
+  {
+    return frame.section_force_members();
   }
   /** Frame::response_envelope_files(). */
   std::vector<std::string> response_envelope_files() const override

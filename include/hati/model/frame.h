@@ -86,9 +86,15 @@ public:
    * its cells (`<solid>.max_von_mises`, Pa; frame_response.cc).
    */
   std::vector<ResponseGroup> response_groups() const override;
-  /** The section forces of response_groups() for @p U, without the own weight. */
+  /** The section forces and stresses of response_groups() for @p U. */
   void response_values(const Vector<double> &U,
-                       std::vector<double> &values) const override;
+                       std::vector<double> &values,
+                       const bool own_weight = false) const override;
+  /** `Section force members`. */
+  std::vector<std::string> section_force_members() const override
+  {
+    return frame.section_force_members;
+  }
   /** `stress_envelope.vtu` for a frame with solids, none otherwise. */
   std::vector<std::string> response_envelope_files() const override;
   /** `stress_envelope.vtu`: per solid cell the largest combined von Mises stress. */

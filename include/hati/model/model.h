@@ -367,13 +367,23 @@ public:
   /**
    * The values of response_groups() for the displacement @p U (m, the
    * model's constraints not yet distributed), one group after another in
-   * @p values (resized to the sum of their sizes).
+   * @p values (resized to the sum of their sizes); with @p own_weight, the
+   * members' own weight as span loads is in the section forces (the static
+   * state's values; a vibration's have none).
    */
   virtual void response_values(const Vector<double> & /*U*/,
-                               std::vector<double> &values) const
+                               std::vector<double> &values,
+                               const bool /*own_weight*/ = false) const
   {
     values.clear();
   }
+
+  /**
+   * The members whose section forces a transient run writes and envelopes
+   * (`Section force members`; a bridge crane: its girders), for the
+   * comparison of a response-spectrum analysis with them. None by default.
+   */
+  virtual std::vector<std::string> section_force_members() const { return {}; }
 
   /**
    * The files a response-spectrum analysis writes from the combined values

@@ -53,7 +53,8 @@ struct MemberResult
  * @p result.values: per wheel (`wheels`) `<wheel>.peak_mean_force` (N),
  * `<wheel>.slip_distance` (m, when present) and `<wheel>.uplift_time` (s);
  * the section-force envelope `section_force.N`, `.My`, `.Mz` (N, N m);
- * `<monitor>.max_absolute_acceleration` (m/s^2); per rope
+ * `<monitor>.max_absolute_acceleration` (m/s^2); per solid
+ * `<solid>.max_von_mises` (Pa, when present); per rope
  * `<rope>.max_tension` (N, when present); and the run's `wall_time`.
  */
 std::string read_member_summary(const std::string &folder, MemberResult &result);

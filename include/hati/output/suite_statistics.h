@@ -45,6 +45,14 @@ public:
   std::string summary_json(const SummaryEntries &extra = {}) const;
 
   /**
+   * The statistic (the suite's: mean or envelope) of every quantity over
+   * the usable members of the group @p group (0: the first scale factor
+   * and variation), in the order of quantities().
+   */
+  std::vector<std::pair<std::string, double>>
+  group_statistic(unsigned int group = 0) const;
+
+  /**
    * `suite_spectra.csv`: per group (scale, variation), damping ratio and
    * period the statistic of every spectrum column of the members'
    * spectra.csv (m/s^2); empty when no member has spectra.

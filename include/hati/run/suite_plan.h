@@ -77,6 +77,11 @@ struct SuiteParameters
   std::string statistic;
   /** Suite/Fundamental period (s); 0: from a modal analysis. */
   double fundamental_period = 0.;
+  /**
+   * Suite/Response spectrum comparison: with a Design spectrum, compare the
+   * suite with the response-spectrum analysis of its model.
+   */
+  bool response_spectrum_comparison = true;
 };
 
 /** One member run of a suite: which record, scale and variation, and its overrides. */

@@ -19,6 +19,8 @@ namespace hati
 {
 using namespace dealii;
 
+class SuiteStatistics;
+
 /**
  * A suite of member runs (doc/user_guide.md, "Qualifying a crane on a suite
  * of records"): each member is one Simulation (the one set-up path,
@@ -112,6 +114,17 @@ private:
    * `design_spectrum_check.csv` written; null without a target.
    */
   SummaryValue check_design_spectrum() const;
+  /**
+   * Rank 0, with a Design spectrum and Suite/Response spectrum comparison:
+   * the response-spectrum analysis of the first member's model in
+   * `<folder>/response_spectrum` (the directions of the records) against
+   * the first group's statistic of @p statistics: `rsa_comparison.csv`, the
+   * table on standard output, the suite_summary.json entry
+   * `rsa_comparison` in @p extra (suite_rsa.cc). A failure of the analysis
+   * is a warning, not the suite's.
+   */
+  void compare_with_response_spectrum(const SuiteStatistics &statistics,
+                                      SummaryEntries &extra) const;
 
   const std::string parameter_file;
   const std::vector<std::string> overrides;
