@@ -14,7 +14,7 @@
 
 namespace hati
 {
-using Json = nlohmann::json;
+using RsaJson = nlohmann::json;
 
 namespace
 {
@@ -29,9 +29,9 @@ bool ends_with(const std::string &text, const std::string &suffix, std::string &
 }
 
 /** The number at @p path in @p j, or false. */
-bool number_at(const Json &j, const std::vector<std::string> &path, double &value)
+bool number_at(const RsaJson &j, const std::vector<std::string> &path, double &value)
 {
-  const Json *node = &j;
+  const RsaJson *node = &j;
   for (const std::string &key : path)
   {
     if (!node->is_object() || !node->contains(key))
@@ -52,10 +52,10 @@ rsa_comparison_rows(const std::vector<std::pair<std::string, double>> &statistic
   std::ifstream in(rsa_summary);
   AssertThrow(in,
               ExcMessage("cannot read the response-spectrum analysis's " + rsa_summary));
-  const Json summary = Json::parse(in, nullptr, false);
+  const RsaJson summary = RsaJson::parse(in, nullptr, false);
   AssertThrow(!summary.is_discarded() && summary.contains("response_spectrum"),
               ExcMessage(rsa_summary + " has no response_spectrum entry"));
-  const Json &rs = summary["response_spectrum"];
+  const RsaJson &rs = summary["response_spectrum"];
   std::vector<ComparisonRow> rows;
   for (const auto &[quantity, value] : statistic)
   {
