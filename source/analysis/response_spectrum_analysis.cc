@@ -49,7 +49,7 @@ double von_mises_of(const double *s)
 struct Work
 {
   Work(const DiscreteSystem &system,
-       const Model &model,
+       const ResponseModel &model,
        const ResponseSpectrumParameters &parameters,
        const DesignSpectrum &spectrum,
        const HeldContacts &contacts,
@@ -60,7 +60,7 @@ struct Work
   }
 
   const DiscreteSystem &system;
-  const Model &model;
+  const ResponseModel &model;
   const ResponseSpectrumParameters &parameters;
   const DesignSpectrum &spectrum;
   const HeldContacts &contacts;
@@ -92,7 +92,7 @@ struct Work
   {
     monitor_values(U, out);
     std::vector<double> group_values;
-    model.response_values(U, group_values);
+    model.values(U, group_values, false);
     AssertThrow(group_values.size() == first_contact_value - first_group_value,
                 ExcInternalError());
     std::copy(group_values.begin(), group_values.end(), out + first_group_value);
@@ -144,15 +144,14 @@ void select_modes(Work &w)
           for (unsigned int i = 0; i < w.n; ++i)
             if (std::abs(pair.phi[i]) > std::abs(pair.phi[largest]))
               largest = i;
-          const DofDescription what = w.model.describe_dof(largest);
+          const std::string what =
+              w.model.describe_dof ? w.model.describe_dof(largest) : std::string();
           std::ostringstream s;
           s << "response spectrum: along "
             << "XYZ"[d] << " a mode of " << mode.frequency << " Hz moves " << g[d] * g[d]
             << " kg (" << std::setprecision(3) << 100. * mode.effective_mass_ratio[d]
             << " % of the mass) freely: nothing holds "
-            << (what.component.empty() ? "DoF " + std::to_string(largest)
-                                       : what.component)
-            << (what.location.empty() ? std::string() : " at " + what.location)
+            << (what.empty() ? "DoF " + std::to_string(largest) : what)
             << " (a mechanism or a rigid-body motion; add a support, or Response "
                "spectrum/Clearance contacts = closed for the flanges' play)";
           AssertThrow(false, ExcMessage(s.str()));
@@ -200,7 +199,7 @@ void lay_out(Work &w)
         add_row(m.name + ".u" + m.labels[i], "m", 1, false);
       }
   w.first_group_value = w.n_values;
-  for (const ResponseGroup &g : w.model.response_groups())
+  for (const ResponseGroup &g : w.model.groups)
     add_row(g.name, g.unit, g.size, g.stress);
   w.first_contact_value = w.n_values;
   for (const std::string &name : w.contacts.names)
@@ -433,7 +432,7 @@ Combination combine(const Work &w)
 
 ResponseSpectrumAnalysis::ResponseSpectrumAnalysis(
     const DiscreteSystem &system,
-    const Model &model,
+    const ResponseModel &model,
     const ResponseSpectrumParameters &parameters,
     const DesignSpectrum &spectrum,
     const Vector<double> &rope_state,
@@ -529,7 +528,7 @@ void ResponseSpectrumAnalysis::set_static_state(const Vector<double> &U,
   // the static values of the model's groups (with the members' own weight);
   // the monitors' and contacts' rows are changes about it
   std::vector<double> values;
-  model.response_values(U, values, true);
+  model.values(U, values, true);
   AssertThrow(values.size() == n_group_values, ExcInternalError());
   std::size_t stress_point = 0;
   for (std::size_t r = 0; r < layout.size(); ++r)

@@ -217,8 +217,20 @@ void run_response_spectrum_analysis(Problem &problem, RunDirectory &directory)
   if (!system.ropes.empty())
     static_state();
   const DesignSpectrum spectrum(problem.design_spectrum_parameters);
+  const Model &model = *problem.model;
+  ResponseModel quantities;
+  quantities.groups = model.response_groups();
+  quantities.values = [&model](const Vector<double> &u,
+                               std::vector<double> &values,
+                               const bool own_weight)
+  { model.response_values(u, values, own_weight); };
+  quantities.describe_dof = [&model](const types::global_dof_index dof)
+  {
+    const DofDescription d = model.describe_dof(dof);
+    return d.component + (d.location.empty() ? std::string() : " at " + d.location);
+  };
   ResponseSpectrumAnalysis rsa(system,
-                               *problem.model,
+                               quantities,
                                parameters,
                                spectrum,
                                U,

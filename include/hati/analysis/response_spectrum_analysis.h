@@ -7,7 +7,9 @@
 #include <hati/analysis/spectral_combination.h>
 #include <hati/loading/design_spectrum.h>
 #include <hati/model/discrete_system.h>
-#include <hati/model/model.h>
+#include <hati/model/response_quantities.h>
+
+#include <functional>
 
 #include <array>
 #include <string>
@@ -16,6 +18,25 @@
 namespace hati
 {
 using namespace dealii;
+
+/**
+ * What a response-spectrum analysis asks of the model, without the model
+ * itself (analysis/ sees no Model: the runner fills it from
+ * Model::response_groups(), Model::response_values() and
+ * Model::describe_dof()).
+ */
+struct ResponseModel
+{
+  /** The groups of linear response quantities (a frame's section forces, stresses). */
+  std::vector<ResponseGroup> groups;
+  /**
+   * Their values for a displacement (one group after another), with the
+   * members' own weight as span load when the flag is set (the static state).
+   */
+  std::function<void(const Vector<double> &, std::vector<double> &, bool)> values;
+  /** A DoF for messages, e.g. `ux at node 'A1'` (empty if unknown). */
+  std::function<std::string(types::global_dof_index)> describe_dof;
+};
 
 /** One mode of a response-spectrum analysis (response_spectrum_modes.csv). */
 struct SpectralMode
@@ -92,7 +113,7 @@ public:
    * Maximum modes, a mechanism.
    */
   ResponseSpectrumAnalysis(const DiscreteSystem &system,
-                           const Model &model,
+                           const ResponseModel &model,
                            const ResponseSpectrumParameters &parameters,
                            const DesignSpectrum &spectrum,
                            const Vector<double> &rope_state,
@@ -143,8 +164,8 @@ private:
   std::vector<SpectralQuantity> rows;
   std::vector<SpectralContact> contact_results;
   std::vector<std::vector<double>> envelopes;
-  /** The model (set_static_state()). */
-  const Model &model;
+  /** The model's quantities (set_static_state()). */
+  const ResponseModel model;
   /** The quantities of the displacement block and how they lie in their values. */
   struct Row
   {
