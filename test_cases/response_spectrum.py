@@ -37,7 +37,10 @@ computed here, independently of hati:
 7. The 3D crane (solid girders, 0.4 m plates): the same mass sum, and the
    largest cell value of stress_envelope.vtu is the girders'
    max_von_mises of response_spectrum.csv (the combined components' von
-   Mises stress, at least each direction's)."""
+   Mises stress, at least each direction's).
+8. A solid's stress against a static analysis: a box girder whose mass is
+   one point mass answers a flat spectrum as the static load m S_a at the
+   mass (1e-5): tip deflection and the girder's von Mises stress."""
 import csv
 import json
 import math
@@ -348,4 +351,31 @@ for g in (1, 2):
                    float(r["combined"]) >= max(float(r[d]) for d in "XYZ"))
     ctx.check_true("3D crane girder_%d: a stress of tens of MPa (not zero, not absurd)" % g,
                    1e6 < float(r["combined"]) < 3.55e8, "(%s Pa)" % r["combined"])
+# 8. a solid's stress against an independent path: the beam / box girder of
+# beam_solid_cantilever.prm with every density 1e-3 kg/m^3, so that its
+# mass is the 500 kg point mass at 'tip': one mode along Z carries all of
+# it, and its response to a flat S_a is the static response to the force
+# m S_a at the mass (a static analysis with that nodal load, its solids'
+# von Mises stress from SolidStressOutput's envelope). Tolerance 1e-5: the
+# structure's own mass (1.1e-7 of the total) is not in the static load.
+solid = ctx.prm("beam_solid_cantilever.prm")
+light = ["Model/Frame/Materials=steel: 2.1e11, 0.3, 1e-3",
+         "Model/Decomposition/Explicit members="]
+out, _ = ctx.run(solid, "solid_rsa",
+                 light + common + ["Model/Frame/Nodal loads=",
+                                   "Response spectrum/Directions=Z",
+                                   "Response spectrum/Missing mass=false",
+                                   "Response spectrum/Cutoff frequency=1000"])
+table = rows(out)
+static, _ = ctx.run(solid, "solid_static",
+                    light + ["Analysis/Type=static",
+                             "Model/Frame/Nodal loads=tip: 0, 0, %r" % (-500.0 * 3.0)])
+s = read_summary(static)
+with open(os.path.join(static, "history.csv")) as f:
+    uz = abs(float(list(csv.DictReader(f))[-1]["tip.uz"]))
+ctx.check("point-mass girder: tip uz = the static deflection under m S_a (m)",
+          value(table, "tip.uz"), uz, rel=1e-5)
+ctx.check("point-mass girder: girder max_von_mises = the static one under m S_a (Pa)",
+          value(table, "girder.max_von_mises"), s["solids"]["girder"]["max_von_mises"]["value"],
+          rel=1e-5)
 ctx.finish()
