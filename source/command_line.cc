@@ -6,6 +6,7 @@
 #include <boost/program_options.hpp>
 
 #include <hati/base/input_file.h>
+#include <hati/base/version.h>
 #include <hati/output/run_directory.h>
 #include <hati/run/mpi_consensus.h>
 #include <hati/run/record_generation.h>
@@ -131,6 +132,7 @@ int run_command_line(int argc, char **argv)
       "static and modal analyses of bars, solids and 3D frames\n"
       "Usage: hati file.prm [options]\nOptions");
   options.add_options()("help,h", "print this help and exit")(
+      "version", "print the git commit hati was built from and exit")(
       "print-parameters", "print every parameter with its default and documentation")(
       "set",
       po::value<std::vector<std::string>>()->composing(),
@@ -155,6 +157,11 @@ int run_command_line(int argc, char **argv)
     if (vm.count("help"))
     {
       std::cout << options << std::endl;
+      return 0;
+    }
+    if (vm.count("version"))
+    {
+      std::cout << "hati, git commit " << hati_git_commit() << std::endl;
       return 0;
     }
     if (vm.count("print-parameters"))

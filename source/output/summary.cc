@@ -1,3 +1,4 @@
+#include <hati/base/version.h>
 #include <hati/output/run_directory.h>
 #include <hati/output/summary.h>
 
@@ -78,6 +79,7 @@ void write_summary(const std::string &filename,
                    const std::vector<std::string> &warnings)
 {
   auto all = entries;
+  all.emplace_back("git_commit", hati_git_commit());
   all.emplace_back("warnings", warning_list(warnings));
   if (stop_requested())
   {
@@ -94,7 +96,9 @@ void write_summary(const std::string &filename,
 std::string failed_summary(const std::string &message,
                            const std::vector<std::string> &warnings)
 {
-  return document(
-      {{"warnings", warning_list(warnings)}, {"status", "failed"}, {"message", message}});
+  return document({{"git_commit", hati_git_commit()},
+                   {"warnings", warning_list(warnings)},
+                   {"status", "failed"},
+                   {"message", message}});
 }
 } // namespace hati
