@@ -71,17 +71,7 @@ double combine_modes(const std::vector<double> &modal,
 {
   AssertThrow(modal.size() == omega.size(),
               ExcMessage("combine_modes: one frequency per modal response expected"));
-  double sum = 0.;
-  for (std::size_t i = 0; i < modal.size(); ++i)
-  {
-    sum += modal[i] * modal[i];
-    if (rule == ModalCombination::CQC)
-      for (std::size_t j = i + 1; j < modal.size(); ++j)
-        sum += 2. * cqc_correlation(omega[i], omega[j], xi) * modal[i] * modal[j];
-  }
-  // the CQC double sum is a quadratic form with a positive semi-definite
-  // matrix: a negative sum is round-off
-  return std::sqrt(std::max(sum, 0.));
+  return ModalCorrelation(omega, xi, rule).combine(modal.data(), 0.);
 }
 
 double gupta_rigid_fraction(const double f, const double f1, const double f2)
@@ -107,16 +97,10 @@ double combine_with_rigid_part(const std::vector<double> &modal,
   AssertThrow(
       rigid_fraction.empty() || rigid_fraction.size() == modal.size(),
       ExcMessage("combine_with_rigid_part: one rigid fraction per mode expected"));
-  std::vector<double> periodic(modal);
-  double rigid = missing_mass;
-  for (std::size_t k = 0; k < rigid_fraction.size(); ++k)
-  {
-    const double alpha = rigid_fraction[k];
-    periodic[k] = std::sqrt(std::max(1. - alpha * alpha, 0.)) * modal[k];
-    rigid += alpha * modal[k];
-  }
-  const double r_periodic = combine_modes(periodic, omega, xi, rule);
-  return std::sqrt(r_periodic * r_periodic + rigid * rigid);
+  AssertThrow(modal.size() == omega.size(),
+              ExcMessage("combine_modes: one frequency per modal response expected"));
+  return ModalCorrelation(omega, xi, rule, rigid_fraction)
+      .combine(modal.data(), missing_mass);
 }
 
 ModalCorrelation::ModalCorrelation(const std::vector<double> &omega,

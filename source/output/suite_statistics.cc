@@ -32,6 +32,24 @@ struct Statistic
   unsigned int n = 0, governing = 0;
 };
 
+/**
+ * The values of @p quantity of the usable members @p members of @p results,
+ * with the index of their member.
+ */
+std::vector<std::pair<double, unsigned int>>
+member_values(const std::vector<MemberResult> &results,
+              const std::vector<unsigned int> &members,
+              const std::string &quantity)
+{
+  std::vector<std::pair<double, unsigned int>> values;
+  for (const unsigned int i : members)
+    if (results[i].usable())
+      for (const auto &[key, value] : results[i].values)
+        if (key == quantity)
+          values.emplace_back(value, i);
+  return values;
+}
+
 Statistic statistic_of(const std::vector<std::pair<double, unsigned int>> &values)
 {
   Statistic s;
@@ -161,12 +179,8 @@ std::string SuiteStatistics::summary_json(const SummaryEntries &extra) const
       names.push_back(results[i].name);
     for (const auto &quantity : quantities())
     {
-      std::vector<std::pair<double, unsigned int>> values;
-      for (const unsigned int i : members)
-        if (results[i].usable())
-          for (const auto &[key, value] : results[i].values)
-            if (key == quantity)
-              values.emplace_back(value, i);
+      const std::vector<std::pair<double, unsigned int>> values =
+          member_values(results, members, quantity);
       if (values.empty())
         continue;
       const Statistic s = statistic_of(values);
@@ -208,12 +222,8 @@ SuiteStatistics::group_statistic(const unsigned int group) const
     return result;
   for (const auto &quantity : quantities())
   {
-    std::vector<std::pair<double, unsigned int>> values;
-    for (const unsigned int i : all[group])
-      if (results[i].usable())
-        for (const auto &[key, value] : results[i].values)
-          if (key == quantity)
-            values.emplace_back(value, i);
+    const std::vector<std::pair<double, unsigned int>> values =
+        member_values(results, all[group], quantity);
     if (values.empty())
       continue;
     const Statistic s = statistic_of(values);
