@@ -632,6 +632,37 @@ std::vector<std::string> BridgeCrane::wheel_contacts() const
   return names;
 }
 
+std::vector<std::string> BridgeCrane::wheel_lateral_contacts() const
+{
+  std::vector<std::string> names = wheel_contacts();
+  for (std::string &name : names)
+    name += "_lateral";
+  return names;
+}
+
+std::vector<Model::RunwayWheel> BridgeCrane::runway_wheels() const
+{
+  if (crane.crane_wheels != "contacts")
+    return {};
+  std::vector<RunwayWheel> wheels;
+  for (unsigned int k = 1; k <= 4; ++k)
+  {
+    RunwayWheel w;
+    w.name = "crane_wheel_" + std::to_string(k);
+    w.lateral_contact = w.name + "_lateral";
+    if (crane.travel != "tied")
+    {
+      // as add_wheel_contacts(): braked wheels hold along X and Y, the
+      // others roll along X (friction across the rail only)
+      const bool braked = crane.crane_wheel_braked(k);
+      w.longitudinal_tangent = braked ? 0 : -1;
+      w.lateral_tangent = braked ? 1 : 0;
+    }
+    wheels.push_back(w);
+  }
+  return wheels;
+}
+
 DefaultDamping BridgeCrane::default_damping() const
 {
   DefaultDamping d;

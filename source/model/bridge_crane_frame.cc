@@ -365,12 +365,6 @@ void add_wheel_contacts(const CraneParameters &p, FrameDescription &f)
   // Travel = braked | free: Coulomb friction at the vertical wheel contacts,
   // a wheel that is not braked rolls along its rail (rolls=, A9)
   const bool friction = p.travel != "tied";
-  auto crane_wheel_braked = [&](const unsigned int k)
-  {
-    return p.travel == "braked" &&
-           (p.braked_crane_wheels == "all" ||
-            (p.braked_crane_wheels == "one per end carriage" && (k == 1 || k == 3)));
-  };
   auto contact = [&](const std::string &name,
                      const std::string &node_name,
                      const std::string &other,
@@ -395,8 +389,13 @@ void add_wheel_contacts(const CraneParameters &p, FrameDescription &f)
   for (unsigned int k = 1; k <= 4 && p.crane_wheels == "contacts"; ++k)
   {
     const std::string cw = "crane_wheel_" + std::to_string(k);
-    contact(
-        cw, "cw" + std::to_string(k), "", ez, 0., false, crane_wheel_braked(k) ? -1 : 0);
+    contact(cw,
+            "cw" + std::to_string(k),
+            "",
+            ez,
+            0.,
+            false,
+            p.crane_wheel_braked(k) ? -1 : 0);
     contact(cw + "_lateral", "cw" + std::to_string(k), "", ey, p.flange_clearance, true);
   }
   // solid girders: the trolley held along Y at one wheel per rail (1 and

@@ -131,6 +131,11 @@ FrameSection FrameSection::rectangle(const double b, const double h)
   s.J = a * c * c * c * (1. / 3. - 0.21 * r * (1. - r * r * r * r / 12.));
   s.shear_area_y = 5. / 6. * s.A;
   s.shear_area_z = 5. / 6. * s.A;
+  s.shape = Shape::rectangle;
+  s.b = b;
+  s.h = h;
+  s.c_y = 0.5 * b;
+  s.c_z = 0.5 * h;
   return s;
 }
 
@@ -153,6 +158,13 @@ FrameSection FrameSection::box(const double b,
         (b * t_web + h * t_flange - t_web * t_web - t_flange * t_flange);
   s.shear_area_y = 2. * t_flange * bm;
   s.shear_area_z = 2. * t_web * hm;
+  s.shape = Shape::box;
+  s.b = b;
+  s.h = h;
+  s.t_web = t_web;
+  s.t_flange = t_flange;
+  s.c_y = 0.5 * b;
+  s.c_z = 0.5 * h;
   return s;
 }
 

@@ -56,9 +56,11 @@ void FrameParameters::declare_parameters(ParameterHandler &prm)
       Patterns::Anything(),
       "Named cross-sections, 'name: kind, values; ...' with kind 'rectangle, b, h' "
       "(solid, width b along local y, height h along local z, m), 'box, b, h, t_web, "
-      "t_flange' (thin-walled closed box, m) or 'general, A, Iy, Iz, J, Asy, Asz' (m^2, "
-      "m^4, m^4, m^4, m^2, m^2; Iy = int z^2 dA for bending about local y; shear areas "
-      "Asy, Asz, 0 for no shear deformation).");
+      "t_flange' (thin-walled closed box, m) or 'general, A, Iy, Iz, J, Asy, Asz[, c_y, "
+      "c_z]' (m^2, m^4, m^4, m^4, m^2, m^2, m, m; Iy = int z^2 dA for bending about "
+      "local y; shear areas Asy, Asz, 0 for no shear deformation; c_y, c_z the extreme "
+      "fibre distances from the centroid along local y and z, optional: without them "
+      "the member has no stresses, beam_stresses in summary.json).");
   prm.declare_entry(
       "Members",
       "",
@@ -205,7 +207,18 @@ FrameSection parse_frame_section(const std::string &text, const std::string &whe
   }
   else if (kind == "general")
   {
-    expect(7, "'general, A, Iy, Iz, J, Asy, Asz'");
+    AssertThrow(values.size() == 7 || values.size() == 9,
+                ExcMessage(where + " has " + std::to_string(values.size()) +
+                           " values, expected 'general, A, Iy, Iz, J, Asy, Asz[, c_y, "
+                           "c_z]'"));
+    if (values.size() == 9)
+    {
+      AssertThrow(v[6] > 0. && v[7] > 0.,
+                  ExcMessage(where + ": the extreme fibre distances c_y, c_z of a "
+                                     "general section must be > 0 (m)"));
+      s.c_y = v[6];
+      s.c_z = v[7];
+    }
     s.A = v[0];
     s.Iy = v[1];
     s.Iz = v[2];

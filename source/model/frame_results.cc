@@ -4,6 +4,9 @@
 #include <hati/model/frame_solids.h>
 #include <hati/model/solid_stress_output.h>
 
+#include <iomanip>
+#include <sstream>
+
 namespace hati
 {
 // The results of a frame: its VTU snapshots (solution.pvd), the summary
@@ -12,6 +15,8 @@ namespace hati
 SummaryEntries Frame::summary_entries(const std::map<std::string, double> &) const
 {
   SummaryEntries entries = section_force_output.summary_entries();
+  for (auto &entry : beam_stresses.summary_entries())
+    entries.push_back(std::move(entry));
   if (solids)
     entries.emplace_back("solids", solids->stress_output().summary());
   return entries;
@@ -19,7 +24,7 @@ SummaryEntries Frame::summary_entries(const std::map<std::string, double> &) con
 
 std::string Frame::results_table() const
 {
-  return section_force_output.results_table() +
+  return section_force_output.results_table() + beam_stresses.results_table() +
          (solids ? solids->stress_output().results_table() : "");
 }
 
@@ -57,13 +62,30 @@ void Frame::write_series_vtu(const std::string &series,
       out, u, v.size() > 0 ? &v : nullptr, snapshot.time, snapshot.cycle, subdomain);
 }
 
+std::string Frame::geometry_csv() const
+{
+  std::ostringstream s;
+  s << "member,x1,y1,z1,x2,y2,z2\n" << std::setprecision(10);
+  for (const auto &cell : triangulation.active_cell_iterators())
+  {
+    s << frame.members[cells[cell->active_cell_index()].member].name;
+    for (unsigned int v = 0; v < 2; ++v)
+      for (unsigned int d = 0; d < 3; ++d)
+        s << ',' << cell->vertex(v)[d];
+    s << '\n';
+  }
+  return s.str();
+}
+
 void Frame::update_envelopes(const double time, const Vector<double> &U) const
 {
-  if (!solids)
+  if (!solids && !beam_stresses.enabled())
     return;
   Vector<double> u(U);
   constraints.distribute(u);
-  solids->stress_output().update_envelope(time, u);
+  beam_stresses.update(time, u, cells, gravity);
+  if (solids)
+    solids->stress_output().update_envelope(time, u);
 }
 
 std::vector<std::string> Frame::envelope_files() const

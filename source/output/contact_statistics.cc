@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace hati
@@ -31,6 +32,17 @@ void push_ring(double *ring,
       s += ring[i];
     sum = s;
   }
+}
+
+/** Whether the rows @p a and @p b are the two sides of one clearance (L_b = -L_a). */
+bool opposite(const ContactRow &a, const ContactRow &b)
+{
+  if (a.dofs != b.dofs)
+    return false;
+  for (unsigned int i = 0; i < a.coefficients.size(); ++i)
+    if (a.coefficients[i] != -b.coefficients[i])
+      return false;
+  return true;
 }
 } // namespace
 
@@ -65,11 +77,35 @@ ContactStatistics::ContactStatistics(const std::vector<ContactRow> &contacts,
     if (initially_touching(initial_gaps[k]))
       pushing[group_of_row[k]] = pushed_once[group_of_row[k]] = 1;
   initially_closed = pushed_once;
+  // two-sided groups with clearance: two rows of the name, neither bilateral
+  std::vector<std::vector<unsigned int>> rows(groups.size());
+  for (unsigned int k = 0; k < group_of_row.size(); ++k)
+    rows[group_of_row[k]].push_back(k);
+  offset_rows.assign(groups.size(), {{-1, -1}});
+  for (unsigned int g = 0; g < groups.size(); ++g)
+    if (rows[g].size() == 2 && !always_closed[g] &&
+        opposite(contacts[rows[g][0]], contacts[rows[g][1]]))
+    {
+      offset_rows[g] = {{int(rows[g][0]), int(rows[g][1])}};
+      groups[g].two_sided = true;
+    }
+  group_gap.assign(groups.size(), 0.);
+  for (auto &e : groups)
+    e.min_mean_force = std::numeric_limits<double>::infinity();
+}
+
+const ContactStatistics::Entry *ContactStatistics::entry(const std::string &name) const
+{
+  for (const auto &e : groups)
+    if (e.name == name)
+      return &e;
+  return nullptr;
 }
 
 void ContactStatistics::add_step(const double time,
                                  const double dt,
-                                 const std::vector<double> &impulses)
+                                 const std::vector<double> &impulses,
+                                 const std::vector<double> &gaps)
 {
   ++n_steps;
   std::fill(group_impulse.begin(), group_impulse.end(), 0.);
@@ -103,6 +139,14 @@ void ContactStatistics::add_step(const double time,
       {
         groups[g].peak_mean_force = mean_force;
         groups[g].peak_mean_force_time = time;
+      }
+      // the smallest mean over whole windows (after the first step of a
+      // contact closed in the initial state)
+      if (n_steps >= n_window + initially_closed[g] &&
+          mean_force < groups[g].min_mean_force)
+      {
+        groups[g].min_mean_force = mean_force;
+        groups[g].min_mean_force_time = time;
       }
     }
   }
@@ -150,6 +194,36 @@ void ContactStatistics::add_step(const double time,
     }
     pushing[g] = push;
   }
+  if (gaps.size() < group_of_row.size())
+    return;
+  // the uplift (the smallest gap of a name's rows) after the first push,
+  // the offset of a two-sided contact within its clearance
+  std::fill(group_gap.begin(), group_gap.end(), std::numeric_limits<double>::max());
+  for (unsigned int k = 0; k < group_of_row.size(); ++k)
+    group_gap[group_of_row[k]] = std::min(group_gap[group_of_row[k]], gaps[k]);
+  for (unsigned int g = 0; g < groups.size(); ++g)
+  {
+    Entry &e = groups[g];
+    if (always_closed[g])
+      continue;
+    if (e.two_sided)
+    {
+      const double offset =
+          0.5 * std::abs(gaps[offset_rows[g][0]] - gaps[offset_rows[g][1]]);
+      if (offset > e.max_offset)
+      {
+        e.max_offset = offset;
+        e.max_offset_time = time;
+      }
+    }
+    // in the steps without push only: a contact held in the active set
+    // keeps a gap of round-off size (up to held_gap_tolerance), no uplift
+    else if (pushed_once[g] && !pushing[g] && group_gap[g] > e.max_uplift)
+    {
+      e.max_uplift = group_gap[g];
+      e.max_uplift_time = time;
+    }
+  }
 }
 
 void ContactStatistics::add_friction_step(const double time,
@@ -165,6 +239,8 @@ void ContactStatistics::add_friction_step(const double time,
     group_slip.assign(ng, 0.);
     friction_window.assign(ng * std::max(1UL, n_window), 0.);
     friction_sum.assign(ng, 0.);
+    tangent_window.assign(2 * ng * std::max(1UL, n_window), 0.);
+    tangent_sum.assign(2 * ng, 0.);
   }
   std::fill(group_tangential.begin(), group_tangential.end(), 0.);
   std::fill(group_slip.begin(), group_slip.end(), 0.);
@@ -191,6 +267,20 @@ void ContactStatistics::add_friction_step(const double time,
       e.peak_friction_force = force;
       e.peak_friction_force_time = time;
     }
+    for (unsigned int t = 0; t < 2; ++t)
+    {
+      push_ring(&tangent_window[(2 * g + t) * n],
+                n,
+                slot,
+                std::abs(group_tangential[2 * g + t]),
+                tangent_sum[2 * g + t]);
+      const double component = tangent_sum[2 * g + t] / (n * dt);
+      if ((n_steps > n || !initially_closed[g]) && component > e.peak_tangent_force[t])
+      {
+        e.peak_tangent_force[t] = component;
+        e.peak_tangent_force_time[t] = time;
+      }
+    }
   }
 }
 
@@ -210,6 +300,13 @@ SummaryValue ContactStatistics::json(const std::vector<std::string> &names) cons
                              .set("peak_mean_force_time", e.peak_mean_force_time)
                              .set("uplift_time", e.uplift_time)
                              .set("n_contact_loss_episodes", e.episodes.size());
+    if (force_window > 0.)
+      entry.set("min_mean_force", std::isfinite(e.min_mean_force) ? e.min_mean_force : 0.)
+          .set("min_mean_force_time", e.min_mean_force_time);
+    if (e.two_sided)
+      entry.set("max_offset", e.max_offset).set("max_offset_time", e.max_offset_time);
+    else
+      entry.set("max_uplift", e.max_uplift).set("max_uplift_time", e.max_uplift_time);
     if (friction)
       entry.set("slip_distance", e.slip_distance)
           .set("peak_friction_force", e.peak_friction_force)

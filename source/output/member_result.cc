@@ -46,7 +46,18 @@ std::string read_member_summary(const std::string &folder, MemberResult &result)
     add_per_name(summary["wheels"], "peak_mean_force", "peak_mean_force", values);
     add_per_name(summary["wheels"], "slip_distance", "slip_distance", values);
     add_per_name(summary["wheels"], "uplift_time", "uplift_time", values);
+    add_per_name(summary["wheels"], "max_lateral_offset", "max_lateral_offset", values);
+    for (const auto &[name, entry] : summary["wheels"].items())
+      if (entry.is_object() && entry.contains("runway_load"))
+        for (const char *key :
+             {"vertical_max", "vertical_min", "lateral_max", "longitudinal_max"})
+          if (entry["runway_load"].contains(key) && entry["runway_load"][key].is_number())
+            values.emplace_back(name + ".runway_load." + key,
+                                entry["runway_load"][key].get<double>());
   }
+  // every one-sided contact's uplift (the wheels' among them)
+  if (summary.contains("contacts"))
+    add_per_name(summary["contacts"], "max_uplift", "max_uplift", values);
   if (summary.contains("section_force_envelope"))
     for (const auto &[force, entry] : summary["section_force_envelope"].items())
       if (entry.is_object() && entry.contains("max_abs") && entry["max_abs"].is_number())
@@ -56,6 +67,12 @@ std::string read_member_summary(const std::string &folder, MemberResult &result)
                  "value",
                  "max_absolute_acceleration",
                  values);
+  if (summary.contains("beam_stresses") && summary["beam_stresses"].is_object())
+    for (const auto &[name, entry] : summary["beam_stresses"].items())
+      for (const char *key : {"max_normal_stress", "max_von_mises"})
+        if (entry.is_object() && entry.contains(key) && entry[key].is_object() &&
+            entry[key].contains("value") && entry[key]["value"].is_number())
+          values.emplace_back(name + "." + key, entry[key]["value"].get<double>());
   if (summary.contains("solids") && summary["solids"].is_object())
     for (const auto &[name, entry] : summary["solids"].items())
       if (entry.is_object() && entry.contains("max_von_mises") &&

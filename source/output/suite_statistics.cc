@@ -50,13 +50,24 @@ member_values(const std::vector<MemberResult> &results,
   return values;
 }
 
-Statistic statistic_of(const std::vector<std::pair<double, unsigned int>> &values)
+/** Whether @p quantity is a smallest value (`..._min`): its envelope is the minimum. */
+bool smallest_value(const std::string &quantity)
+{
+  return quantity.size() > 4 && quantity.compare(quantity.size() - 4, 4, "_min") == 0;
+}
+
+/**
+ * The statistic of @p values; `max` and the governing member are the
+ * smallest value's where @p smallest.
+ */
+Statistic statistic_of(const std::vector<std::pair<double, unsigned int>> &values,
+                       const bool smallest = false)
 {
   Statistic s;
   double sum = 0.;
   for (const auto &[value, member] : values)
   {
-    if (s.n == 0 || value > s.max)
+    if (s.n == 0 || (smallest ? value < s.max : value > s.max))
     {
       s.max = value;
       s.governing = member;
@@ -183,7 +194,7 @@ std::string SuiteStatistics::summary_json(const SummaryEntries &extra) const
           member_values(results, members, quantity);
       if (values.empty())
         continue;
-      const Statistic s = statistic_of(values);
+      const Statistic s = statistic_of(values, smallest_value(quantity));
       quantities_json.set(quantity,
                           SummaryValue::object()
                               .set("value", statistic == "mean" ? s.mean : s.max)
@@ -217,17 +228,26 @@ std::vector<std::pair<std::string, double>>
 SuiteStatistics::group_statistic(const unsigned int group) const
 {
   std::vector<std::pair<std::string, double>> result;
+  for (const SuiteQuantity &q : group_quantities(group))
+    result.emplace_back(q.quantity, q.value);
+  return result;
+}
+
+std::vector<SuiteQuantity>
+SuiteStatistics::group_quantities(const unsigned int group) const
+{
+  std::vector<SuiteQuantity> result;
   const auto all = groups();
   if (group >= all.size())
     return result;
   for (const auto &quantity : quantities())
   {
-    const std::vector<std::pair<double, unsigned int>> values =
-        member_values(results, all[group], quantity);
+    const auto values = member_values(results, all[group], quantity);
     if (values.empty())
       continue;
-    const Statistic s = statistic_of(values);
-    result.emplace_back(quantity, statistic == "mean" ? s.mean : s.max);
+    const Statistic s = statistic_of(values, smallest_value(quantity));
+    result.push_back(
+        {quantity, statistic == "mean" ? s.mean : s.max, results[s.governing].name});
   }
   return result;
 }

@@ -36,6 +36,11 @@ void warn_inapplicable_entries(const dealii::ParameterHandler &prm, Problem &pro
   if (!transient && problem.output_parameters.state_interval > 0.)
     problem.warn("Output/State interval is ignored: a " + type +
                  " analysis writes no state file (transient runs do)");
+  if (problem.qualification_parameters.enabled() && !transient &&
+      type != "response spectrum")
+    problem.warn("Qualification is ignored: a " + type +
+                 " analysis is not checked (transient runs, suites and "
+                 "response-spectrum analyses are)");
   if (value(prm, {"Model"}, "Type") == "bridge crane" &&
       value(prm, {"Model", "Bridge crane"}, "Eccentricities") == "false" &&
       dealii::Utilities::string_to_double(

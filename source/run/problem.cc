@@ -51,6 +51,7 @@ void Problem::declare_parameters(ParameterHandler &prm)
   DesignSpectrumParameters::declare_parameters(prm);
   ArtificialRecordParameters::declare_parameters(prm);
   ResponseSpectrumParameters::declare_parameters(prm);
+  QualificationParameters::declare_parameters(prm);
 }
 
 Problem::Problem(ParameterHandler &prm, const ConditionalOStream &out) : out(out)
@@ -99,8 +100,23 @@ Problem::Problem(ParameterHandler &prm, const ConditionalOStream &out) : out(out
                            "Design spectrum/Type is none (give an EC8 type or a table)"));
     response_spectrum_parameters.parse_parameters(prm);
   }
+  qualification_parameters.parse_parameters(prm);
   model = create_model(prm);
   warn_inapplicable_entries(prm, *this);
+  // a stress check needs every checked member's extreme fibres
+  if (qualification_parameters.yield_strength > 0. &&
+      (analysis_parameters.type == "transient" ||
+       analysis_parameters.type == "response spectrum"))
+  {
+    const auto members = model->members_without_stresses();
+    AssertThrow(
+        members.empty(),
+        ExcMessage("Qualification/Yield strength: member '" +
+                   (members.empty() ? std::string() : members.front()) +
+                   "' has a general section without its extreme fibre distances: "
+                   "give them as 'general, A, Iy, Iz, J, Asy, Asz, c_y, c_z' (m), "
+                   "or set Yield strength = 0 (stresses not checked)"));
+  }
 }
 
 void Problem::build_system()

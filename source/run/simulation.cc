@@ -1,6 +1,7 @@
 #include <hati/output/run_directory.h>
 #include <hati/run/analysis_registry.h>
 #include <hati/run/problem.h>
+#include <hati/run/qualification_run.h>
 #include <hati/run/simulation.h>
 
 #include <filesystem>
@@ -46,6 +47,13 @@ void Simulation::run()
   analysis_registry()
       .get(problem->analysis_parameters.type)
       .create(*problem, *run_directory);
+  const std::string &type = problem->analysis_parameters.type;
+  if (!suite_member && (type == "transient" || type == "response spectrum"))
+    write_qualification_report(problem->qualification_parameters, output_directory);
+  // the verdicts last: the run's closing line
+  if (problem->qualification_parameters.enabled() &&
+      (type == "transient" || type == "response spectrum"))
+    print_qualification(problem->verdicts, std::cout);
 }
 void Simulation::check()
 {

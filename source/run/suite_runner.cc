@@ -2,12 +2,14 @@
 #include <deal.II/base/mpi.h>
 
 #include <hati/base/silence.h>
+#include <hati/base/version.h>
 #include <hati/output/design_spectrum_check.h>
 #include <hati/output/output_file.h>
 #include <hati/output/plot_script.h>
 #include <hati/output/run_directory.h>
 #include <hati/output/suite_statistics.h>
 #include <hati/run/mpi_consensus.h>
+#include <hati/run/qualification_run.h>
 #include <hati/run/simulation.h>
 #include <hati/run/suite_checks.h>
 #include <hati/run/suite_runner.h>
@@ -97,7 +99,11 @@ const char *const suite_files[] = {"suite.csv",
                                    "plot_suite.log",
                                    "rsa_comparison.csv",
                                    "rsa_comparison.png",
-                                   "plot_rsa_comparison.log"};
+                                   "plot_rsa_comparison.log",
+                                   "qualification.csv",
+                                   "report.html",
+                                   "report.log",
+                                   "parameters.prm"};
 
 /** The lock of a suite's folder: a second suite there is refused. */
 const char *const suite_lock_name = ".hati-suite.lock";
@@ -115,6 +121,11 @@ SuiteRunner::SuiteRunner(ParameterHandler &prm,
               ExcMessage("Suite: a suite runs transient analyses; Analysis/Type = " +
                          prm.get(std::vector<std::string>{"Analysis"}, "Type")));
   folder = prm.get(std::vector<std::string>{"Output"}, "Output directory");
+  {
+    std::ostringstream text;
+    prm.print_parameters(text, ParameterHandler::PRM);
+    suite_parameters = text.str();
+  }
   if (folder.empty())
     folder = "output/" + std::filesystem::path(parameter_file).stem().string();
   check_output_directory(folder);
@@ -139,6 +150,7 @@ SuiteRunner::SuiteRunner(ParameterHandler &prm,
       prm.get_double(std::vector<std::string>{"Loading"}, "Accelerogram scale factor");
   members = plan_suite(suite, folder, base_scale);
   design_spectrum.parse_parameters(prm);
+  qualification.parse_parameters(prm);
   accelerogram_units = prm.get(std::vector<std::string>{"Loading"}, "Accelerogram units");
   for (unsigned int d = 0; d < 3; ++d)
     own_accelerograms[d] = Utilities::trim(prm.get(
@@ -272,6 +284,7 @@ MemberResult SuiteRunner::run_member(const SuiteMember &member) const
     }
     MemberLog log;
     Simulation simulation(prm, parameter_file);
+    simulation.as_suite_member();
     simulation.when_output_begins(
         [&](RunDirectory &directory)
         {
@@ -484,7 +497,8 @@ int SuiteRunner::finish(std::vector<MemberResult> &results, const double wall_ti
   }
   std::string check_error;
   SummaryEntries extra = {{"wall_time", wall_time},
-                          {"sum_member_wall_time", member_time}};
+                          {"sum_member_wall_time", member_time},
+                          {"git_commit", hati_git_commit()}};
   if (design_spectrum.active())
     try
     {
@@ -501,6 +515,15 @@ int SuiteRunner::finish(std::vector<MemberResult> &results, const double wall_ti
     }
   if (design_spectrum.active() && suite.response_spectrum_comparison && !stop_requested())
     compare_with_response_spectrum(statistics, extra);
+  // the verdicts of the first group's statistic (Q1), each where its governing member
+  std::vector<QualificationRow> verdicts;
+  if (qualification.enabled())
+  {
+    verdicts = qualify(suite_demands(statistics.group_quantities(0)), qualification);
+    extra.emplace_back("qualification", qualification_json(verdicts));
+    out.replace("qualification.csv", qualification_csv(verdicts), true);
+  }
+  out.replace("parameters.prm", suite_parameters, true);
   out.replace("suite.csv", statistics.csv(), true);
   out.replace("suite_summary.json", statistics.summary_json(extra), true);
   const std::string spectra = statistics.spectra_csv();
@@ -534,7 +557,10 @@ int SuiteRunner::finish(std::vector<MemberResult> &results, const double wall_ti
         std::cerr << "hati: warning: suite: rsa_comparison.png was not drawn: "
                   << rsa_warning << std::endl;
     }
+    write_qualification_report(qualification, folder);
   }
+  if (qualification.enabled())
+    print_qualification(verdicts, std::cout);
   if (stop_requested())
   {
     std::cerr << "hati: suite interrupted by "

@@ -6,6 +6,7 @@
 #include <hati/output/run_directory.h>
 #include <hati/output/summary.h>
 #include <hati/run/problem.h>
+#include <hati/run/qualification_run.h>
 #include <hati/run/run_state.h>
 #include <hati/run/run_tools.h>
 #include <hati/run/time_loop.h>
@@ -646,6 +647,7 @@ void TimeLoop<Integrator>::finish(TimerOutput &timer, SummaryEntries summary)
     p->finish(summary, std::cout);
   for (const auto &p : postprocessors)
     p->write_files(directory);
+  add_qualification(problem, directory, summary);
   write_summary(directory.path() + "/summary.json", summary, problem.warnings);
   std::cout << "  done: " << steps_done << " steps in " << wall << " s (output "
             << output_clock.seconds() << " s in " << output_clock.calls() << " calls); ";

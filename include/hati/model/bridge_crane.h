@@ -155,6 +155,13 @@ public:
 
     /** The frame: nodes, members, sections, masses, supports, contacts. */
     FrameDescription frame() const;
+    /** Whether the crane wheel @p k (1-4) is braked (Travel, Braked crane wheels). */
+    bool crane_wheel_braked(const unsigned int k) const
+    {
+      return travel == "braked" &&
+             (braked_crane_wheels == "all" ||
+              (braked_crane_wheels == "one per end carriage" && (k == 1 || k == 3)));
+    }
     /** The entries of Girder model = solid (bridge_crane_girders.cc). */
     static void declare_girder_model(ParameterHandler &prm);
     /** Parse and check the entries of declare_girder_model(). */
@@ -299,6 +306,19 @@ public:
 
   /** crane_wheel_1..4 and trolley_wheel_1..4 (the vertical contacts). */
   std::vector<std::string> wheel_contacts() const override;
+  std::vector<std::string> members_without_stresses() const override
+  {
+    return frame.members_without_stresses();
+  }
+  std::string geometry_csv() const override { return frame.geometry_csv(); }
+  /** `<wheel>_lateral` of every wheel. */
+  std::vector<std::string> wheel_lateral_contacts() const override;
+  /**
+   * The four crane wheels `crane_wheel_<i>` (with Crane wheels = contacts):
+   * a braked wheel's friction tangents are X (the runway) and Y, a rolling
+   * wheel's only Y (contact_tangent_directions()).
+   */
+  std::vector<RunwayWheel> runway_wheels() const override;
 
   /**
    * The four-fall wire rope of doc/crane_data.md section 11 (N/m): `4 E_r A_r

@@ -6,6 +6,7 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <hati/model/beam_stresses.h>
 #include <hati/model/frame_description.h>
 #include <hati/model/frame_element.h>
 #include <hati/model/frame_section_forces.h>
@@ -70,6 +71,10 @@ public:
       const std::map<std::string, double> &static_contact_forces) const override;
   /** The envelopes of the section forces and of the solids' stress as table lines. */
   std::string results_table() const override;
+  /** The members with a `general` section without c_y, c_z (none rigidly linked). */
+  std::vector<std::string> members_without_stresses() const override;
+  /** Every beam element from its member's start to its end. */
+  std::string geometry_csv() const override;
   void write_section_forces(std::ostream *out,
                             const double time,
                             const Vector<double> &U,
@@ -282,6 +287,8 @@ private:
   Tensor<1, 3> gravity;
   /** section_forces.csv and its envelope (written from const functions). */
   mutable FrameSectionForces section_force_output;
+  /** The members' stresses at the section force rows (beam_stresses, S1-S3). */
+  mutable BeamStressEnvelope beam_stresses;
 };
 } // namespace hati
 

@@ -32,6 +32,26 @@ struct FrameSection
   double A = 0., Iy = 0., Iz = 0., J = 0.;
   double shear_area_y = 0., shear_area_z = 0.;
 
+  /** The kind of section: its stresses (beam_stresses.h) depend on it. */
+  enum class Shape
+  {
+    general,
+    rectangle,
+    box
+  };
+  Shape shape = Shape::general;
+  /**
+   * Rectangle and box: outer width along local y and height along local z
+   * (m); box: the wall thicknesses of its webs and flanges (m).
+   */
+  double b = 0., h = 0., t_web = 0., t_flange = 0.;
+  /**
+   * Extreme fibre distances from the centroid along local y and z (m): b /
+   * 2 and h / 2 of a rectangle or a box; of a `general` section given
+   * optionally (0: unknown, no stresses).
+   */
+  double c_y = 0., c_z = 0.;
+
   /**
    * Solid rectangle, width `b` along local y and height `h` along local z:
    * A = b h, Iy = b h^3/12, Iz = h b^3/12, shear areas 5/6 A, and the torsion

@@ -265,6 +265,43 @@ public:
   virtual std::vector<std::string> wheel_contacts() const { return {}; }
 
   /**
+   * The lateral (flange) contact of each wheel of wheel_contacts(), in its
+   * order (empty for a wheel without): its gaps give the wheel's
+   * `max_lateral_offset` (none by default).
+   */
+  virtual std::vector<std::string> wheel_lateral_contacts() const { return {}; }
+
+  /**
+   * A wheel of wheel_contacts() that stands on the runway, whose contact
+   * forces are the loads handed to the building (`runway_load`,
+   * runway_loads.csv): its flange contact, and which of its friction
+   * tangents (ContactRow::tangents) runs along the rail and which across
+   * it (-1: none, a wheel that rolls freely along the rail has no
+   * longitudinal friction).
+   */
+  struct RunwayWheel
+  {
+    std::string name, lateral_contact;
+    int longitudinal_tangent = -1, lateral_tangent = -1;
+  };
+  /** The runway wheels: none by default, the crane wheels of a bridge crane. */
+  virtual std::vector<RunwayWheel> runway_wheels() const { return {}; }
+
+  /**
+   * The members whose stresses a stress check would need but whose
+   * section has no extreme fibre distances (a `general` section without
+   * c_y, c_z): none by default.
+   */
+  virtual std::vector<std::string> members_without_stresses() const { return {}; }
+
+  /**
+   * `geometry.csv`, the drawing of the model for the qualification report:
+   * one row per beam element, `member,x1,y1,z1,x2,y2,z2` (m, global axes);
+   * empty (no file) by default.
+   */
+  virtual std::string geometry_csv() const { return ""; }
+
+  /**
    * The damping a transient run of this model gets when
    * `Time integration/Damping` is not set (DefaultDamping; none by
    * default).

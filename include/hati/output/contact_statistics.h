@@ -4,6 +4,7 @@
 #include <hati/base/summary_value.h>
 #include <hati/model/discrete_system.h>
 
+#include <array>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -52,8 +53,31 @@ public:
      * the end of that window (s).
      */
     double peak_mean_force = 0., peak_mean_force_time = 0.;
+    /**
+     * Smallest mean contact force over the force window (N) among the
+     * whole windows (of a contact closed in the initial state, those after
+     * its first step) and the end of that window (s); with a force window
+     * only. At rest on its support it equals peak_mean_force.
+     */
+    double min_mean_force = 0., min_mean_force_time = 0.;
     /** Total time without push after the first push (s). */
     double uplift_time = 0.;
+    /**
+     * One-sided contacts: the largest gap (m; the smallest of the gaps of
+     * its rows) in the steps without push after the first push (for a
+     * contact closed in the initial state, from the start: a wheel's lift
+     * off its rail) and its time (s).
+     */
+    double max_uplift = 0., max_uplift_time = 0.;
+    /**
+     * Two-sided contacts with a clearance (two rows of opposite normals):
+     * the largest offset from the middle of the clearance, |g_1 - g_2| / 2
+     * (m; a wheel's lateral offset between its flanges), and its time (s).
+     */
+    double max_offset = 0., max_offset_time = 0.;
+    /** Whether the name is a two-sided contact with clearance (max_offset, no
+     * max_uplift). */
+    bool two_sided = false;
     /** With friction (A9): the accumulated slip `sum ||u_t|| dt` (m). */
     double slip_distance = 0.;
     /**
@@ -62,6 +86,13 @@ public:
      * a window), and the end of that window (s).
      */
     double peak_friction_force = 0., peak_friction_force_time = 0.;
+    /**
+     * With friction: the same largest mean of each tangential component
+     * alone (N; the first and the second tangent of the contact's rows,
+     * e.g. along and across a rail) and the ends of their windows (s).
+     */
+    std::array<double, 2> peak_tangent_force = {{0., 0.}},
+                          peak_tangent_force_time = {{0., 0.}};
     /** Contact-loss episodes (start, end) in s; end < 0: still open. */
     std::vector<std::pair<double, double>> episodes;
   };
@@ -79,9 +110,13 @@ public:
 
   /**
    * Account for one step of duration @p dt (s) ending at @p time (s) with
-   * the impulses @p impulses (N s) of every row. No allocation.
+   * the impulses @p impulses (N s) and the gaps @p gaps (m, at the step's
+   * end; empty: no uplift and offset) of every row. No allocation.
    */
-  void add_step(const double time, const double dt, const std::vector<double> &impulses);
+  void add_step(const double time,
+                const double dt,
+                const std::vector<double> &impulses,
+                const std::vector<double> &gaps = {});
 
   /**
    * With friction (A9), after add_step() of the same step: the tangential
@@ -96,7 +131,16 @@ public:
                          const std::vector<double> &slip);
   const std::vector<Entry> &entries() const { return groups; }
 
-  /** `{"name": {"n_impacts": .., "peak_impact_force": .., "uplift_time": ..}, ...}`. */
+  /** The entry of the name @p name; nullptr if there is none. */
+  const Entry *entry(const std::string &name) const;
+
+  /** Whether a force window is set (the mean forces exist). */
+  bool has_force_window() const { return force_window > 0.; }
+
+  /**
+   * `{"name": {"n_impacts": .., "peak_impact_force": .., "uplift_time": ..,
+   * "max_uplift": .. (one-sided) or "max_offset": .. (two-sided), ..}, ...}`.
+   */
   SummaryValue json(const std::vector<std::string> &names = {}) const;
 
   /** `contact_episodes.csv`: contact,start,end,duration (s; end empty if open). */
@@ -117,6 +161,9 @@ private:
   unsigned long n_steps = 0;
   std::vector<char> always_closed;
   std::vector<char> pushing, pushed_once, initially_closed;
+  // the rows of a two-sided group with clearance (its offset); -1: none
+  std::vector<std::array<int, 2>> offset_rows;
+  std::vector<double> group_gap;
   // the mean force: the last n_window impulses of every group (a ring) and their sum
   double force_window = 0.;
   unsigned long n_window = 0;
@@ -125,6 +172,8 @@ private:
   // and the ring of the mean friction force
   bool friction = false;
   std::vector<double> group_tangential, group_slip, friction_window, friction_sum;
+  // the rings of each tangential component's mean force (two per name)
+  std::vector<double> tangent_window, tangent_sum;
 };
 } // namespace hati
 

@@ -51,7 +51,12 @@ struct MemberResult
  * The status (`status` of @p folder/summary.json, empty if the file is
  * missing or unreadable) and, for a completed run, the key results into
  * @p result.values: per wheel (`wheels`) `<wheel>.peak_mean_force` (N),
- * `<wheel>.slip_distance` (m, when present) and `<wheel>.uplift_time` (s);
+ * `<wheel>.slip_distance` (m, when present), `<wheel>.uplift_time` (s),
+ * `<wheel>.max_lateral_offset` (m) and, for a runway wheel,
+ * `<wheel>.runway_load.vertical_max`, `.vertical_min`, `.lateral_max`,
+ * `.longitudinal_max` (N); per one-sided contact `<contact>.max_uplift`
+ * (m); per beam member `<member>.max_normal_stress` and `.max_von_mises`
+ * (Pa);
  * the section-force envelope `section_force.N`, `.My`, `.Mz` (N, N m);
  * `<monitor>.max_absolute_acceleration` (m/s^2); per solid
  * `<solid>.max_von_mises` (Pa, when present); per rope

@@ -9,13 +9,24 @@
 
 namespace hati
 {
+/** One quantity of a suite's statistic: `<item>.<quantity>`, its value, its governing
+ * member. */
+struct SuiteQuantity
+{
+  std::string quantity;
+  double value = 0.;
+  std::string governing_member;
+};
+
 /**
  * The files of a suite from its members' results (doc/user_guide.md,
  * "Qualifying a crane on a suite of records"). The statistic is taken over
  * the records of each group of members with the same scale factor and
  * variation, over the members whose results are usable (completed or
  * reused): `envelope` is the largest value, `mean` the mean; the governing
- * member of a quantity is the one with the largest value.
+ * member of a quantity is the one with the largest value. A quantity named
+ * `..._min` (a smallest value, e.g. `runway_load.vertical_min`) is the
+ * other way round: its envelope and governing member are the smallest.
  */
 class SuiteStatistics
 {
@@ -51,6 +62,9 @@ public:
    */
   std::vector<std::pair<std::string, double>>
   group_statistic(unsigned int group = 0) const;
+
+  /** group_statistic() with the governing member of each quantity. */
+  std::vector<SuiteQuantity> group_quantities(unsigned int group = 0) const;
 
   /**
    * `suite_spectra.csv`: per group (scale, variation), damping ratio and

@@ -9,6 +9,7 @@
 #include <hati/model/decomposition.h>
 #include <hati/model/discrete_system.h>
 #include <hati/model/model.h>
+#include <hati/output/qualification.h>
 #include <hati/output/state_file.h>
 #include <hati/parameters/run_parameters.h>
 #include <hati/time/damping.h>
@@ -130,6 +131,16 @@ public:
   HATIParameters hati_parameters;
   DecompositionParameters decomposition_parameters;
   OutputParameters output_parameters;
+  /**
+   * `subsection Qualification`: the checks of a transient run, a suite or a
+   * response-spectrum analysis (qualification.csv, report.html).
+   */
+  QualificationParameters qualification_parameters;
+  /**
+   * The verdicts of the run (add_qualification()), printed at its very end
+   * after the report (Simulation::run()).
+   */
+  std::vector<QualificationRow> verdicts;
   CommonModelParameters common_parameters;
 
   std::unique_ptr<Model> model;

@@ -57,6 +57,12 @@ public:
    */
   void record_failure(const std::string &message) noexcept;
 
+  /**
+   * Mark the run as a member of a suite: it writes its qualification.csv
+   * but no report.html (the suite writes one for all its members).
+   */
+  void as_suite_member() { suite_member = true; }
+
   /** A warning of the run (Problem::warn()): stderr and summary.json `warnings`. */
   void warn(const std::string &message);
 
@@ -66,6 +72,7 @@ private:
   /** The output directory, locked and cleaned when the analysis begins. */
   std::unique_ptr<RunDirectory> run_directory;
   std::string parameter_file;
+  bool suite_member = false;
 };
 
 /**

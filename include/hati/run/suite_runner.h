@@ -8,6 +8,7 @@
 #include <hati/loading/design_spectrum.h>
 #include <hati/output/member_result.h>
 #include <hati/output/output_file.h>
+#include <hati/output/qualification.h>
 #include <hati/run/suite_plan.h>
 
 #include <array>
@@ -131,10 +132,14 @@ private:
   const SuiteParameters suite;
   const MPI_Comm comm;
   std::string folder;
+  /** The suite's own parameters (parameters.prm of its folder, for the report). */
+  std::string suite_parameters;
   std::vector<SuiteMember> members;
   /** Design spectrum (Type none: no check), Loading/Accelerogram units and X, Y, Z,
    * Loading/Accelerogram scale factor. */
   DesignSpectrumParameters design_spectrum;
+  /** The checks of the suite's statistic (Qualification; none: no verdicts). */
+  QualificationParameters qualification;
   std::string accelerogram_units;
   std::array<std::string, 3> own_accelerograms;
   double base_scale = 1.;
