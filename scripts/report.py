@@ -348,7 +348,36 @@ def section_title(folder, rows):
     if notes:
         line += " (" + "; ".join(notes) + ")"
     out.append('<p class="verdict %s" id="overall-verdict">%s</p>\n' % (cls, esc(line)))
+    # the failing checks at once, the largest ratio first (the table below has them all)
+    failing = [r for r in rows if r.get("verdict", "").strip() == "fail"]
+
+    def ratio(r):
+        try:
+            return float(r.get("ratio", "nan"))
+        except ValueError:
+            return float("nan")
+
+    failing.sort(key=lambda r: -ratio(r) if ratio(r) == ratio(r) else 0.0)
+    if failing:
+        out.append('<ul class="failing">\n')
+        for r in failing[:10]:
+            out.append("<li>%s: %s ratio %.3g (%s %s against %s %s)%s</li>\n" % (
+                esc(r.get("item", "")), esc(r.get("check", "")), ratio(r),
+                esc(short(r.get("demand", ""))), esc(r.get("unit", "")),
+                esc(short(r.get("capacity", ""))), esc(r.get("unit", "")),
+                ", " + esc(r["where"]) if r.get("where") else ""))
+        if len(failing) > 10:
+            out.append("<li>... and %d more in the verdict table</li>\n" % (len(failing) - 10))
+        out.append("</ul>\n")
     return "".join(out)
+
+
+def short(text):
+    """A number's text with 4 significant digits (other text as it is)."""
+    try:
+        return "%.4g" % float(text)
+    except ValueError:
+        return text
 
 
 def parse_prm(path):

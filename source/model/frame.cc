@@ -100,6 +100,25 @@ Frame::Frame(const FrameDescription &description)
 
 Frame::~Frame() = default;
 
+bool Frame::member_stress(const std::string &member,
+                          const std::array<double, 6> &forces,
+                          double &normal,
+                          double &von_mises) const
+{
+  const auto sections = member_sections(frame);
+  for (unsigned int m = 0; m < frame.members.size(); ++m)
+    if (frame.members[m].name == member)
+    {
+      if (!sections[m] || !has_fibre_distances(*sections[m]))
+        return false;
+      const BeamSectionStress s = beam_section_stress(*sections[m], forces);
+      normal = s.normal;
+      von_mises = s.von_mises;
+      return true;
+    }
+  return false;
+}
+
 std::vector<std::string> Frame::members_without_stresses() const
 {
   std::vector<std::string> names;

@@ -315,7 +315,10 @@ void print_qualification(const std::vector<QualificationRow> &rows, std::ostream
     for (unsigned int k = 0; k < failing.size() && k < 3; ++k)
       out << (k > 0 ? "; " : "") << failing[k]->item << ' ' << failing[k]->check
           << " ratio " << std::setprecision(3) << failing[k]->ratio
-          << (failing[k]->where.empty() ? "" : " at " + failing[k]->where);
+          << (failing[k]->where.empty() ? ""
+              : failing[k]->where.rfind("governing member", 0) == 0
+                  ? ", " + failing[k]->where // a suite's
+                  : " at " + failing[k]->where);
     out << (failing.size() > 3 ? "; ..." : "") << ')';
   }
   out << std::endl;

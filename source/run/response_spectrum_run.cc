@@ -11,6 +11,7 @@
 #include <hati/output/summary.h>
 #include <hati/run/analysis_registry.h>
 #include <hati/run/problem.h>
+#include <hati/run/qualification_run.h>
 
 #include <chrono>
 #include <cmath>
@@ -140,6 +141,54 @@ void add_comparable_entries(const ResponseSpectrumAnalysis &rsa,
         q.name.compare(q.name.size() - suffix.size(), suffix.size(), suffix) == 0)
       solids.set(q.name.substr(0, q.name.size() - suffix.size()), q.with_static);
   entry.set("max_von_mises", solids);
+}
+
+/**
+ * What the qualification checks (Q1) of a response-spectrum analysis:
+ * `beam_stresses` per member (S1-S3 of the largest |static| + combined
+ * value of each section force over the member's stations, taken together:
+ * a bound, they need not meet at one station) and `solids` per solid (its
+ * largest static and combined von Mises stress). A linear analysis has no
+ * uplift height, slip or rope slack to check.
+ */
+SummaryEntries qualification_entries(const ResponseSpectrumAnalysis &rsa,
+                                     const Problem &problem)
+{
+  static const char *const forces[6] = {"N", "Vy", "Vz", "T", "My", "Mz"};
+  SummaryValue beams = SummaryValue::object(), solids = SummaryValue::object();
+  std::vector<std::string> members;
+  for (const SpectralQuantity &q : rsa.quantities())
+  {
+    const auto dot = q.name.rfind('.');
+    if (dot != std::string::npos && q.name.substr(dot + 1) == "N")
+      members.push_back(q.name.substr(0, dot));
+    if (dot != std::string::npos && q.name.substr(dot + 1) == "max_von_mises")
+      solids.set(
+          q.name.substr(0, dot),
+          SummaryValue::object().set("max_von_mises",
+                                     SummaryValue::object().set("value", q.with_static)));
+  }
+  bool any_beam = false;
+  for (const std::string &m : members)
+  {
+    std::array<double, 6> s;
+    for (unsigned int k = 0; k < 6; ++k)
+      s[k] = std::max(0., combined_value(rsa, m + "." + forces[k], true));
+    double normal = 0., von_mises = 0.;
+    if (!problem.model->member_stress(m, s, normal, von_mises))
+      continue;
+    any_beam = true;
+    beams.set(m,
+              SummaryValue::object()
+                  .set("max_normal_stress", SummaryValue::object().set("value", normal))
+                  .set("max_von_mises", SummaryValue::object().set("value", von_mises)));
+  }
+  SummaryEntries entries;
+  if (any_beam)
+    entries.emplace_back("beam_stresses", beams);
+  if (!solids.members().empty())
+    entries.emplace_back("solids", solids);
+  return entries;
 }
 
 /** The `response_spectrum` entry of summary.json. */
@@ -339,6 +388,9 @@ void run_response_spectrum_analysis(Problem &problem, RunDirectory &directory)
                               .set("missing_mass", rsa.wall_times[2])
                               .set("combination", rsa.wall_times[3])
                               .set("output", output_time)}};
+  for (auto &entry : qualification_entries(rsa, problem))
+    summary.push_back(std::move(entry));
+  add_qualification(problem, directory, summary);
   write_summary(directory.path() + "/summary.json", summary, problem.warnings);
   std::cout << "  wall time " << std::setprecision(3) << wall << " s (static state "
             << static_time << ", modes " << rsa.wall_times[0] << ", per-mode quantities "

@@ -53,7 +53,9 @@ void SuiteRunner::compare_with_response_spectrum(const SuiteStatistics &statisti
     member_parameters(member, prm, text);
     {
       const Silence quiet;
-      Simulation(prm, parameter_file).run();
+      Simulation simulation(prm, parameter_file);
+      simulation.as_suite_member(); // the suite's report holds it
+      simulation.run();
     }
     const std::vector<ComparisonRow> rows =
         rsa_comparison_rows(statistics.group_statistic(0), dir + "/summary.json");

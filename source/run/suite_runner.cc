@@ -179,7 +179,9 @@ void SuiteRunner::find_fundamental_period()
   member_parameters(modal, prm, text);
   {
     const Silence quiet;
-    Simulation(prm, parameter_file).run();
+    Simulation simulation(prm, parameter_file);
+    simulation.as_suite_member();
+    simulation.run();
   }
   std::istringstream modes(file_text(dir + "/modes.csv"));
   std::string line;

@@ -311,6 +311,13 @@ public:
     return frame.members_without_stresses();
   }
   std::string geometry_csv() const override { return frame.geometry_csv(); }
+  bool member_stress(const std::string &member,
+                     const std::array<double, 6> &forces,
+                     double &normal,
+                     double &von_mises) const override
+  {
+    return frame.member_stress(member, forces, normal, von_mises);
+  }
   /** `<wheel>_lateral` of every wheel. */
   std::vector<std::string> wheel_lateral_contacts() const override;
   /**

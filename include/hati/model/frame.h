@@ -75,6 +75,10 @@ public:
   std::vector<std::string> members_without_stresses() const override;
   /** Every beam element from its member's start to its end. */
   std::string geometry_csv() const override;
+  bool member_stress(const std::string &member,
+                     const std::array<double, 6> &forces,
+                     double &normal,
+                     double &von_mises) const override;
   void write_section_forces(std::ostream *out,
                             const double time,
                             const Vector<double> &U,

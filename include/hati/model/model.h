@@ -302,6 +302,21 @@ public:
   virtual std::string geometry_csv() const { return ""; }
 
   /**
+   * The largest normal and von Mises stresses (Pa) at the extreme fibres of
+   * the section of the member @p member under the section forces @p forces
+   * (N, Vy, Vz in N; T, My, Mz in N m; doc/theory.md S1-S3) into @p normal
+   * and @p von_mises; false (none) for a member without stresses and by
+   * default.
+   */
+  virtual bool member_stress(const std::string & /*member*/,
+                             const std::array<double, 6> & /*forces*/,
+                             double & /*normal*/,
+                             double & /*von_mises*/) const
+  {
+    return false;
+  }
+
+  /**
    * The damping a transient run of this model gets when
    * `Time integration/Damping` is not set (DefaultDamping; none by
    * default).
