@@ -27,38 +27,26 @@ over report.html (a link at report.html is refused). Exit code 0 when the
 report was written; 1 with one line on stderr otherwise (no summary.json nor
 suite_summary.json in the folder, the folder not writable).
 
+The HTML pieces are in report_html.py, the pictures in report_figures.py.
+
 Usage: scripts/report.py OUTPUT_FOLDER"""
-import base64
 import csv
 import datetime
 import hashlib
-import html
-import io
-import json
 import math
 import os
 import platform
 import re
-import shutil
-import subprocess
 import sys
-import tempfile
 
-try:
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-except ImportError:  # the report without its pictures
-    plt = None
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree (its modules below)
+from report_figures import (closest_ratio, frame_figure, no_matplotlib, plt, rsa_picture,
+                            series, spectra_figure, stress_picture, wheel_figures)
+from report_html import (cell, esc, fmt, is_number, missing, number, para, read_json,
+                         read_table, table, text_cell)
 
-try:
-    import numpy as np
-except ImportError:
-    np = None
-
-SCRIPTS = os.path.dirname(os.path.abspath(__file__))
+# the statuses of a suite's members whose results count
 USABLE = ("completed", "reused")
-DPI = 100
 # the subsections of parameters.prm whose every entry the report lists
 PARAMETER_SECTIONS = ("Model", "Loading", "Time integration", "Qualification", "Suite",
                       "Design spectrum")
@@ -88,102 +76,6 @@ pre { background: #f4f4f4; padding: 6px; font-size: 12px; white-space: pre-wrap;
 
 # ---------------------------------------------------------------- helpers
 
-def esc(text):
-    return html.escape(str(text), quote=True)
-
-
-def missing(text):
-    return '<p class="missing">%s</p>\n' % esc(text)
-
-
-def para(text, cls=None):
-    return "<p%s>%s</p>\n" % (' class="%s"' % cls if cls else "", esc(text))
-
-
-def number(text):
-    try:
-        return float(text)
-    except (TypeError, ValueError):
-        return math.nan
-
-
-def is_number(x):
-    return isinstance(x, (int, float)) and not isinstance(x, bool)
-
-
-def fmt(x):
-    """x with 4 significant digits (text left as it is)."""
-    if isinstance(x, bool):
-        return "yes" if x else "no"
-    if is_number(x):
-        return "%.4g" % x
-    value = number(x)
-    if isinstance(x, str) and x.strip() and not math.isnan(value):
-        return "%.4g" % value
-    return "" if x is None else str(x)
-
-
-def cell(x, value=None):
-    """A <td>: numbers right-aligned with 4 digits, @value (the exact text)
-    in its data-value attribute when given."""
-    numeric = is_number(x) or (isinstance(x, str) and not math.isnan(number(x)))
-    attributes = ' class="num"' if numeric else ""
-    if value is not None:
-        attributes += ' data-value="%s"' % esc(value)
-    return "<td%s>%s</td>" % (attributes, esc(fmt(x)))
-
-
-def text_cell(x):
-    """A <td> of @x as it is (a parameter's value: never rounded)."""
-    return "<td>%s</td>" % esc("" if x is None else x)
-
-
-def table(header, rows, cls=None):
-    """An HTML table; each row a list of cell() texts or plain values."""
-    out = ['<table%s>' % (' class="%s"' % cls if cls else ""), "<tr>"]
-    out += ["<th>%s</th>" % esc(h) for h in header]
-    out.append("</tr>\n")
-    for r in rows:
-        out.append("<tr>" + "".join(c if isinstance(c, str) and c.startswith("<td")
-                                    else cell(c) for c in r) + "</tr>\n")
-    out.append("</table>\n")
-    return "".join(out)
-
-
-def read_json(path):
-    """(the parsed JSON or None, a line saying why not)."""
-    if not os.path.isfile(path):
-        return None, "no %s" % os.path.basename(path)
-    try:
-        with open(path) as f:
-            return json.load(f), ""
-    except (OSError, ValueError) as e:
-        return None, "%s cannot be read (%s)" % (os.path.basename(path), e)
-
-
-def read_table(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
-
-
-def png(fig):
-    """The figure as an embedded <img> (closed afterwards)."""
-    buffer = io.BytesIO()
-    try:
-        fig.savefig(buffer, dpi=DPI, format="png")
-    finally:
-        plt.close(fig)
-    return image_tag(buffer.getvalue(), "figure")
-
-
-def image_tag(data, alt):
-    return '<img alt="%s" src="data:image/png;base64,%s">\n' % (
-        esc(alt), base64.b64encode(data).decode("ascii"))
-
-
-def no_matplotlib(what):
-    return missing("%s: not drawn, matplotlib is not installed (python3-matplotlib)" % what)
-
 
 def find_digests(value, path=""):
     """(key path, value) of every entry of a summary whose key names a digest."""
@@ -209,22 +101,6 @@ def sha256(path):
 def mtime_iso(path):
     return datetime.datetime.fromtimestamp(os.path.getmtime(path)).astimezone().isoformat(
         timespec="seconds")
-
-
-def decimated(t, y, n=20000):
-    """At most about 2 n points of (t, y) keeping each bin's extremes."""
-    if np is None or len(t) <= 2 * n:
-        return t, y
-    t, y = np.asarray(t), np.asarray(y)
-    k = int(math.ceil(len(t) / n))
-    m = (len(t) // k) * k
-    tb, yb = t[:m].reshape(-1, k), y[:m].reshape(-1, k)
-    lo, hi = yb.argmin(axis=1), yb.argmax(axis=1)
-    rows = np.arange(tb.shape[0])
-    first, second = np.minimum(lo, hi), np.maximum(lo, hi)
-    tt = np.column_stack((tb[rows, first], tb[rows, second])).ravel()
-    yy = np.column_stack((yb[rows, first], yb[rows, second])).ravel()
-    return np.concatenate((tt, t[m:])), np.concatenate((yy, y[m:]))
 
 
 # ---------------------------------------------------------------- the folder
@@ -402,39 +278,6 @@ def parse_prm(path):
     return entries
 
 
-def frame_figure(path):
-    rows = read_table(path)
-    if not rows:
-        return missing("geometry.csv has no element")
-    absent = [c for c in ("member", "x1", "y1", "z1", "x2", "y2", "z2") if c not in rows[0]]
-    if absent:
-        return missing("geometry.csv has no column %s: the frame is not drawn" % ", ".join(absent))
-    groups = {}
-    for r in rows:
-        prefix = re.sub(r"(_[0-9]+|_[a-z])+$", "", r["member"].strip()) or r["member"]
-        groups.setdefault(prefix, []).append(
-            [number(r[k]) for k in ("x1", "y1", "z1", "x2", "y2", "z2")])
-    colours = plt.get_cmap("tab20" if len(groups) > 10 else "tab10").colors
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
-    for g, (prefix, lines) in enumerate(sorted(groups.items())):
-        colour = colours[g % len(colours)]
-        for ax, (i, j) in zip(axes, ((0, 1), (0, 2))):
-            for k, e in enumerate(lines):
-                ax.plot([e[i], e[i + 3]], [e[j], e[j + 3]], "-", color=colour, lw=1.5,
-                        label=prefix if (k == 0 and i == 0 and j == 1) else None)
-    for ax, title, ylabel in zip(axes, ("from above (x-y)", "from the side (x-z)"),
-                                 ("y (m)", "z (m)")):
-        ax.set_title(title, fontsize=10)
-        ax.set_xlabel("x (m)")
-        ax.set_ylabel(ylabel)
-        ax.set_aspect("equal", adjustable="datalim")
-        ax.grid(alpha=0.3)
-    fig.legend(loc="center right", fontsize=7, frameon=False)
-    fig.tight_layout(rect=(0, 0, 0.86, 1))
-    return png(fig) + para("%d elements: %s" % (len(rows), ", ".join(
-        "%s %d" % (prefix, len(lines)) for prefix, lines in sorted(groups.items()))), "small")
-
-
 def section_model(folder):
     out = ["<h2>Model</h2>\n"]
     prm = os.path.join(folder.path, "parameters.prm")
@@ -472,44 +315,6 @@ def section_model(folder):
             out.append(para("from %s/geometry.csv" % member, "small"))
         out.append(frame_figure(geometry))
     return "".join(out)
-
-
-def spectra_figure(panels, title):
-    """panels: [(title, [(periods, values, style dict)], shade range or None)]."""
-    figures = []
-    for start in range(0, len(panels), 3):
-        chunk = panels[start:start + 3]
-        fig, axes = plt.subplots(1, len(chunk), figsize=(min(10, 3.6 * len(chunk) + 0.6), 3.4),
-                                 squeeze=False)
-        for ax, (name, curves, shade) in zip(axes[0], chunk):
-            for periods, values, style in curves:
-                ax.loglog(periods, values, **style)
-            if shade:
-                ax.axvspan(shade[0], shade[1], color="tab:green", alpha=0.1,
-                           label="EC8 check range")
-            ax.set_title(name, fontsize=9)
-            ax.set_xlabel("period (s)")
-            ax.set_ylabel("S_a (m/s^2)")
-            ax.grid(alpha=0.3, which="both")
-            handles, labels = ax.get_legend_handles_labels()
-            if labels:
-                ax.legend(fontsize=6)
-        fig.suptitle(title, fontsize=10)
-        fig.tight_layout()
-        figures.append(png(fig))
-    return "".join(figures)
-
-
-def closest_ratio(rows, wanted=0.05):
-    ratios = sorted({number(r.get("damping_ratio")) for r in rows} - {math.nan})
-    ratios = [x for x in ratios if not math.isnan(x)]
-    return min(ratios, key=lambda x: abs(x - wanted)) if ratios else None
-
-
-def series(rows, column, ratio):
-    table_rows = [r for r in rows if number(r.get("damping_ratio")) == ratio]
-    return ([number(r["period"]) for r in table_rows],
-            [number(r.get(column)) for r in table_rows])
 
 
 def ec8_check(check):
@@ -693,114 +498,6 @@ def section_rsa(folder):
     return "".join(out)
 
 
-def rsa_picture(folder, path):
-    """plot_rsa_comparison.py's picture, drawn in a temporary folder (the
-    suite's own rsa_comparison.png if that fails)."""
-    problem = "no rsa_comparison.csv"
-    if path and plt is not None:
-        try:
-            sys.path.insert(0, SCRIPTS)
-            sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-            import plot_rsa_comparison
-            with tempfile.TemporaryDirectory(prefix="hati-report-") as tmp:
-                shutil.copy(path, os.path.join(tmp, "rsa_comparison.csv"))
-                argv = sys.argv
-                sys.argv = ["plot_rsa_comparison.py", tmp]
-                try:
-                    plot_rsa_comparison.main()
-                finally:
-                    sys.argv = argv
-                picture = os.path.join(tmp, "rsa_comparison.png")
-                if os.path.isfile(picture):
-                    with open(picture, "rb") as f:
-                        return image_tag(f.read(), "rsa comparison")
-                problem = "plot_rsa_comparison.py drew nothing (no quantity it knows)"
-        except (Exception, SystemExit) as e:  # noqa: BLE001 (a picture is optional)
-            problem = "plot_rsa_comparison.py failed (%s)" % e
-    elif plt is None:
-        problem = "matplotlib is not installed"
-    own = os.path.join(folder.path, "rsa_comparison.png")
-    if os.path.isfile(own) and not os.path.islink(own):
-        with open(own, "rb") as f:
-            data = f.read()
-        if data.startswith(b"\x89PNG"):
-            return para("(%s: the suite's rsa_comparison.png)" % problem, "small") + \
-                image_tag(data, "rsa comparison")
-    return missing("the comparison is not drawn: %s" % problem)
-
-
-def read_contacts(path, names):
-    """{name: {column: [values]}} of the rows of contacts.csv for @names."""
-    data = {n: {} for n in names}
-    with open(path, newline="") as f:
-        reader = csv.reader(f)
-        header = next(reader, None)
-        if not header:
-            return data, []
-        index = {c: i for i, c in enumerate(header)}
-        columns = [c for c in ("time", "gap", "force", "slip_velocity") if c in index]
-        ci = index.get("contact")
-        for row in reader:
-            if ci is None or len(row) != len(header) or row[ci] not in data:
-                continue
-            d = data[row[ci]]
-            for c in columns:
-                d.setdefault(c, []).append(number(row[index[c]]))
-    return data, header
-
-
-def wheel_figures(path, wheels):
-    names = wheels or []
-    if not names:
-        with open(path, newline="") as f:
-            reader = csv.DictReader(f)
-            seen = []
-            for r in reader:
-                n = r.get("contact", "")
-                if n in seen:
-                    break
-                seen.append(n)
-        names = [n for n in seen if not n.endswith("_lateral")]
-    data, header = read_contacts(path, names)
-    data = {n: d for n, d in data.items() if d.get("time")}
-    if not header:
-        return missing("contacts.csv is empty")
-    if not data:
-        return missing("contacts.csv has no row of the wheels (%s)" % ", ".join(names))
-    out = []
-    panels = [("force", "contact force (kN)", 1e-3, False),
-              ("gap", "uplift = gap (mm)", 1e3, False)]
-    if "slip_velocity" in header:
-        panels.append(("slip_velocity", "slip (mm, the slip velocity integrated over the "
-                                        "rows)", 1e3, True))
-    else:
-        out.append(missing("contacts.csv has no slip_velocity column (no friction): no slip"))
-    for column, title, scale, integrate in panels:
-        fig, ax = plt.subplots(figsize=(10, 3))
-        for name, d in data.items():
-            t, y = d["time"], [scale * v for v in d[column]]
-            if integrate:
-                total, acc = 0.0, []
-                for i in range(len(t)):
-                    if i:
-                        total += 0.5 * (y[i] + y[i - 1]) * (t[i] - t[i - 1])
-                    acc.append(total)
-                y = acc
-            t, y = decimated(t, y)
-            ax.plot(t, y, lw=0.8, label=name)
-        if column == "gap":
-            largest = max(max(d["gap"]) for d in data.values())
-            title += ": largest %.4g mm%s" % (1e3 * largest, ", no wheel lifts off" if
-                                               largest < 1e-6 else "")
-        ax.set_title(title, fontsize=10)
-        ax.set_xlabel("time (s)")
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=6, ncol=2, loc="center left", bbox_to_anchor=(1.0, 0.5))
-        fig.tight_layout()
-        out.append(png(fig))
-    return "".join(out)
-
-
 WHEEL_KEYS = [("n_impacts", "impacts"), ("peak_mean_force", "peak mean force (N)"),
               ("uplift_time", "uplift time (s)"), ("max_uplift", "max uplift (m)"),
               ("max_lateral_offset", "max lateral offset (m)"),
@@ -859,44 +556,6 @@ def stress_rows(entries, unit_scale=1e-6):
             rows.append([name, quantity, value * unit_scale if is_number(value) else value,
                          where, v.get("time", "")])
     return rows
-
-
-def stress_picture(folder):
-    envelope, member = folder.member_file("stress_envelope.vtu")
-    if envelope is None:
-        return missing("no stress_envelope.vtu (a transient run with Model/Frame/Solids "
-                       "writes it): no stress envelope picture")
-    pvpython = shutil.which("pvpython")
-    if pvpython is None:
-        return missing("pvpython is not installed (python3-paraview): the stress envelope "
-                       "(%s) is not rendered" % os.path.relpath(envelope, folder.path))
-    script = os.path.join(SCRIPTS, "render_girder_stresses.py")
-    with tempfile.TemporaryDirectory(prefix="hati-report-") as tmp:
-        picture = os.path.join(tmp, "stresses.png")
-        try:
-            p = subprocess.run([pvpython, "--force-offscreen-rendering", script,
-                                os.path.dirname(envelope), picture],
-                               capture_output=True, text=True, timeout=180)
-        except (OSError, subprocess.TimeoutExpired) as e:
-            return missing("render_girder_stresses.py did not finish (%s)" % e)
-        if p.returncode != 0 or not os.path.isfile(picture):
-            last = (p.stderr or p.stdout).strip().splitlines()
-            return missing("render_girder_stresses.py failed (%s)" % (
-                last[-1] if last else "exit code %d" % p.returncode))
-        if plt is not None:  # smaller: 1000 pixels wide
-            import matplotlib.image
-            pixels = matplotlib.image.imread(picture)
-            h, w = pixels.shape[:2]
-            fig = plt.figure(figsize=(10, 10 * h / w))
-            fig.add_axes((0, 0, 1, 1)).imshow(pixels)
-            fig.axes[0].set_axis_off()
-            tag = png(fig)
-        else:
-            with open(picture, "rb") as f:
-                tag = image_tag(f.read(), "stress envelope")
-    label = "the largest von Mises stress of each cell over the run (stress_envelope.vtu%s)" % (
-        " of member %s" % member if member else "")
-    return para(label) + tag
 
 
 def section_stresses(folder):
