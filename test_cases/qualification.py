@@ -17,10 +17,14 @@ other capacities:
 - report.html passes the checks of test_cases/report.py (well-formed, every
   picture embedded, the verdict table equal to qualification.csv, nothing
   fetched from elsewhere), with the frame drawn from geometry.csv;
+- a suite of three scale factors (bridge_crane_suite.prm for 0.05 s):
+  each group's statistic checked, the demand equal to suite_summary.json's
+  value, where its governing member and its group;
 - a static analysis with the same Qualification is not checked: it runs,
   writes no qualification.csv and warns "Qualification is ignored".
 """
 import csv
+import json
 import os
 import sys
 
@@ -93,6 +97,32 @@ class Checks:
 
 
 report.check_report(out, Checks())
+
+# a suite of three scale factors (bridge_crane_suite.prm, 0.05 s of each
+# record): each group's statistic (the envelope) checked, where its
+# governing member and its group; demand = suite_summary.json's value
+out, p = ctx.run(ctx.prm("bridge_crane_suite.prm"), "suite",
+                 ["Qualification/Rope capacity=2.0e5", "Qualification/Maximum uplift=0.025",
+                  "Time integration/End time=0.05"])
+s = json.load(open(out + "/suite_summary.json"))
+rows = list(csv.DictReader(open(out + "/qualification.csv")))
+groups = s["groups"]
+per_group = [q for q in groups[0]["quantities"]
+             if q.endswith(".max_uplift") or q.endswith(".max_tension")]
+ctx.check_true("suite: a row per group and checked quantity",
+               len(rows) == len(groups) * len(per_group) and len(groups) == 3,
+               "%d rows, %d groups x %d quantities" % (len(rows), len(groups), len(per_group)))
+for k, g in enumerate(groups):
+    for j, quantity in enumerate(per_group):
+        r = rows[k * len(per_group) + j]
+        q = g["quantities"][quantity]
+        ctx.check("suite %s scale %g: demand = the group's statistic" % (quantity, g["scale"]),
+                  float(r["demand"]), q["value"], rel=1e-9, abs_tol=1e-300)
+        ctx.check_true("suite %s scale %g: where names the governing member and the group"
+                       % (quantity, g["scale"]),
+                       r["where"] == "governing member %s (scale %g)"
+                       % (q["governing_member"], g["scale"]), r["where"])
+ctx.check_true("suite: report.html written", os.path.isfile(out + "/report.html"))
 
 # a static analysis: the checks are ignored with a warning
 out, p = ctx.run(ctx.prm("bridge_crane_static.prm"), "static", capacities)

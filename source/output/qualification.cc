@@ -28,6 +28,9 @@ const CheckKind check_kinds[] = {{"stress", ".max_von_mises", "Pa"},
 std::string
 format_where(const QualificationJson &entry, const char *x_key, const char *time_key)
 {
+  // a result that says where itself (a response-spectrum bound)
+  if (entry.contains("where") && entry["where"].is_string())
+    return entry["where"].get<std::string>();
   std::ostringstream s;
   s << std::setprecision(4);
   if (x_key && entry.contains(x_key) && entry[x_key].is_number())

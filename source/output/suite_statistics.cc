@@ -128,6 +128,19 @@ std::vector<std::vector<unsigned int>> SuiteStatistics::groups() const
   return groups;
 }
 
+std::string SuiteStatistics::group_name(const unsigned int group) const
+{
+  const auto all = groups();
+  if (group >= all.size())
+    return "";
+  const MemberResult &first = results[all[group][0]];
+  std::ostringstream s;
+  s << "scale " << first.scale;
+  if (!variation_paths.empty())
+    s << ", variation " << first.variation;
+  return s.str();
+}
+
 std::vector<std::string> SuiteStatistics::quantities() const
 {
   std::vector<std::string> names;

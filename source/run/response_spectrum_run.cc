@@ -163,10 +163,11 @@ SummaryEntries qualification_entries(const ResponseSpectrumAnalysis &rsa,
     if (dot != std::string::npos && q.name.substr(dot + 1) == "N")
       members.push_back(q.name.substr(0, dot));
     if (dot != std::string::npos && q.name.substr(dot + 1) == "max_von_mises")
-      solids.set(
-          q.name.substr(0, dot),
-          SummaryValue::object().set("max_von_mises",
-                                     SummaryValue::object().set("value", q.with_static)));
+      solids.set(q.name.substr(0, dot),
+                 SummaryValue::object().set("max_von_mises",
+                                            SummaryValue::object()
+                                                .set("value", q.with_static)
+                                                .set("where", "static + combined")));
   }
   bool any_beam = false;
   for (const std::string &m : members)
@@ -178,10 +179,14 @@ SummaryEntries qualification_entries(const ResponseSpectrumAnalysis &rsa,
     if (!problem.model->member_stress(m, s, normal, von_mises))
       continue;
     any_beam = true;
-    beams.set(m,
-              SummaryValue::object()
-                  .set("max_normal_stress", SummaryValue::object().set("value", normal))
-                  .set("max_von_mises", SummaryValue::object().set("value", von_mises)));
+    const char *where = "static + combined, each section force at its largest station";
+    beams.set(
+        m,
+        SummaryValue::object()
+            .set("max_normal_stress",
+                 SummaryValue::object().set("value", normal).set("where", where))
+            .set("max_von_mises",
+                 SummaryValue::object().set("value", von_mises).set("where", where)));
   }
   SummaryEntries entries;
   if (any_beam)

@@ -517,11 +517,19 @@ int SuiteRunner::finish(std::vector<MemberResult> &results, const double wall_ti
     }
   if (design_spectrum.active() && suite.response_spectrum_comparison && !stop_requested())
     compare_with_response_spectrum(statistics, extra);
-  // the verdicts of the first group's statistic (Q1), each where its governing member
+  // the verdicts of each group's statistic (Q1), each where its governing
+  // member (and, with several groups, which group)
   std::vector<QualificationRow> verdicts;
   if (qualification.enabled())
   {
-    verdicts = qualify(suite_demands(statistics.group_quantities(0)), qualification);
+    for (unsigned int g = 0; g < statistics.n_groups(); ++g)
+      for (QualificationRow &row :
+           qualify(suite_demands(statistics.group_quantities(g)), qualification))
+      {
+        if (statistics.n_groups() > 1)
+          row.where += " (" + statistics.group_name(g) + ")";
+        verdicts.push_back(std::move(row));
+      }
     extra.emplace_back("qualification", qualification_json(verdicts));
     out.replace("qualification.csv", qualification_csv(verdicts), true);
   }

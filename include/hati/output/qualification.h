@@ -76,7 +76,7 @@ struct QualificationRow
  * and `solids.<s>.max_von_mises` (stress), `contacts.<c>.max_uplift`
  * (uplift), `wheels.<w>.slip_distance` (slip), `.max_lateral_offset`
  * (lateral offset), `rope_tension.<r>.max` (rope), each with its station
- * and time where the summary gives them.
+ * and time where the summary gives them (or its own `where`).
  */
 std::vector<QualificationDemand> run_demands(const std::string &summary_json);
 

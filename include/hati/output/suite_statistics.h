@@ -66,6 +66,12 @@ public:
   /** group_statistic() with the governing member of each quantity. */
   std::vector<SuiteQuantity> group_quantities(unsigned int group = 0) const;
 
+  /** The number of groups (scale factor, variation). */
+  unsigned int n_groups() const { return groups().size(); }
+
+  /** The group @p group in words: `scale 1.5` and, with variations, `variation 2`. */
+  std::string group_name(unsigned int group) const;
+
   /**
    * `suite_spectra.csv`: per group (scale, variation), damping ratio and
    * period the statistic of every spectrum column of the members'
