@@ -103,7 +103,11 @@ report.check_report(out, Checks())
 # governing member and its group; demand = suite_summary.json's value
 out, p = ctx.run(ctx.prm("bridge_crane_suite.prm"), "suite",
                  ["Qualification/Rope capacity=2.0e5", "Qualification/Maximum uplift=0.025",
-                  "Time integration/End time=0.05"])
+                  "Time integration/End time=0.05",
+                  "Suite/Records=elcentro: %s, , ; rinaldi: %s, , %s"
+                  % (os.path.join(records, "RSN6_IMPVALL.I_I-ELC180.AT2"),
+                     os.path.join(records, "Rinaldi228.AT2"),
+                     os.path.join(records, "RinaldiUP.AT2"))])
 s = json.load(open(out + "/suite_summary.json"))
 rows = list(csv.DictReader(open(out + "/qualification.csv")))
 groups = s["groups"]

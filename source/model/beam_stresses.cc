@@ -7,6 +7,36 @@
 
 namespace hati
 {
+namespace
+{
+/**
+ * Whether the member @p m of @p frame is made rigid by a rigid link between
+ * its end nodes (a post of a true height): it has no stresses.
+ */
+bool rigidly_linked(const FrameDescription &frame, const FrameDescription::Member &m)
+{
+  const std::string start = m.path.empty() ? m.start : m.path.front(),
+                    end = m.path.empty() ? m.end : m.path.back();
+  for (const auto &link : frame.solids.rigid_links)
+    if ((link.master == start && link.slave == end) ||
+        (link.master == end && link.slave == start))
+      return true;
+  return false;
+}
+} // namespace
+
+std::vector<const FrameSection *> stressed_member_sections(const FrameDescription &frame)
+{
+  std::vector<const FrameSection *> sections;
+  for (const auto &m : frame.members)
+  {
+    const auto it = frame.sections.find(m.section);
+    sections.push_back(
+        it == frame.sections.end() || rigidly_linked(frame, m) ? nullptr : &it->second);
+  }
+  return sections;
+}
+
 bool has_fibre_distances(const FrameSection &section)
 {
   return section.c_y > 0. && section.c_z > 0.;

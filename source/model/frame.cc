@@ -29,37 +29,6 @@ std::vector<std::string> member_names(const FrameDescription &frame)
   return names;
 }
 
-/**
- * Whether the member @p m of @p frame is made rigid by a rigid link between
- * its end nodes (a post of a true height): it has no stresses.
- */
-bool rigidly_linked(const FrameDescription &frame, const FrameDescription::Member &m)
-{
-  const std::string start = m.path.empty() ? m.start : m.path.front(),
-                    end = m.path.empty() ? m.end : m.path.back();
-  for (const auto &link : frame.solids.rigid_links)
-    if ((link.master == start && link.slave == end) ||
-        (link.master == end && link.slave == start))
-      return true;
-  return false;
-}
-
-/**
- * The section of every member of @p frame whose stresses are computed, in
- * order (it outlives them); nullptr for a member made rigid by a link.
- */
-std::vector<const FrameSection *> member_sections(const FrameDescription &frame)
-{
-  std::vector<const FrameSection *> sections;
-  for (const auto &m : frame.members)
-  {
-    const auto it = frame.sections.find(m.section);
-    sections.push_back(
-        it == frame.sections.end() || rigidly_linked(frame, m) ? nullptr : &it->second);
-  }
-  return sections;
-}
-
 /** The name of every cut of a solid of @p frame, in order. */
 std::vector<std::string> cut_names(const FrameDescription &frame)
 {
@@ -94,40 +63,11 @@ Frame::Frame(const FrameDescription &description)
       section_force_output(member_names(description),
                            description.section_force_members,
                            cut_names(description)),
-      beam_stresses(member_names(description), member_sections(frame))
+      beam_stresses(member_names(description), stressed_member_sections(frame))
 {
 }
 
 Frame::~Frame() = default;
-
-bool Frame::member_stress(const std::string &member,
-                          const std::array<double, 6> &forces,
-                          double &normal,
-                          double &von_mises) const
-{
-  const auto sections = member_sections(frame);
-  for (unsigned int m = 0; m < frame.members.size(); ++m)
-    if (frame.members[m].name == member)
-    {
-      if (!sections[m] || !has_fibre_distances(*sections[m]))
-        return false;
-      const BeamSectionStress s = beam_section_stress(*sections[m], forces);
-      normal = s.normal;
-      von_mises = s.von_mises;
-      return true;
-    }
-  return false;
-}
-
-std::vector<std::string> Frame::members_without_stresses() const
-{
-  std::vector<std::string> names;
-  const auto sections = member_sections(frame);
-  for (unsigned int m = 0; m < frame.members.size(); ++m)
-    if (sections[m] && !has_fibre_distances(*sections[m]))
-      names.push_back(frame.members[m].name);
-  return names;
-}
 
 void Frame::select_part(const std::vector<unsigned char> &parts, const int part)
 {

@@ -62,6 +62,35 @@ void Frame::write_series_vtu(const std::string &series,
       out, u, v.size() > 0 ? &v : nullptr, snapshot.time, snapshot.cycle, subdomain);
 }
 
+bool Frame::member_stress(const std::string &member,
+                          const std::array<double, 6> &forces,
+                          double &normal,
+                          double &von_mises) const
+{
+  const auto sections = stressed_member_sections(frame);
+  for (unsigned int m = 0; m < frame.members.size(); ++m)
+    if (frame.members[m].name == member)
+    {
+      if (!sections[m] || !has_fibre_distances(*sections[m]))
+        return false;
+      const BeamSectionStress s = beam_section_stress(*sections[m], forces);
+      normal = s.normal;
+      von_mises = s.von_mises;
+      return true;
+    }
+  return false;
+}
+
+std::vector<std::string> Frame::members_without_stresses() const
+{
+  std::vector<std::string> names;
+  const auto sections = stressed_member_sections(frame);
+  for (unsigned int m = 0; m < frame.members.size(); ++m)
+    if (sections[m] && !has_fibre_distances(*sections[m]))
+      names.push_back(frame.members[m].name);
+  return names;
+}
+
 std::string Frame::geometry_csv() const
 {
   std::ostringstream s;

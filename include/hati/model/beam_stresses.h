@@ -5,6 +5,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <hati/base/summary_value.h>
+#include <hati/model/frame_description.h>
 #include <hati/model/frame_element.h>
 #include <hati/model/frame_section_forces.h>
 
@@ -41,6 +42,14 @@ struct BeamSectionStress
   /** Largest |normal stress| (Pa), largest shear stress (Pa), von Mises (Pa). */
   double normal = 0., shear = 0., von_mises = 0.;
 };
+
+/**
+ * The section of every member of @p frame whose stresses are computed, in
+ * order (pointers into @p frame, which must outlive them); nullptr for a
+ * member made rigid by a rigid link between its end nodes (a post of a
+ * true height).
+ */
+std::vector<const FrameSection *> stressed_member_sections(const FrameDescription &frame);
 
 /** Whether @p section has stresses: a rectangle, a box, or `general` with c_y, c_z. */
 bool has_fibre_distances(const FrameSection &section);
