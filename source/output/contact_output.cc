@@ -1,4 +1,5 @@
 #include <hati/output/contact_output.h>
+#include <hati/output/csv_file.h>
 
 #include <algorithm>
 #include <cmath>
@@ -69,8 +70,8 @@ void ContactOutput::finish(SummaryEntries &summary,
   {
     std::ostringstream csv;
     csv << "wheel,vertical_max,vertical_max_time,vertical_min,vertical_min_time,"
-           "lateral_max,lateral_max_time,longitudinal_max,longitudinal_max_time\n"
-        << std::setprecision(10);
+           "lateral_max,lateral_max_time,longitudinal_max,longitudinal_max_time\n";
+    use_shortest_numbers(csv);
     out << "  runway loads (N, the largest and smallest mean over "
         << context.parameters.contact_force_window
         << " s; runway_loads.csv):\n"

@@ -39,6 +39,16 @@ private:
 };
 } // namespace
 
+std::string csv_field(const std::string &text)
+{
+  if (text.find_first_of(",\"\n\r") == std::string::npos)
+    return text;
+  std::string quoted = "\"";
+  for (const char c : text)
+    quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
 std::string shortest_number(const double x)
 {
   std::string s;

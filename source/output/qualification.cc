@@ -1,3 +1,4 @@
+#include <hati/output/csv_file.h>
 #include <hati/output/qualification.h>
 #include <hati/output/summary.h>
 
@@ -66,22 +67,6 @@ std::string unit_of(const std::string &check)
   return "";
 }
 
-std::string csv_text(const std::string &text)
-{
-  if (text.find_first_of(",\"\n\r") == std::string::npos)
-    return text;
-  std::string quoted = "\"";
-  for (const char c : text)
-    quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
-
-std::string number(const double x)
-{
-  std::ostringstream s;
-  s << std::setprecision(10) << x;
-  return s.str();
-}
 } // namespace
 
 void QualificationParameters::declare_parameters(ParameterHandler &prm)
@@ -250,9 +235,10 @@ std::string qualification_csv(const std::vector<QualificationRow> &rows)
 {
   std::string out = "check,item,demand,capacity,unit,ratio,verdict,where\n";
   for (const auto &r : rows)
-    out += csv_text(r.check) + ',' + csv_text(r.item) + ',' + number(r.demand) + ',' +
-           number(r.capacity) + ',' + r.unit + ',' + number(r.ratio) + ',' +
-           (r.passes ? "pass" : "fail") + ',' + csv_text(r.where) + '\n';
+    out += csv_field(r.check) + ',' + csv_field(r.item) + ',' +
+           shortest_number(r.demand) + ',' + shortest_number(r.capacity) + ',' + r.unit +
+           ',' + shortest_number(r.ratio) + ',' + (r.passes ? "pass" : "fail") + ',' +
+           csv_field(r.where) + '\n';
   return out;
 }
 

@@ -13,18 +13,6 @@ namespace hati
 {
 namespace
 {
-/** @p text as a CSV field: quoted (quotes doubled) if it has a comma, quote or newline.
- */
-std::string csv_field(const std::string &text)
-{
-  if (text.find_first_of(",\"\n\r") == std::string::npos)
-    return text;
-  std::string quoted = "\"";
-  for (const char c : text)
-    quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
-
 /** Largest value with its member, mean and count of @p values (value, member index). */
 struct Statistic
 {

@@ -26,6 +26,10 @@ inline void append_number(std::string &out, const double x)
 /** The shortest round-trip text of @p x (append_number()). */
 std::string shortest_number(const double x);
 
+/** @p text as a CSV field: quoted (quotes doubled) if it has a comma, quote or newline.
+ */
+std::string csv_field(const std::string &text);
+
 /**
  * Make @p out write doubles and floats as append_number() does (a `num_put`
  * facet), for code that writes rows to a `std::ostream`.
