@@ -42,8 +42,8 @@ import sys
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree (its modules below)
 from report_figures import (closest_ratio, frame_figure, no_matplotlib, plt, rsa_picture,
                             series, spectra_figure, stress_picture, wheel_figures)
-from report_html import (cell, esc, fmt, is_number, missing, number, para, read_json,
-                         read_table, table, text_cell)
+from report_html import (cell, esc, fmt, image_tag, is_number, missing, number, para,
+                         read_json, read_table, table, text_cell)
 
 # the statuses of a suite's members whose results count
 USABLE = ("completed", "reused")
@@ -353,19 +353,58 @@ def ec8_check(check):
     return "".join(out)
 
 
+def records_table(folder):
+    """The records: a suite's members (suite.csv: record, scale, status) and
+    the picture of its artificial records (records/records.png); a run's
+    ground motion entries of parameters.prm (Loading)."""
+    out = []
+    if folder.suite:
+        try:
+            rows = read_table(os.path.join(folder.path, "suite.csv"))
+        except OSError:
+            rows = []
+        if rows:
+            out.append("<h3>The records</h3>\n")
+            out.append(table(["member", "record", "scale", "status"],
+                             [[text_cell(r.get("member", "")), text_cell(r.get("record", "")),
+                               r.get("scale", ""), text_cell(r.get("status", ""))]
+                              for r in rows]))
+        picture = os.path.join(folder.path, "records", "records.png")
+        if os.path.isfile(picture) and not os.path.islink(picture):
+            with open(picture, "rb") as f:
+                data = f.read()
+            if data.startswith(b"\x89PNG"):
+                out.append(para("the artificial records and their spectra against the target "
+                                "(records/records.png)"))
+                out.append(image_tag(data, "the records"))
+        return "".join(out)
+    prm = os.path.join(folder.path, "parameters.prm")
+    if not os.path.isfile(prm):
+        return missing("no parameters.prm: the run's ground motion is not listed")
+    # the records and the base acceleration step, where set (parameters.prm
+    # gives a "# default:" comment to the entries away from their default)
+    entries = [(e, v) for sub, e, v, default in parse_prm(prm)
+               if sub == "Loading" and default is not None and
+               (e.startswith("Accelerogram") or e.startswith("Base acceleration"))]
+    if not entries:
+        return ""
+    return "<h3>The ground motion</h3>\n" + table(
+        ["entry (Loading)", "value"], [[text_cell(e), text_cell(v)] for e, v in entries])
+
+
 def section_input(folder):
-    out = ["<h2>Input</h2>\n"]
+    out = ["<h2>Input</h2>\n", records_table(folder)]
     if not folder.suite:
         path = os.path.join(folder.path, "spectra.csv")
         if not os.path.isfile(path):
-            return out[0] + missing("no spectra.csv (Output/Spectra is empty): no response "
-                                    "spectra of the run")
+            return "".join(out) + missing("no spectra.csv (Output/Spectra is empty): no "
+                                          "response spectra of the run")
         if plt is None:
-            return out[0] + no_matplotlib("the response spectra")
+            return "".join(out) + no_matplotlib("the response spectra")
         rows = read_table(path)
         ratio = closest_ratio(rows)
         if ratio is None or not rows:
-            return out[0] + missing("spectra.csv has no row")
+            return "".join(out) + missing("spectra.csv has no row")
         points = {}
         for c in rows[0].keys():
             if c not in ("damping_ratio", "period"):
