@@ -353,6 +353,7 @@ void BridgeCrane::Parameters::declare_parameters(ParameterHandler &prm)
                     "weigh at most 1e8 kg.");
   declare_masses(prm);
   declare_contacts_and_damping(prm);
+  RunwayParameters::declare_parameters(prm);
   declare_mesh(prm);
   declare_girder_model(prm);
   declare_heights(prm);
@@ -416,6 +417,7 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
                          "on the rope), got " +
                          prm.get("Hoist mass")));
   flange_clearance = positive("Flange clearance", true);
+  runway.parse_parameters(prm);
   wheel_restitution = prm.get_double("Wheel restitution");
   AssertThrow(wheel_restitution >= 0. && wheel_restitution <= 1.,
               ExcMessage(bridge_crane_where +
@@ -443,6 +445,12 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   braked_crane_wheels = prm.get("Braked crane wheels");
   wheel_friction = prm.get_double("Wheel friction coefficient");
   crane_wheels = prm.get("Crane wheels");
+  AssertThrow(crane_wheels == "contacts" || !runway.restrained(false),
+              ExcMessage(bridge_crane_where +
+                         "Uplift restraints = " + runway.uplift_restraints +
+                         ": the crane wheels are held (Crane wheels = " + crane_wheels +
+                         "), so nothing lifts them; restrain the trolley wheels only or "
+                         "set Crane wheels = contacts"));
   element_length = positive("Element length");
   explicit_element_length = positive("Explicit element length");
   explicit_zone_length = positive("Explicit zone length", true);

@@ -413,6 +413,16 @@ void add_wheel_contacts(const CraneParameters &p, FrameDescription &f)
     if (p.travel == "tied" && held)
       contact(tw + "_travel", wn, rn, ey, 0., true);
   }
+  // the seismic restraints after every wheel contact (the rows of an
+  // unrestrained crane unchanged)
+  for (unsigned int k = 1; k <= 4; ++k)
+  {
+    const std::string n = std::to_string(k);
+    if (p.runway.restrained(false) && p.crane_wheels == "contacts")
+      p.runway.add_restraint(f, "crane_wheel_" + n, "cw" + n, "");
+    if (p.runway.restrained(true))
+      p.runway.add_restraint(f, "trolley_wheel_" + n, "tw" + n, "rail_" + n);
+  }
 }
 } // namespace
 

@@ -165,9 +165,13 @@ std::vector<QualificationDemand> run_demands(const std::string &summary_json)
               name,
               e["max_von_mises"]["value"],
               format_where(e["max_von_mises"], "x", "time"));
+  // the uplift of the wheels where the model has them (not of their
+  // restraints), else of every one-sided contact
+  const auto *wheels = group("wheels");
   if (const auto *g = group("contacts"))
     for (const auto &[name, e] : g->items())
-      if (e.is_object() && e.contains("max_uplift"))
+      if (e.is_object() && e.contains("max_uplift") &&
+          (!wheels || wheels->contains(name)))
         add("uplift", name, e["max_uplift"], format_where(e, nullptr, "max_uplift_time"));
   if (const auto *g = group("wheels"))
   {

@@ -1,6 +1,7 @@
 #ifndef hati_model_bridge_crane_h
 #define hati_model_bridge_crane_h
 
+#include <hati/model/bridge_crane_runway.h>
 #include <hati/model/frame.h>
 #include <hati/model/frame_description.h>
 #include <hati/model/model.h>
@@ -74,6 +75,8 @@ public:
     double flange_clearance = 0.02;
     /** Newton's restitution coefficient of every wheel contact (-). */
     double wheel_restitution = 0.;
+    /** What holds the crane on its runway: the uplift restraints. */
+    RunwayParameters runway;
     /**
      * "braked" (friction at the wheels: braked wheels hold, the others roll
      * along their rail), "free" (every wheel rolls along its rail, friction

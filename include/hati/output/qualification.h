@@ -74,7 +74,9 @@ struct QualificationRow
  * The demands in the summary.json text @p summary_json of a transient run
  * (or of a response-spectrum analysis): `beam_stresses.<m>.max_von_mises`
  * and `solids.<s>.max_von_mises` (stress), `contacts.<c>.max_uplift`
- * (uplift), `wheels.<w>.slip_distance` (slip), `.max_lateral_offset`
+ * (uplift: of the `wheels` where the summary has them, not their
+ * restraints; else of every one-sided contact), `wheels.<w>.slip_distance`
+ * (slip), `.max_lateral_offset`
  * (lateral offset), `rope_tension.<r>.max` (rope), each with its station
  * and time where the summary gives them (or its own `where`).
  */
