@@ -445,6 +445,13 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   braked_crane_wheels = prm.get("Braked crane wheels");
   wheel_friction = prm.get_double("Wheel friction coefficient");
   crane_wheels = prm.get("Crane wheels");
+  AssertThrow(crane_wheels == "contacts" || !runway.springs(),
+              ExcMessage(bridge_crane_where +
+                         "Runway = springs: the crane wheels are "
+                         "held (Crane wheels = " +
+                         crane_wheels +
+                         "), not on the runway; set Crane wheels = contacts or Runway = "
+                         "rigid"));
   AssertThrow(crane_wheels == "contacts" || !runway.restrained(false),
               ExcMessage(bridge_crane_where +
                          "Uplift restraints = " + runway.uplift_restraints +
@@ -543,6 +550,35 @@ BridgeCrane::BridgeCrane(const Parameters &parameters)
 void BridgeCrane::build(const CommonModelParameters &common, DiscreteSystem &system)
 {
   frame.build(common, system);
+  // Runway = springs: the spring forces of each runway node, the loads on
+  // the building (vertical: compression, the node pushed down)
+  if (crane.runway.springs() && crane.crane_wheels == "contacts")
+    for (unsigned int k = 1; k <= 4; ++k)
+    {
+      const std::string wheel = "crane_wheel_" + std::to_string(k),
+                        node = "runway_" + std::to_string(k);
+      system.reaction_springs.push_back({"runway_reaction",
+                                         wheel,
+                                         "longitudinal",
+                                         node,
+                                         0,
+                                         crane.runway.longitudinal_stiffness,
+                                         1.});
+      system.reaction_springs.push_back({"runway_reaction",
+                                         wheel,
+                                         "lateral",
+                                         node,
+                                         1,
+                                         crane.runway.lateral_stiffness,
+                                         1.});
+      system.reaction_springs.push_back({"runway_reaction",
+                                         wheel,
+                                         "vertical",
+                                         node,
+                                         2,
+                                         crane.runway.vertical_stiffness,
+                                         -1.});
+    }
 }
 
 void BridgeCrane::select_part(const std::vector<unsigned char> &cell_parts,
@@ -628,6 +664,11 @@ DecompositionParameters BridgeCrane::default_decomposition() const
     if (crane.crane_wheels == "contacts")
       d.members.push_back("crane_wheel_post_" + n);
   }
+  // the runway nodes with their wheels
+  for (unsigned int k = 1;
+       k <= 4 && crane.runway.springs() && crane.crane_wheels == "contacts";
+       ++k)
+    d.members.push_back("runway_post_" + std::to_string(k));
   return d;
 }
 

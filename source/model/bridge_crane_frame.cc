@@ -389,14 +389,17 @@ void add_wheel_contacts(const CraneParameters &p, FrameDescription &f)
   for (unsigned int k = 1; k <= 4 && p.crane_wheels == "contacts"; ++k)
   {
     const std::string cw = "crane_wheel_" + std::to_string(k);
+    // on the ground, or on its runway node (Runway = springs)
+    const std::string runway = p.runway.springs() ? "runway_" + std::to_string(k) : "";
     contact(cw,
             "cw" + std::to_string(k),
-            "",
+            runway,
             ez,
             0.,
             false,
             p.crane_wheel_braked(k) ? -1 : 0);
-    contact(cw + "_lateral", "cw" + std::to_string(k), "", ey, p.flange_clearance, true);
+    contact(
+        cw + "_lateral", "cw" + std::to_string(k), runway, ey, p.flange_clearance, true);
   }
   // solid girders: the trolley held along Y at one wheel per rail (1 and
   // 3), the others rolling: held at both, the top flange's strain between
@@ -419,7 +422,8 @@ void add_wheel_contacts(const CraneParameters &p, FrameDescription &f)
   {
     const std::string n = std::to_string(k);
     if (p.runway.restrained(false) && p.crane_wheels == "contacts")
-      p.runway.add_restraint(f, "crane_wheel_" + n, "cw" + n, "");
+      p.runway.add_restraint(
+          f, "crane_wheel_" + n, "cw" + n, p.runway.springs() ? "runway_" + n : "");
     if (p.runway.restrained(true))
       p.runway.add_restraint(f, "trolley_wheel_" + n, "tw" + n, "rail_" + n);
   }
@@ -439,6 +443,9 @@ FrameDescription BridgeCrane::Parameters::frame() const
   f.monitor_nodes = {"hoist", "tw1", "tw2", "tw3", "tw4", "cw1", "cw2", "cw3", "cw4"};
   if (hoist == "rope")
     f.monitor_nodes.push_back("load");
+  // the runway nodes on their springs (their monitors after the crane's)
+  for (unsigned int k = 1; k <= 4 && crane_wheels == "contacts"; ++k)
+    runway.add_runway_node(f, k, E, nu);
   // solid girders: their cuts instead (add_solid_girders())
   if (girder_model != "solid")
     f.section_force_members = {"girder_1", "girder_2"};

@@ -55,6 +55,16 @@ std::string read_member_summary(const std::string &folder, MemberResult &result)
             values.emplace_back(name + ".runway_load." + key,
                                 entry["runway_load"][key].get<double>());
   }
+  // the runway springs' forces (Runway = springs)
+  if (summary.contains("runway_reaction") && summary["runway_reaction"].is_object())
+    for (const auto &[wheel, directions] : summary["runway_reaction"].items())
+      for (const char *direction : {"vertical", "lateral", "longitudinal"})
+        if (directions.is_object() && directions.contains(direction))
+          for (const char *extreme : {"max", "min"})
+            if (directions[direction].contains(extreme) &&
+                directions[direction][extreme].is_number())
+              values.emplace_back(wheel + ".runway_reaction." + direction + "_" + extreme,
+                                  directions[direction][extreme].get<double>());
   // every one-sided contact's uplift (the wheels' among them)
   if (summary.contains("contacts"))
     add_per_name(summary["contacts"], "max_uplift", "max_uplift", values);

@@ -24,6 +24,19 @@ using namespace dealii;
  * moves with the base), a trolley wheel's to its rail node. Open in the
  * static state, the modal and the response-spectrum analyses (a positive
  * gap), so that only a lifting wheel meets it.
+ *
+ * With `Runway = springs` each crane wheel k runs on a node `runway_k`
+ * instead of the rigid ground: the runway girder, its column and bracket at
+ * the wheel, with the mass `Runway mass per wheel` and the three
+ * stiffnesses. The springs are a short vertical post `runway_post_k` (length
+ * runway_post_length) from that node down to a clamped anchor, the node's
+ * rotations held (a guided cantilever): axial stiffness E A / L = the
+ * vertical one, 12 E I / L^3 = the lateral (Y) and the longitudinal (X)
+ * ones, without shear deformation; a tenth of the runway's mass in the
+ * post, the rest at the node (its lumped mass is the Runway mass per
+ * wheel).
+ * The wheel's contacts act between the wheel and that node; the spring
+ * forces are the reactions `runway_reaction` (ReactionSpring).
  */
 struct RunwayParameters
 {
@@ -38,6 +51,28 @@ struct RunwayParameters
   double restraint_clearance = 0.01;
   /** Newton's restitution coefficient of the restraint contacts (-, [0, 1]). */
   double restraint_restitution = 0.;
+  /** `rigid` (the ground) or `springs` (a runway node on springs per crane wheel). */
+  std::string runway = "rigid";
+  /** Per crane wheel (N/m): vertical, lateral (Y), longitudinal (X). */
+  double vertical_stiffness = 2e8, lateral_stiffness = 5e7, longitudinal_stiffness = 5e8;
+  /** The runway's mass that moves with each crane wheel (kg). */
+  double mass_per_wheel = 500.;
+  /** The length of the springs' posts (m): any, the stiffnesses fix their sections. */
+  static constexpr double runway_post_length = 0.5;
+
+  /** Whether the crane wheels run on runway springs. */
+  bool springs() const { return runway == "springs"; }
+
+  /**
+   * With springs: the runway node, post, anchor, mass and supports of the
+   * crane wheel `cw<k>` of @p frame (the wheel's node exists), E and nu the
+   * crane's material. Returns the node the wheel's contacts act against
+   * (`runway_<k>`), empty for a rigid runway (the ground).
+   */
+  std::string add_runway_node(FrameDescription &frame,
+                              const unsigned int k,
+                              const double E,
+                              const double nu) const;
 
   /** Whether the crane wheels (or the trolley wheels: @p trolley) are restrained. */
   bool restrained(const bool trolley) const

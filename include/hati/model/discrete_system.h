@@ -96,6 +96,21 @@ bool has_friction(const std::vector<ContactRow> &contacts);
  * `history.csv`. `labels[i]` is the component name ("x", "y" or "z") of
  * `dofs[i]`.
  */
+/**
+ * A spring that holds the structure to the ground and whose force is a
+ * load on the building (a crane's runway springs, doc/user_guide.md "The
+ * crane on its runway"): `sign k u` with u the component @p component of
+ * the monitor point @p monitor. The outputs give its largest and smallest
+ * force (ReactionPeaks), as `<group>.<name>.<direction>`.
+ */
+struct ReactionSpring
+{
+  std::string group, name, direction, monitor;
+  unsigned int component = 0;
+  /** N/m; the force is sign x stiffness x u (N). */
+  double stiffness = 0., sign = 1.;
+};
+
 struct MonitorPoint
 {
   std::string name;
@@ -295,6 +310,8 @@ public:
    */
   std::map<std::string, std::any> law_data;
   std::vector<MonitorPoint> monitors;
+  /** The springs whose forces are reported as reactions (none by default). */
+  std::vector<ReactionSpring> reaction_springs;
 
   Vector<double> initial_displacement;
   Vector<double> initial_velocity;

@@ -54,7 +54,9 @@ struct MemberResult
  * `<wheel>.slip_distance` (m, when present), `<wheel>.uplift_time` (s),
  * `<wheel>.max_lateral_offset` (m) and, for a runway wheel,
  * `<wheel>.runway_load.vertical_max`, `.vertical_min`, `.lateral_max`,
- * `.longitudinal_max` (N); per one-sided contact `<contact>.max_uplift`
+ * `.longitudinal_max` (N) and, on runway springs,
+ * `<wheel>.runway_reaction.<vertical|lateral|longitudinal>_<max|min>` (N);
+ * per one-sided contact `<contact>.max_uplift`
  * (m); per beam member `<member>.max_normal_stress` and `.max_von_mises`
  * (Pa);
  * the section-force envelope `section_force.N`, `.My`, `.Mz` (N, N m);
