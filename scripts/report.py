@@ -576,6 +576,18 @@ def section_wheels(folder):
         out.append(table(header, [[r[h] for h in header] for r in rows]))
     else:
         out.append(missing("no runway_loads.csv%s" % folder.run_label()))
+    # Runway = springs: the forces of the runway springs (summary.json runway_reaction)
+    reactions = summary.get("runway_reaction")
+    if isinstance(reactions, dict) and reactions:
+        rows = []
+        for wheel, directions in reactions.items():
+            for direction, r in (directions or {}).items():
+                if isinstance(r, dict):
+                    rows.append([wheel, direction, r.get("max", ""), r.get("max_time", ""),
+                                 r.get("min", ""), r.get("min_time", "")])
+        out.append("<h3>Runway reactions (summary.json runway_reaction: the runway "
+                   "springs' forces; N, s)</h3>\n")
+        out.append(table(["wheel", "direction", "max", "at t", "min", "at t"], rows))
     return "".join(out)
 
 
