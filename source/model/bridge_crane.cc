@@ -550,35 +550,9 @@ BridgeCrane::BridgeCrane(const Parameters &parameters)
 void BridgeCrane::build(const CommonModelParameters &common, DiscreteSystem &system)
 {
   frame.build(common, system);
-  // Runway = springs: the spring forces of each runway node, the loads on
-  // the building (vertical: compression, the node pushed down)
-  if (crane.runway.springs() && crane.crane_wheels == "contacts")
-    for (unsigned int k = 1; k <= 4; ++k)
-    {
-      const std::string wheel = "crane_wheel_" + std::to_string(k),
-                        node = "runway_" + std::to_string(k);
-      system.reaction_springs.push_back({"runway_reaction",
-                                         wheel,
-                                         "longitudinal",
-                                         node,
-                                         0,
-                                         crane.runway.longitudinal_stiffness,
-                                         1.});
-      system.reaction_springs.push_back({"runway_reaction",
-                                         wheel,
-                                         "lateral",
-                                         node,
-                                         1,
-                                         crane.runway.lateral_stiffness,
-                                         1.});
-      system.reaction_springs.push_back({"runway_reaction",
-                                         wheel,
-                                         "vertical",
-                                         node,
-                                         2,
-                                         crane.runway.vertical_stiffness,
-                                         -1.});
-    }
+  // Runway = springs: the spring forces, the loads on the building
+  if (crane.crane_wheels == "contacts")
+    crane.runway.add_reaction_springs(system);
 }
 
 void BridgeCrane::select_part(const std::vector<unsigned char> &cell_parts,
@@ -687,29 +661,6 @@ std::vector<std::string> BridgeCrane::wheel_lateral_contacts() const
   for (std::string &name : names)
     name += "_lateral";
   return names;
-}
-
-std::vector<Model::RunwayWheel> BridgeCrane::runway_wheels() const
-{
-  if (crane.crane_wheels != "contacts")
-    return {};
-  std::vector<RunwayWheel> wheels;
-  for (unsigned int k = 1; k <= 4; ++k)
-  {
-    RunwayWheel w;
-    w.name = "crane_wheel_" + std::to_string(k);
-    w.lateral_contact = w.name + "_lateral";
-    if (crane.travel != "tied")
-    {
-      // as add_wheel_contacts(): braked wheels hold along X and Y, the
-      // others roll along X (friction across the rail only)
-      const bool braked = crane.crane_wheel_braked(k);
-      w.longitudinal_tangent = braked ? 0 : -1;
-      w.lateral_tangent = braked ? 1 : 0;
-    }
-    wheels.push_back(w);
-  }
-  return wheels;
 }
 
 DefaultDamping BridgeCrane::default_damping() const

@@ -1,5 +1,7 @@
 // The bridge crane on its runway (doc/user_guide.md "The crane on its
-// runway"): the seismic restraints against uplift
+// runway"): the seismic restraints against uplift, the runway springs and
+// the runway wheels (BridgeCrane::runway_wheels())
+#include <hati/model/bridge_crane.h>
 #include <hati/model/bridge_crane_runway.h>
 
 #include <cmath>
@@ -176,4 +178,45 @@ void RunwayParameters::add_restraint(FrameDescription &frame,
   c.restitution = restraint_restitution;
   frame.contacts.push_back(c);
 }
+void RunwayParameters::add_reaction_springs(DiscreteSystem &system) const
+{
+  if (!springs())
+    return;
+  // vertical: compression, the runway node pushed down
+  for (unsigned int k = 1; k <= 4; ++k)
+  {
+    const std::string wheel = "crane_wheel_" + std::to_string(k),
+                      node = "runway_" + std::to_string(k);
+    system.reaction_springs.push_back(
+        {"runway_reaction", wheel, "longitudinal", node, 0, longitudinal_stiffness, 1.});
+    system.reaction_springs.push_back(
+        {"runway_reaction", wheel, "lateral", node, 1, lateral_stiffness, 1.});
+    system.reaction_springs.push_back(
+        {"runway_reaction", wheel, "vertical", node, 2, vertical_stiffness, -1.});
+  }
+}
+
+std::vector<Model::RunwayWheel> BridgeCrane::runway_wheels() const
+{
+  if (crane.crane_wheels != "contacts")
+    return {};
+  std::vector<RunwayWheel> wheels;
+  for (unsigned int k = 1; k <= 4; ++k)
+  {
+    RunwayWheel w;
+    w.name = "crane_wheel_" + std::to_string(k);
+    w.lateral_contact = w.name + "_lateral";
+    if (crane.travel != "tied")
+    {
+      // as add_wheel_contacts(): braked wheels hold along X and Y, the
+      // others roll along X (friction across the rail only)
+      const bool braked = crane.crane_wheel_braked(k);
+      w.longitudinal_tangent = braked ? 0 : -1;
+      w.lateral_tangent = braked ? 1 : 0;
+    }
+    wheels.push_back(w);
+  }
+  return wheels;
+}
+
 } // namespace hati

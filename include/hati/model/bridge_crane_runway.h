@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <hati/model/discrete_system.h>
 #include <hati/model/frame_description.h>
 
 #include <string>
@@ -69,6 +70,13 @@ struct RunwayParameters
    * crane's material. Returns the node the wheel's contacts act against
    * (`runway_<k>`), empty for a rigid runway (the ground).
    */
+  /**
+   * With springs: the reaction springs of the four runway nodes (the
+   * runway_reaction of summary.json: longitudinal X, lateral Y, vertical
+   * positive pushing the runway down) into @p system.
+   */
+  void add_reaction_springs(DiscreteSystem &system) const;
+
   std::string add_runway_node(FrameDescription &frame,
                               const unsigned int k,
                               const double E,
