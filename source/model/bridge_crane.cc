@@ -655,14 +655,6 @@ std::vector<std::string> BridgeCrane::wheel_contacts() const
   return names;
 }
 
-std::vector<std::string> BridgeCrane::wheel_lateral_contacts() const
-{
-  std::vector<std::string> names = wheel_contacts();
-  for (std::string &name : names)
-    name += "_lateral";
-  return names;
-}
-
 DefaultDamping BridgeCrane::default_damping() const
 {
   DefaultDamping d;

@@ -1,6 +1,7 @@
 // The bridge crane on its runway (doc/user_guide.md "The crane on its
 // runway"): the seismic restraints against uplift, the runway springs and
-// the runway wheels (BridgeCrane::runway_wheels())
+// the runway wheels and their flanges (BridgeCrane::runway_wheels(),
+// wheel_lateral_contacts())
 #include <hati/model/bridge_crane.h>
 #include <hati/model/bridge_crane_runway.h>
 
@@ -217,6 +218,14 @@ std::vector<Model::RunwayWheel> BridgeCrane::runway_wheels() const
     wheels.push_back(w);
   }
   return wheels;
+}
+
+std::vector<std::string> BridgeCrane::wheel_lateral_contacts() const
+{
+  std::vector<std::string> names = wheel_contacts();
+  for (std::string &name : names)
+    name += "_lateral";
+  return names;
 }
 
 } // namespace hati

@@ -109,7 +109,7 @@ std::vector<ContactOutput::RunwayLoad> ContactOutput::runway_loads() const
     RunwayLoad l;
     l.wheel = wheel.name;
     l.value = {{vertical->peak_mean_force,
-                std::isfinite(vertical->min_mean_force) ? vertical->min_mean_force : 0.,
+                vertical->min_mean_force,
                 lateral ? lateral->peak_mean_force : 0.,
                 t >= 0 ? vertical->peak_tangent_force[t] : 0.}};
     l.time = {{vertical->peak_mean_force_time,

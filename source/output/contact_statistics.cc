@@ -90,8 +90,7 @@ ContactStatistics::ContactStatistics(const std::vector<ContactRow> &contacts,
       groups[g].two_sided = true;
     }
   group_gap.assign(groups.size(), 0.);
-  for (auto &e : groups)
-    e.min_mean_force = std::numeric_limits<double>::infinity();
+  min_counted.assign(groups.size(), 0);
 }
 
 const ContactStatistics::Entry *ContactStatistics::entry(const std::string &name) const
@@ -143,10 +142,11 @@ void ContactStatistics::add_step(const double time,
       // the smallest mean over whole windows (after the first step of a
       // contact closed in the initial state)
       if (n_steps >= n_window + initially_closed[g] &&
-          mean_force < groups[g].min_mean_force)
+          (!min_counted[g] || mean_force < groups[g].min_mean_force))
       {
         groups[g].min_mean_force = mean_force;
         groups[g].min_mean_force_time = time;
+        min_counted[g] = 1;
       }
     }
   }
@@ -301,7 +301,7 @@ SummaryValue ContactStatistics::json(const std::vector<std::string> &names) cons
                              .set("uplift_time", e.uplift_time)
                              .set("n_contact_loss_episodes", e.episodes.size());
     if (force_window > 0.)
-      entry.set("min_mean_force", std::isfinite(e.min_mean_force) ? e.min_mean_force : 0.)
+      entry.set("min_mean_force", e.min_mean_force)
           .set("min_mean_force_time", e.min_mean_force_time);
     if (e.two_sided)
       entry.set("max_offset", e.max_offset).set("max_offset_time", e.max_offset_time);

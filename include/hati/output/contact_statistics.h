@@ -57,7 +57,8 @@ public:
      * Smallest mean contact force over the force window (N) among the
      * whole windows (of a contact closed in the initial state, those after
      * its first step) and the end of that window (s); with a force window
-     * only. At rest on its support it equals peak_mean_force.
+     * only, 0 before the first whole window. At rest on its support it
+     * equals peak_mean_force.
      */
     double min_mean_force = 0., min_mean_force_time = 0.;
     /** Total time without push after the first push (s). */
@@ -164,6 +165,8 @@ private:
   // the rows of a two-sided group with clearance (its offset); -1: none
   std::vector<std::array<int, 2>> offset_rows;
   std::vector<double> group_gap;
+  // whether a group's min_mean_force has seen a whole window
+  std::vector<char> min_counted;
   // the mean force: the last n_window impulses of every group (a ring) and their sum
   double force_window = 0.;
   unsigned long n_window = 0;
