@@ -505,6 +505,7 @@ void BridgeCrane::Parameters::parse_parameters(ParameterHandler &prm)
   check_section(trolley_section, "Trolley section");
   parse_girder_model(prm);
   parse_heights(prm);
+  check_flange_depth();
   if (girder_model == "solid")
     check_section(rail_section, "Rail section");
   if (!(mass_bridge() <= max_structure_mass))

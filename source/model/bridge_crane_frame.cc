@@ -416,6 +416,13 @@ void add_wheel_contacts(const CraneParameters &p, FrameDescription &f)
     if (p.travel == "tied" && held)
       contact(tw + "_travel", wn, rn, ey, 0., true);
   }
+  // with a Flange depth, each wheel's flanges over its rail (D1-D2)
+  for (unsigned int k = 1; k <= 4; ++k)
+  {
+    if (p.crane_wheels == "contacts")
+      p.runway.add_flange(f, "crane_wheel_" + std::to_string(k));
+    p.runway.add_flange(f, "trolley_wheel_" + std::to_string(k));
+  }
   // the seismic restraints after every wheel contact (the rows of an
   // unrestrained crane unchanged)
   for (unsigned int k = 1; k <= 4; ++k)

@@ -56,6 +56,21 @@ void BridgeCrane::Parameters::parse_heights(ParameterHandler &prm)
   }
 }
 
+void BridgeCrane::Parameters::check_flange_depth() const
+{
+  const FrameSection g =
+      parse_frame_section(girder_section, bridge_crane_where + "Girder section");
+  const double h = g.h > 0. ? g.h : 2. * std::sqrt(g.Iy / g.A);
+  if (!(runway.flange_depth < h))
+  {
+    std::ostringstream m;
+    m << bridge_crane_where << "Flange depth = " << runway.flange_depth
+      << " m: expected less than the girder height (" << h
+      << " m, Girder section); a wheel's flange is a few centimetres deep";
+    AssertThrow(false, ExcMessage(m.str()));
+  }
+}
+
 double BridgeCrane::Parameters::rail_head_height() const
 {
   if (!eccentricities || girder_model == "solid")

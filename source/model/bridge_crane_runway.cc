@@ -65,6 +65,24 @@ void RunwayParameters::declare_parameters(ParameterHandler &prm)
                     Patterns::Double(),
                     "Runway = springs: the runway's mass that moves with each crane "
                     "wheel (kg), > 0 and at most 1e6.");
+  prm.declare_entry(
+      "Flange depth",
+      "0",
+      Patterns::Double(),
+      "The depth of the wheels' flanges below the rail head's top (m), >= 0 and "
+      "below the girder height: while a wheel has lifted by more than this its "
+      "lateral flange contacts do not act (they pass over the rail head), and a "
+      "wheel above its flange whose lateral offset exceeds the Flange clearance "
+      "plus half the Rail head width has left its rail: the run stops with status "
+      "derailed (summary.json derailment, exit code 0). Default 0: the flanges "
+      "always engage. Every wheel, crane and trolley.");
+  prm.declare_entry("Rail head width",
+                    "0.055",
+                    Patterns::Double(),
+                    "The width of the rail head (m), > 0 and at most 0.5 m: with a "
+                    "Flange depth, a wheel above its flange derails beyond a lateral "
+                    "offset of Flange clearance + Rail head width / 2. Default 55 mm "
+                    "(an A55 crane rail).");
   prm.declare_entry("Restraint clearance",
                     "0.01",
                     Patterns::Double(),
@@ -102,6 +120,11 @@ void RunwayParameters::parse_parameters(ParameterHandler &prm)
   lateral_stiffness = positive("Runway lateral stiffness", 1e12, "N/m");
   longitudinal_stiffness = positive("Runway longitudinal stiffness", 1e12, "N/m");
   mass_per_wheel = positive("Runway mass per wheel", 1e6, "kg");
+  flange_depth = prm.get_double("Flange depth");
+  AssertThrow(std::isfinite(flange_depth) && flange_depth >= 0.,
+              ExcMessage(runway_where + "Flange depth = " + prm.get("Flange depth") +
+                         ": expected a depth >= 0 m (0: the flanges always engage)"));
+  rail_head_width = positive("Rail head width", 0.5, "m");
   restraint_restitution = prm.get_double("Restraint restitution");
   AssertThrow(std::isfinite(restraint_restitution) && restraint_restitution >= 0. &&
                   restraint_restitution <= 1.,
@@ -179,6 +202,13 @@ void RunwayParameters::add_restraint(FrameDescription &frame,
   c.restitution = restraint_restitution;
   frame.contacts.push_back(c);
 }
+void RunwayParameters::add_flange(FrameDescription &frame, const std::string &wheel) const
+{
+  if (flange_depth > 0.)
+    frame.flanges.push_back(
+        {wheel, wheel, wheel + "_lateral", flange_depth, rail_head_width});
+}
+
 void RunwayParameters::add_reaction_springs(DiscreteSystem &system) const
 {
   if (!springs())

@@ -392,6 +392,7 @@ void Frame::build(const CommonModelParameters &common, DiscreteSystem &system)
 
   add_loads(common, system);
   add_contacts(common, system);
+  add_flanges(system);
   add_link_rows(system);
   add_monitors(system);
 }

@@ -285,6 +285,55 @@ void validate_contacts(const FrameDescription &d, const std::set<std::string> &h
                       "must lie in the contact plane");
   }
 }
+
+/**
+ * The flanges: each names a one-sided tread contact and a two-sided flange
+ * contact with a clearance of the same node, a depth > 0 and a rail head
+ * width >= 0.
+ */
+void validate_flanges(const FrameDescription &d)
+{
+  std::set<std::string> names;
+  for (const auto &f : d.flanges)
+  {
+    const std::string flange = "flange '" + f.name + "'";
+    require(names.insert(f.name).second, "Flanges", flange + " is given twice");
+    const auto find = [&](const std::string &contact)
+    {
+      for (const auto &c : d.contacts)
+        if (c.name == contact)
+          return &c;
+      return static_cast<const FrameDescription::NodeContact *>(nullptr);
+    };
+    const auto *tread = find(f.tread_contact), *lateral = find(f.flange_contact);
+    require(tread != nullptr,
+            "Flanges",
+            flange + ": no contact named '" + f.tread_contact +
+                "' in Model/Frame/Contacts (the tread contact)");
+    require(lateral != nullptr,
+            "Flanges",
+            flange + ": no contact named '" + f.flange_contact +
+                "' in Model/Frame/Contacts (the flange contact)");
+    require(!tread->two_sided,
+            "Flanges",
+            flange + ": the tread contact '" + f.tread_contact +
+                "' must be one-sided (its gap is the uplift)");
+    require(lateral->two_sided && lateral->gap > 0.,
+            "Flanges",
+            flange + ": the flange contact '" + f.flange_contact +
+                "' must be two-sided with a clearance > 0");
+    require(tread->node == lateral->node,
+            "Flanges",
+            flange + ": the tread and flange contacts act on different nodes ('" +
+                tread->node + "', '" + lateral->node + "'): give one wheel's");
+    require(std::isfinite(f.depth) && f.depth > 0.,
+            "Flanges",
+            flange + ": the flange depth must be > 0 (m)");
+    require(std::isfinite(f.rail_head_width) && f.rail_head_width >= 0.,
+            "Flanges",
+            flange + ": the rail head width must be >= 0 (m)");
+  }
+}
 } // namespace
 
 std::vector<Tensor<1, 3>> contact_tangent_directions(const Tensor<1, 3> &normal,
@@ -450,6 +499,7 @@ void FrameDescription::validate() const
     held.insert(n);
   validate_nodal_data(*this, used_nodes, held);
   validate_contacts(*this, held);
+  validate_flanges(*this);
   validate_solids(*this, used_nodes);
   std::set<std::string> member_names;
   for (const auto &m : members)

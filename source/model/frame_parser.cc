@@ -142,6 +142,20 @@ void FrameParameters::declare_parameters(ParameterHandler &prm)
       "the rope). Tension T = max(0, k (l - rest length)) with l the current "
       "distance between the nodes.");
   prm.declare_entry(
+      "Flanges",
+      "",
+      Patterns::Anything(),
+      "Wheel flanges that can leave their rail (CD-Lagrange, or the explicit "
+      "subdomain of HATI; doc/theory.md D1-D2), 'name: tread contact, flange "
+      "contact, flange depth, rail head width; ...': the tread contact is the "
+      "wheel's one-sided contact on the rail (its gap is the uplift), the flange "
+      "contact its two-sided lateral contact with a clearance c, of the same node. "
+      "While the uplift exceeds the flange depth (m, > 0) the flange contact does "
+      "not act; a wheel above its flange whose lateral offset exceeds c plus half "
+      "the rail head width (m, >= 0) has derailed: the run stops with status "
+      "'derailed' (summary.json derailment). Static and modal analyses take the "
+      "flanges as engaged.");
+  prm.declare_entry(
       "Nodal loads",
       "",
       Patterns::Anything(),
@@ -464,6 +478,30 @@ FrameDescription::RopeData parse_rope(const Item &it)
   return r;
 }
 
+/** One item of Flanges: 'tread contact, flange contact, flange depth, rail head width'.
+ */
+FrameDescription::Flange parse_flange(const Item &it)
+{
+  expect_frame_item_values(
+      it,
+      "Flanges",
+      {4},
+      "4 (tread contact, flange contact, flange depth, rail head width)");
+  FrameDescription::Flange f;
+  f.name = it.name;
+  f.tread_contact = it.values[0];
+  f.flange_contact = it.values[1];
+  f.depth = frame_item_number(it.values[2], "Flanges", it);
+  AssertThrow(f.depth > 0.,
+              ExcMessage("Model/Frame/Flanges: flange '" + it.name +
+                         "': the flange depth must be > 0 (m), got " + it.values[2]));
+  f.rail_head_width = frame_item_number(it.values[3], "Flanges", it);
+  AssertThrow(f.rail_head_width >= 0.,
+              ExcMessage("Model/Frame/Flanges: flange '" + it.name +
+                         "': the rail head width must be >= 0 (m), got " + it.values[3]));
+  return f;
+}
+
 /**
  * The trailing options of a Contacts item, in any order, taken off the end
  * of @p v: 'two-sided', 'mu=<coefficient>' (Coulomb friction, A9) and
@@ -592,6 +630,8 @@ void FrameParameters::parse_parameters(ParameterHandler &prm)
     d.contacts.push_back(parse_contact(it, d));
   for (const Item &it : parse_frame_items(prm.get("Ropes"), "Ropes"))
     d.ropes.push_back(parse_rope(it));
+  for (const Item &it : parse_frame_items(prm.get("Flanges"), "Flanges"))
+    d.flanges.push_back(parse_flange(it));
   parse_solid_entries(prm, d.solids);
 }
 } // namespace hati

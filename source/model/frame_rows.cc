@@ -3,6 +3,7 @@
 #include <hati/model/frame.h>
 #include <hati/model/frame_solids.h>
 #include <hati/model/solid_tie.h>
+#include <hati/model/wheel_flange.h>
 
 namespace hati
 {
@@ -120,6 +121,40 @@ void Frame::add_contacts(const CommonModelParameters &common,
       system.contacts.push_back(row);
     }
   }
+}
+
+void Frame::add_flanges(DiscreteSystem &system) const
+{
+  // the flanges whose contacts the part built holds (both or neither: a
+  // tread and a flange contact of one node are owned together), by the rows
+  // add_contacts() gave them
+  std::vector<WheelFlange> flanges;
+  for (const auto &f : frame.flanges)
+  {
+    std::vector<unsigned int> tread, lateral;
+    for (unsigned int k = 0; k < system.contacts.size(); ++k)
+    {
+      if (system.contacts[k].name == f.tread_contact)
+        tread.push_back(k);
+      if (system.contacts[k].name == f.flange_contact)
+        lateral.push_back(k);
+    }
+    if (tread.empty() && lateral.empty())
+      continue;
+    AssertThrow(tread.size() == 1 && lateral.size() == 2, ExcInternalError());
+    WheelFlange w;
+    w.wheel = f.name;
+    w.tread_row = tread[0];
+    w.flange_rows = {{lateral[0], lateral[1]}};
+    w.flange_depth = f.depth;
+    // D2: the flange contact's total clearance plus half the rail head
+    for (const auto &c : frame.contacts)
+      if (c.name == f.flange_contact)
+        w.derailment_offset = c.gap + 0.5 * f.rail_head_width;
+    flanges.push_back(w);
+  }
+  if (!flanges.empty())
+    system.law_data[wheel_flanges_key] = flanges;
 }
 
 void Frame::add_link_rows(DiscreteSystem &system) const

@@ -37,6 +37,15 @@ std::string read_member_summary(const std::string &folder, MemberResult &result)
       !summary["status"].is_string())
     return "";
   const std::string status = summary["status"].get<std::string>();
+  if (status == "derailed" && summary.contains("derailment") &&
+      summary["derailment"].is_object())
+  {
+    // which wheel and when (D2), the suite's record of the member
+    const Json &d = summary["derailment"];
+    std::ostringstream s;
+    s << d.value("wheel", std::string()) << " at t = " << d.value("time", 0.) << " s";
+    result.error = s.str();
+  }
   if (status != "completed")
     return status;
   auto &values = result.values;

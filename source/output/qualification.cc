@@ -24,7 +24,8 @@ const CheckKind check_kinds[] = {{"stress", ".max_von_mises", "Pa"},
                                  {"uplift", ".max_uplift", "m"},
                                  {"slip", ".slip_distance", "m"},
                                  {"lateral offset", ".max_lateral_offset", "m"},
-                                 {"rope", ".max_tension", "N"}};
+                                 {"rope", ".max_tension", "N"},
+                                 {"derailment", ".derailment_offset", "m"}};
 
 std::string
 format_where(const QualificationJson &entry, const char *x_key, const char *time_key)
@@ -189,6 +190,18 @@ std::vector<QualificationDemand> run_demands(const std::string &summary_json)
     for (const auto &[name, e] : g->items())
       if (e.is_object() && e.contains("max"))
         add("rope", name, e["max"], "");
+  // a wheel that left its rail (D2): the run stopped there, it fails
+  if (const auto *d = group("derailment"))
+    if (d->contains("wheel") && (*d)["wheel"].is_string() &&
+        d->contains("lateral_offset") && (*d)["lateral_offset"].is_number() &&
+        d->contains("derailment_offset") && (*d)["derailment_offset"].is_number())
+    {
+      add("derailment",
+          (*d)["wheel"].get<std::string>(),
+          (*d)["lateral_offset"],
+          format_where(*d, nullptr, "time") + ", the run stopped there");
+      demands.back().capacity = (*d)["derailment_offset"].get<double>();
+    }
   return demands;
 }
 
@@ -218,7 +231,8 @@ std::vector<QualificationRow> qualify(const std::vector<QualificationDemand> &de
   std::vector<QualificationRow> rows;
   for (const auto &d : demands)
   {
-    const double capacity = capacity_of(d.check, parameters);
+    const double capacity =
+        d.capacity > 0. ? d.capacity : capacity_of(d.check, parameters);
     if (capacity <= 0.)
       continue; // not checked
     QualificationRow r;

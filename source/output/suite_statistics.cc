@@ -172,11 +172,16 @@ std::string SuiteStatistics::csv() const
 
 std::string SuiteStatistics::summary_json(const SummaryEntries &extra) const
 {
-  SummaryValue failed = SummaryValue::object();
-  unsigned int usable = 0;
+  SummaryValue failed = SummaryValue::object(), derailed = SummaryValue::object();
+  unsigned int usable = 0, n_derailed = 0;
   for (const auto &r : results)
     if (r.usable())
       ++usable;
+    else if (r.status == "derailed") // a result (D2): which wheel and when
+    {
+      ++n_derailed;
+      derailed.set(r.name, r.error);
+    }
     else
       failed.set(r.name, r.error.empty() ? r.status : r.status + ": " + r.error);
   SummaryValue group_list = SummaryValue::list();
@@ -214,8 +219,10 @@ std::string SuiteStatistics::summary_json(const SummaryEntries &extra) const
   SummaryEntries entries = {{"statistic", statistic},
                             {"n_members", results.size()},
                             {"n_usable", usable},
-                            {"n_failed", results.size() - usable},
+                            {"n_failed", results.size() - usable - n_derailed},
                             {"failed", failed},
+                            {"n_derailed", n_derailed},
+                            {"derailed", derailed},
                             {"groups", group_list}};
   entries.insert(entries.begin(), extra.begin(), extra.end());
   std::string out = "{\n";

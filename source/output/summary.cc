@@ -76,14 +76,15 @@ SummaryValue warning_list(const std::vector<std::string> &warnings)
 
 void write_summary(const std::string &filename,
                    const SummaryEntries &entries,
-                   const std::vector<std::string> &warnings)
+                   const std::vector<std::string> &warnings,
+                   const std::string &status)
 {
   auto all = entries;
   all.emplace_back("git_commit", hati_git_commit());
   all.emplace_back("warnings", warning_list(warnings));
-  if (stop_requested())
+  if (stop_requested() || !status.empty())
   {
-    all.emplace_back("status", "interrupted");
+    all.emplace_back("status", status.empty() ? "interrupted" : status);
     for (const auto &[key, value] : entries)
       if (key == "end_time")
         all.emplace_back("time_reached", value);

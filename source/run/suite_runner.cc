@@ -303,9 +303,10 @@ MemberResult SuiteRunner::run_member(const SuiteMember &member) const
       throw;
     }
     const std::string status = read_member_summary(dir, r);
-    r.status = stop_requested()        ? "interrupted"
-               : status == "completed" ? status
-                                       : "failed";
+    // a member a wheel left its rail in (D2) is a result, not a failure
+    r.status = stop_requested()                                ? "interrupted"
+               : status == "completed" || status == "derailed" ? status
+                                                               : "failed";
     if (r.status == "failed")
       r.error = "summary.json says '" + status + "'";
   }
@@ -529,6 +530,19 @@ int SuiteRunner::finish(std::vector<MemberResult> &results, const double wall_ti
         if (statistics.n_groups() > 1)
           row.where += " (" + statistics.group_name(g) + ")";
         verdicts.push_back(std::move(row));
+      }
+    // a member a wheel left its rail in fails (D2): its own run's verdict
+    for (const auto &r : results)
+      if (r.status == "derailed")
+      {
+        for (QualificationRow &row :
+             qualify(run_demands(file_text(folder + "/" + r.name + "/summary.json")),
+                     qualification))
+          if (row.check == "derailment")
+          {
+            row.where = "member " + r.name + ": " + row.where;
+            verdicts.push_back(std::move(row));
+          }
       }
     extra.emplace_back("qualification", qualification_json(verdicts));
     out.replace("qualification.csv", qualification_csv(verdicts), true);

@@ -260,6 +260,8 @@ private:
   void add_law_output_summary(SummaryEntries &summary);
   /** The force laws' entries (ForceLaw::add_summary(), e.g. `rope_tension` of R1). */
   void add_force_law_summary(SummaryEntries &summary) const;
+  /** The first end of the run a force law gives (ForceLaw::run_end()), or nullptr. */
+  const RunEnd *law_run_end() const;
 
   Integrator &integrator;
   Problem &problem;
@@ -292,9 +294,11 @@ private:
    * state is assembled for the check).
    */
   const unsigned long every_check;
-  /** n_steps unless SIGINT/SIGTERM stopped the loop. */
+  /** n_steps unless SIGINT/SIGTERM or a RunEnd stopped the loop. */
   unsigned long steps_done = 0;
   unsigned long micro_step = 0;
+  /** The result that ended the run before End time (a derailment, D2), or nullptr. */
+  const RunEnd *run_end = nullptr;
   OutputState contact_row;
   /** The laws' sample of an output row (CD-Lagrange). */
   LawSample row_sample;
@@ -499,10 +503,19 @@ template <class Integrator> void TimeLoop<Integrator>::run(TimerOutput &timer)
       progress.print(integrator.time(), step);
       writer.flush();
     }
+    // a result that ends the run (RunEnd, e.g. a derailment, D2): the rows of
+    // this step, then stop
+    if (const RunEnd *end = law_run_end(); end != nullptr && run_end == nullptr)
+    {
+      run_end = end;
+      if (step % every_history != 0 && step != n_steps)
+        write(step);
+      std::cout << "hati: " << end->message << std::endl;
+    }
     const bool stop = stop_requested(); // SIGINT/SIGTERM: stop after a complete step
     if (every_state > 0 && (step % every_state == 0 || step == n_steps || stop))
       write_state();
-    if (stop)
+    if (stop || run_end != nullptr)
       break;
   }
   loop_output = output_clock.seconds() - output_before;
@@ -595,6 +608,17 @@ void TimeLoop<Integrator>::add_force_law_summary(SummaryEntries &summary) const
     (void)summary;
 }
 
+template <class Integrator> const RunEnd *TimeLoop<Integrator>::law_run_end() const
+{
+  if constexpr (!std::is_same_v<Integrator, Newmark>)
+  {
+    for (const auto &law : integrator.force_laws())
+      if (const RunEnd *end = law->run_end())
+        return end;
+  }
+  return nullptr;
+}
+
 template <class Integrator>
 void TimeLoop<Integrator>::finish(TimerOutput &timer, SummaryEntries summary)
 {
@@ -648,7 +672,12 @@ void TimeLoop<Integrator>::finish(TimerOutput &timer, SummaryEntries summary)
   for (const auto &p : postprocessors)
     p->write_files(directory);
   add_qualification(problem, directory, summary);
-  write_summary(directory.path() + "/summary.json", summary, problem.warnings);
+  write_summary(directory.path() + "/summary.json",
+                summary,
+                problem.warnings,
+                run_end != nullptr ? run_end->status : "");
+  if (run_end != nullptr)
+    std::cout << "  " << run_end->status << ": " << run_end->message << std::endl;
   std::cout << "  done: " << steps_done << " steps in " << wall << " s (output "
             << output_clock.seconds() << " s in " << output_clock.calls() << " calls); ";
   if (n_contacts(system.contacts) > 0)

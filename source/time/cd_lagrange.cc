@@ -34,8 +34,15 @@ CDLagrange::CDLagrange(const DiscreteSystem &system,
       forcing_laws.push_back(law.get());
     if (auto *c = dynamic_cast<UnilateralContacts *>(law.get()))
       contacts = c;
+    if (law->gates_rows())
+      gating_laws.push_back(law.get());
   }
   AssertThrow(contacts, ExcInternalError());
+  if (!gating_laws.empty())
+  {
+    rows_off.assign(system.contacts.size(), false);
+    contacts->switch_off(&rows_off);
+  }
   const unsigned int n = system.n_dofs();
   AssertThrow(system.lumped_mass_refusal.empty(), ExcMessage(system.lumped_mass_refusal));
   AssertThrow(dt > 0. && std::isfinite(dt),
@@ -534,6 +541,8 @@ void CDLagrange::finish_step(const bool with_contacts)
   if (with_contacts && !row_laws.empty())
   {
     const SampledWallClock::Scope scope(contact_clock);
+    for (ForceLaw *law : gating_laws) // e.g. (D1) the flanges over their rails
+      law->gate_rows(t, U, rows_off);
     for (ForceLaw *law : row_laws)
       law->apply_impulses(U, *V_prev, minv, *V);
   }

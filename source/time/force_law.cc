@@ -2,6 +2,7 @@
 
 #include <hati/model/discrete_system.h>
 #include <hati/output/law_output.h>
+#include <hati/time/flange_engagement.h>
 #include <hati/time/force_law.h>
 #include <hati/time/rope_forces.h>
 #include <hati/time/unilateral_contacts.h>
@@ -14,8 +15,10 @@ Registry<ForceLawFactory> &force_law_registry()
 {
   // one line per law: its registration (name, documentation, factory); the
   // forces are summed and the rows resolved in this order
-  static Registry<ForceLawFactory> registry(
-      "force law", {RopeForces::registration(), UnilateralContacts::registration()});
+  static Registry<ForceLawFactory> registry("force law",
+                                            {RopeForces::registration(),
+                                             FlangeEngagement::registration(),
+                                             UnilateralContacts::registration()});
   return registry;
 }
 

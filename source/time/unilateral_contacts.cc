@@ -103,9 +103,11 @@ void UnilateralContacts::apply_impulses(const Vector<double> &U,
     const auto &c = contacts[k];
     gap[k] = c.initial_gap + c.apply(U);
     const double tolerance = was_closed[k] ? held_gap_tolerance : closed_gap_tolerance;
-    is_active[k] = c.bilateral || (prescribed ? bool((*prescribed)[k])
-                                   : frozen   ? bool((*frozen)[k])
-                                              : (gap[k] <= tolerance));
+    is_active[k] =
+        c.bilateral ||
+        (prescribed ? bool((*prescribed)[k])
+         : frozen   ? bool((*frozen)[k])
+                    : (gap[k] <= tolerance && !(switched_off && (*switched_off)[k])));
     was_closed[k] = is_active[k];
     lambda[k] = 0.;
     if (is_active[k])

@@ -139,6 +139,11 @@ public:
     /** Parse and check the entries of declare_heights(). */
     void parse_heights(ParameterHandler &prm);
     /**
+     * The Flange depth below the girder height (the section's h; a general
+     * section's 2 sqrt(Iy / A)): a one-line error naming the entry otherwise.
+     */
+    void check_flange_depth() const;
+    /**
      * The height of the trolley wheels' contact points above the girder
      * axes (m): rail_height() without eccentricities; with them the rail
      * head, half the girder height plus trolley_rail_height for beam

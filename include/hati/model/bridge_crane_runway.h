@@ -58,6 +58,14 @@ struct RunwayParameters
   double vertical_stiffness = 2e8, lateral_stiffness = 5e7, longitudinal_stiffness = 5e8;
   /** The runway's mass that moves with each crane wheel (kg). */
   double mass_per_wheel = 500.;
+  /**
+   * The uplift above which a wheel's flanges pass over the rail head (m,
+   * >= 0; 0: the flanges always engage, D1).
+   */
+  double flange_depth = 0.;
+  /** The rail head width (m, > 0): a wheel over its flange derails beyond c + w / 2 (D2).
+   */
+  double rail_head_width = 0.055;
   /** The length of the springs' posts (m): any, the stiffnesses fix their sections. */
   static constexpr double runway_post_length = 0.5;
 
@@ -88,6 +96,13 @@ struct RunwayParameters
     return uplift_restraints == "both" ||
            uplift_restraints == (trolley ? "trolley wheels" : "crane wheels");
   }
+
+  /**
+   * With a Flange depth: the flanges of the wheel @p wheel (its tread
+   * contact @p wheel, its flange contact `<wheel>_lateral`) into @p frame
+   * (FrameDescription::Flange, D1-D2); nothing without.
+   */
+  void add_flange(FrameDescription &frame, const std::string &wheel) const;
 
   /**
    * Add the restraint contacts of the wheel @p wheel (its node @p node; the

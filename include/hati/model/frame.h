@@ -187,6 +187,12 @@ private:
   /** The contact rows of the contacts owned by the part built (frame_rows.cc). */
   void add_contacts(const CommonModelParameters &common, DiscreteSystem &system) const;
   /**
+   * The wheels' flanges whose contacts the part built holds
+   * (DiscreteSystem::law_data under wheel_flanges_key, D1-D2), after
+   * add_contacts() (frame_rows.cc).
+   */
+  void add_flanges(DiscreteSystem &system) const;
+  /**
    * With links_as_rows, the ties and rigid links as bilateral constraint
    * rows after the contacts (frame_rows.cc).
    */

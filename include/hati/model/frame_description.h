@@ -125,6 +125,26 @@ struct FrameDescription
     double rest_length = -1.;
   };
 
+  /**
+   * A wheel's flanges over its rail (doc/theory.md D1-D2, user guide "The
+   * crane on its runway"): the flange contact's rows act only while the
+   * tread contact's gap (the uplift) is at most the flange depth; a wheel
+   * above it whose lateral offset exceeds the flange contact's clearance
+   * plus half the rail head width has derailed (the run stops).
+   */
+  struct Flange
+  {
+    std::string name;
+    /** The wheel's tread contact: one-sided (its gap is the uplift). */
+    std::string tread_contact;
+    /** The wheel's flange contact: two-sided with a clearance, the same node. */
+    std::string flange_contact;
+    /** The uplift above which the flanges pass over the rail head (m, > 0). */
+    double depth = 0.;
+    /** The rail head width (m, >= 0). */
+    double rail_head_width = 0.;
+  };
+
   /** Add the node @p name at @p x (m) at the end of node_order. */
   void add_node(const std::string &name, const Point<3> &x);
 
@@ -168,6 +188,7 @@ struct FrameDescription
   std::map<std::string, std::array<double, 6>> nodal_loads;
   std::vector<NodeContact> contacts;
   std::vector<RopeData> ropes;
+  std::vector<Flange> flanges;
   /** Nodes written to history.csv. */
   std::vector<std::string> monitor_nodes;
   /** Members whose section forces are written to section_forces.csv. */

@@ -52,10 +52,16 @@ struct QualificationParameters
  */
 struct QualificationDemand
 {
-  /** `stress`, `uplift`, `slip`, `lateral offset` or `rope`. */
+  /**
+   * `stress`, `uplift`, `slip`, `lateral offset`, `rope`, or `derailment`
+   * (a run a wheel left its rail in, D2: the wheel's lateral offset against
+   * its derailment offset, so that it fails).
+   */
   std::string check, item;
   double value = 0.;
   std::string where;
+  /** > 0: the capacity the result gives itself (a derailment's), not the parameters'. */
+  double capacity = 0.;
 };
 
 /** One row of the verdict table (qualification.csv). */

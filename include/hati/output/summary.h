@@ -22,11 +22,13 @@ std::string to_json(const SummaryValue &value);
  * run's warnings, Problem::warn(); empty if none) and `status` are added at
  * the end: `"completed"`, or `"interrupted"` after SIGINT/SIGTERM
  * (stop_requested()), then with `time_reached` (s), the value of the entry
- * `end_time`.
+ * `end_time`; or @p status when it is not empty (a run a result ended
+ * before its End time, RunEnd: e.g. `derailed`), also with `time_reached`.
  */
 void write_summary(const std::string &filename,
                    const SummaryEntries &entries,
-                   const std::vector<std::string> &warnings);
+                   const std::vector<std::string> &warnings,
+                   const std::string &status = "");
 
 /**
  * The `summary.json` of a run that failed: `warnings` (@p warnings),

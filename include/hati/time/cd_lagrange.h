@@ -320,6 +320,13 @@ private:
   /** The laws that add forces, and those with rows. */
   std::vector<ForceLaw *> forcing_laws, row_laws;
   /**
+   * The laws that switch contact rows off (ForceLaw::gates_rows(), e.g. the
+   * flanges, D1) and their flags, one per row of system.contacts, which the
+   * contacts' law reads (UnilateralContacts::switch_off()).
+   */
+  std::vector<ForceLaw *> gating_laws;
+  std::vector<bool> rows_off;
+  /**
    * The contacts' law among them (always there, possibly without rows):
    * the gaps, impulses and friction record that the outputs and the
    * coupling's superposition read and write.

@@ -56,6 +56,22 @@ struct LawSample
 };
 
 /**
+ * A result that ends a transient run before its End time (ForceLaw::run_end(),
+ * e.g. a wheel that has left its rail, D2): the run stops after the step in
+ * which it happened, summary.json says `status` = status, and the terminal
+ * prints message; it is a result, not an error (exit code 0).
+ */
+struct RunEnd
+{
+  /** The summary.json `status`, e.g. `derailed`. */
+  std::string status;
+  /** The one-line message, e.g. `crane_wheel_3 derailed at t = 4.213 s: ...`. */
+  std::string message;
+  /** The time at which it happened (s). */
+  double time = 0.;
+};
+
+/**
  * One force law of a DiscreteSystem as the explicit integrator (CD-Lagrange,
  * and through it HATI's explicit part) and the outputs see it
  * (doc/architecture.md, "Force laws"). A law is one or both of
@@ -199,6 +215,37 @@ public:
     (void)inverse_mass;
     (void)v;
   }
+  /** @} */
+
+  /** @name Conditions on the rows of other laws (e.g. D1) */
+  /** @{ */
+  /**
+   * Whether the law decides that some rows of DiscreteSystem::contacts do
+   * not act in a step whatever their gaps (gate_rows()).
+   */
+  virtual bool gates_rows() const { return false; }
+
+  /**
+   * At @p t (`t_{n+1}`) and @p U (`U_{n+1}`), before the impulses (A4):
+   * set the entries of @p off (one per row of DiscreteSystem::contacts) of
+   * the rows the law governs, true for a row that does not act in this step
+   * (out of the active set whatever its gap; a prescribed or frozen active
+   * set, CDLagrange::CouplingView, is taken as it is), false for one that
+   * acts as usual. The other entries are left as they are.
+   */
+  virtual void gate_rows(const double t, const Vector<double> &U, std::vector<bool> &off)
+  {
+    (void)t;
+    (void)U;
+    (void)off;
+  }
+
+  /**
+   * The result that ends the run at the current state (e.g. a derailment,
+   * D2), or nullptr while the run goes on (the default). The time loop
+   * asks after every (macro) step.
+   */
+  virtual const RunEnd *run_end() const { return nullptr; }
   /** @} */
 
   /**

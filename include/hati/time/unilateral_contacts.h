@@ -145,6 +145,13 @@ public:
    * prescribe_active_set() takes precedence.
    */
   void freeze_activation(const std::vector<bool> *pattern) { frozen = pattern; }
+  /**
+   * With a non-null @p off (one flag per contact, owned by the caller), a
+   * flagged contact is out of the active set whatever its gap (ForceLaw::
+   * gate_rows() of another law, e.g. a flange over its rail, D1); a
+   * prescribed or frozen active set is taken as it is.
+   */
+  void switch_off(const std::vector<bool> *off) { switched_off = off; }
   /** Set the gap (m) and impulse (N s) of contact @p k (the superposition, G3'). */
   void set_state(const unsigned int k, const double gap_k, const double impulse)
   {
@@ -179,6 +186,8 @@ private:
   const std::vector<bool> *prescribed = nullptr;
   /** Active set imposed by freeze_activation() (nullptr: from the gaps). */
   const std::vector<bool> *frozen = nullptr;
+  /** Rows switched off by another law (switch_off(); nullptr: none). */
+  const std::vector<bool> *switched_off = nullptr;
   /**
    * With a prescribed active set: the frictional contacts taken as sliding
    * (their tangent rows left out, FrictionalContacts::solve()), or nullptr.
