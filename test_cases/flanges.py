@@ -24,6 +24,10 @@ D1-D2; Model/Frame/Flanges, Model/Bridge crane/Flange depth).
    'derailed' and exit code 0, and the one-line message names the wheel and
    time of summary.json's derailment; with a Qualification subsection the
    derailed wheel fails its 'derailment' check.
+3. A suite of that crane over Flange depth = 20 | 60 mm: the first member
+   is recorded as 'derailed' (suite_summary.json n_derailed, derailed; not
+   failed), the second completes, the suite exits with 0 and its
+   qualification fails the derailed member's derailment check.
 """
 import csv
 
@@ -146,4 +150,33 @@ rows = [r for r in csv.DictReader(open(out + "/qualification.csv"))
 ctx.check_true("crane: qualification fails the derailed wheel",
                len(rows) == 1 and rows[0]["item"] == dr.get("wheel") and
                rows[0]["verdict"] == "fail", "(%s)" % rows)
+
+# --- 3. a suite: the member that derails is recorded, the others go on -------
+import json
+import shutil
+import subprocess
+out = ctx.work + "/suite"
+shutil.rmtree(out, ignore_errors=True)
+p = subprocess.run([ctx.hati, ctx.prm("bridge_crane_hati.prm"),
+                    "--set", "Output/Output directory=" + out,
+                    "--set", "Output/Output interval=0", "--set", "Loading/Accelerogram X=",
+                    "--set", "Loading/Accelerogram units=m/s^2",
+                    "--set", "Time integration/End time=0.3",
+                    "--set", "Suite/Records=pulse: , %s, %s" % (crane_y, crane_z),
+                    "--set", "Suite/Variations=Model/Bridge crane/Flange depth=0.02|0.06",
+                    "--set", "Qualification/Maximum uplift=0.1"],
+                   capture_output=True, text=True, timeout=300)
+ctx.check_true("suite: exit code 0", p.returncode == 0, p.stderr[-300:])
+ss = json.load(open(out + "/suite_summary.json"))
+ctx.check_true("suite: one member derailed (flange depth 20 mm), none failed",
+               ss["n_derailed"] == 1 and ss["n_failed"] == 0 and
+               list(ss["derailed"]) == ["pulse_s1_0"], "(%s)" % ss["derailed"])
+status = {r["member"]: r["status"] for r in csv.DictReader(open(out + "/suite.csv"))}
+ctx.check_true("suite.csv: derailed, then completed (60 mm flanges stay on)",
+               status == {"pulse_s1_0": "derailed", "pulse_s1_1": "completed"}, str(status))
+rows = [r for r in csv.DictReader(open(out + "/qualification.csv"))
+        if r["check"] == "derailment"]
+ctx.check_true("suite: the derailed member fails its derailment check",
+               len(rows) == 1 and rows[0]["verdict"] == "fail" and
+               "pulse_s1_0" in rows[0]["where"], str(rows))
 ctx.finish()
